@@ -1,0 +1,24 @@
+// Whole-file reads and atomic writes. Outputs go to "<path>.tmp-<pid>" and are
+// renamed into place, so a failed run leaves no partial file (DESIGN.md).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace smpl {
+
+Result<std::vector<uint8_t>> readFileBytes(const std::string& path);
+
+// Write bytes atomically: temp file in the same directory, fsync, rename.
+Status writeFileAtomic(const std::string& path, const void* data, size_t size);
+inline Status writeFileAtomic(const std::string& path, const std::string& bytes) {
+  return writeFileAtomic(path, bytes.data(), bytes.size());
+}
+
+// Last path component, used to name files in errors.
+std::string baseName(const std::string& path);
+
+}  // namespace smpl

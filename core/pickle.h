@@ -1,0 +1,35 @@
+// Data-only unpickler for model files (.pkl): protocols 0-5, Python 2 and 3
+// writers. It rebuilds exactly the objects model files contain and refuses
+// every other global with an error naming it; it never executes anything.
+//   numpy arrays    numpy.core.multiarray._reconstruct + BUILD state,
+//                   numpy.core.numeric._frombuffer (protocol 5), numpy.dtype,
+//                   payloads as bytes, py2 str, or _codecs.encode(latin-1 text)
+//                   (also numpy._core.* module paths of numpy 2)
+//   scipy sparse    csc/csr matrices under any module path (scipy.sparse.csc,
+//                   scipy.sparse._csc, ...) -> dense Array
+//   chumpy Ch       chumpy.ch.Ch / chumpy.Ch objects -> their array state
+//   containers      dict, list, tuple, str, bytes, int, float, bool, None
+// The top level must be a dict; entries whose value is an array-like
+// (ndarray, sparse, Ch, list of numbers, string) become Arrays, the rest are
+// dropped.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/array.h"
+#include "core/result.h"
+
+namespace smpl {
+
+struct PickleLimits {
+  uint64_t max_memo = 1u << 20;        // memo entries
+  uint64_t max_stack_depth = 1u << 16; // nesting
+  uint64_t max_total_bytes = 4ull << 30;
+};
+
+Result<ArrayDict> parsePickle(const uint8_t* data, size_t size, const std::string& context,
+                              const PickleLimits& limits = PickleLimits());
+Result<ArrayDict> readPickleFile(const std::string& path);
+
+}  // namespace smpl

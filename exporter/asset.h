@@ -1,0 +1,76 @@
+// The format-neutral asset: everything a writer serialises, nothing it must
+// compute. The pipeline (pipeline.h) builds it from a model and options; the
+// writers in plugins/ only translate it into bytes. Plain data, model axes
+// (metres, +Y up, right-handed), float32 where the files store float32.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+namespace smpl {
+
+struct Skeleton {
+  std::vector<std::string> names;       // K joint names (bone/node names)
+  std::vector<int> parents;             // K; -1 for the root
+  Eigen::MatrixXd rest_local;           // K x 3 local translation J_k - J_p(k) (root: J_0)
+  Eigen::MatrixXd rest_world;           // K x 3 rest joint positions J_k
+  // Rest local rotations are identity by contract (DESIGN.md); inverse bind
+  // matrix of joint k is translation(-J_k).
+};
+
+struct MorphTarget {
+  std::string name;                     // pose_<joint>_<r><c>, shape_<i>, expr_<i>
+  Eigen::MatrixXf deltas;               // V x 3 position deltas (V = asset vertex count)
+};
+
+struct SkinnedMesh {
+  Eigen::MatrixXf positions;            // V x 3 rest mesh (v_shaped), may be split at UV seams
+  Eigen::MatrixXf normals;              // V x 3 unit normals of the rest mesh
+  Eigen::MatrixXf uvs;                  // V x 2 (OBJ convention, v up), or 0 rows when absent
+  Eigen::MatrixXi triangles;            // F x 3, counter-clockwise seen from outside
+  Eigen::MatrixXi joints;               // V x M joint indices
+  Eigen::MatrixXf weights;              // V x M, rows sum to 1
+  std::vector<int> source_vertex;       // V: model vertex each asset vertex came from
+  std::vector<MorphTarget> morph_targets;
+};
+
+// One entry per corrective morph target: weight = scale * f[feature] + offset.
+struct CorrectiveLayout {
+  int feature = 0;                      // index into f (DESIGN.md order)
+  std::string target;                   // morph target name
+  double scale = 1.0;
+  double offset = 0.0;
+};
+
+struct AnimationClip {
+  std::string name;
+  double fps = 30.0;
+  std::vector<double> times;                        // T seconds
+  std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
+  std::vector<Eigen::Vector3d> root_translation;    // T root node translations (model axes)
+  Eigen::MatrixXf morph_weights;                    // T x (#morph targets), in target order
+};
+
+struct AssetMetadata {
+  std::string model_kind;               // "smpl", "smplh", "smplx", "mano"
+  std::string model_name;               // source file name or "builtin"
+  std::string exporter_version;
+  std::vector<double> betas;
+  std::vector<double> expression;
+  std::vector<CorrectiveLayout> correctives;
+  int max_influences = 4;
+  std::string units = "meters";
+  std::string up_axis = "+Y";
+};
+
+struct Asset {
+  std::string name;                     // mesh / scene name
+  Skeleton skeleton;
+  SkinnedMesh mesh;
+  std::vector<AnimationClip> animations;
+  AssetMetadata metadata;
+};
+
+}  // namespace smpl

@@ -1,0 +1,54 @@
+// The metadata object of DESIGN.md, serialised with nlohmann::ordered_json so
+// keys keep the documented order and doubles print as the shortest text that
+// reads back to the same value.
+#include "exporter/metadata_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace smpl {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json correctivesJson(const std::vector<CorrectiveLayout>& correctives) {
+  Json list = Json::array();
+  for (const CorrectiveLayout& c : correctives) {
+    Json entry = Json::object();
+    entry["feature"] = c.feature;
+    entry["target"] = c.target;
+    entry["scale"] = c.scale;
+    entry["offset"] = c.offset;
+    list.push_back(std::move(entry));
+  }
+  return list;
+}
+
+Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
+  Json names = Json::array();
+  for (const MorphTarget& t : targets) names.push_back(t.name);
+  return names;
+}
+
+}  // namespace
+
+std::string metadataJson(const Asset& asset) {
+  const AssetMetadata& m = asset.metadata;
+  Json o = Json::object();
+  o["model_kind"] = m.model_kind;
+  o["model_name"] = m.model_name;
+  o["exporter_version"] = m.exporter_version;
+  o["joint_names"] = asset.skeleton.names;
+  o["parents"] = asset.skeleton.parents;
+  o["betas"] = m.betas;
+  o["expression"] = m.expression;
+  o["max_influences"] = m.max_influences;
+  o["units"] = m.units;
+  o["up_axis"] = m.up_axis;
+  o["correctives"] = correctivesJson(m.correctives);
+  o["morph_targets"] = morphTargetNamesJson(asset.mesh.morph_targets);
+  // Names come from model files: replace invalid UTF-8 instead of throwing
+  // (nlohmann's default), so a hostile name cannot abort the export.
+  return o.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+}  // namespace smpl

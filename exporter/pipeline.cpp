@@ -1,0 +1,149 @@
+#include "exporter/pipeline.h"
+
+#include <Eigen/Geometry>
+#include <numeric>
+#include <optional>
+
+#include "core/forward.h"
+#include "core/skin_weights.h"
+#include "exporter/uv_obj.h"
+
+namespace smpl {
+namespace {
+
+Eigen::VectorXd toVector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+Status checkOptions(const BodyModel& model, const ExportOptions& o) {
+  if (static_cast<int>(o.betas.size()) > model.numBetas())
+    return makeError("betas: " + std::to_string(o.betas.size()) + " values given; the model " + model.name +
+                     " has " + std::to_string(model.numBetas()));
+  if (static_cast<int>(o.expression.size()) > model.numExpressions())
+    return makeError("expression: " + std::to_string(o.expression.size()) + " values given; the model " +
+                     model.name + " has " + std::to_string(model.numExpressions()));
+  if (o.max_influences < 1 || o.max_influences > 8)
+    return makeError("--max-influences must be between 1 and 8, got " + std::to_string(o.max_influences));
+  if (o.shape_keys < 0 || o.shape_keys > model.numBetas())
+    return makeError("--shape-keys " + std::to_string(o.shape_keys) + ": the model has " +
+                     std::to_string(model.numBetas()) + " shape directions");
+  if (o.expression_keys < 0 || o.expression_keys > model.numExpressions())
+    return makeError("--expression-keys " + std::to_string(o.expression_keys) + ": the model has " +
+                     std::to_string(model.numExpressions()) + " expression directions");
+  return Status();
+}
+
+Skeleton buildSkeleton(const BodyModel& model, const Eigen::MatrixXd& joints) {
+  Skeleton s;
+  s.names = model.joint_names;
+  s.parents = model.parents;
+  s.rest_world = joints;
+  s.rest_local = joints;
+  for (int k = 1; k < model.numJoints(); ++k) s.rest_local.row(k) -= joints.row(model.parents[k]);
+  return s;
+}
+
+// Area-weighted vertex normals of the rest mesh.
+Eigen::MatrixXf vertexNormals(const Eigen::MatrixXd& v, const Eigen::MatrixXi& faces) {
+  Eigen::MatrixXd n = Eigen::MatrixXd::Zero(v.rows(), 3);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    Eigen::Vector3d a = v.row(faces(f, 0)), b = v.row(faces(f, 1)), c = v.row(faces(f, 2));
+    Eigen::RowVector3d area_normal = (b - a).cross(c - a).transpose();
+    for (int j = 0; j < 3; ++j) n.row(faces(f, j)) += area_normal;
+  }
+  for (Eigen::Index i = 0; i < n.rows(); ++i) {
+    double len = n.row(i).norm();
+    n.row(i) = len > 0 ? Eigen::RowVector3d(n.row(i) / len) : Eigen::RowVector3d(0, 1, 0);
+  }
+  return n.cast<float>();
+}
+
+// Column `col` of a 3N-row direction matrix as asset-vertex deltas.
+MorphTarget directionTarget(std::string name, const Eigen::MatrixXd& dirs, int col,
+                            const std::vector<int>& source_vertex) {
+  MorphTarget t;
+  t.name = std::move(name);
+  t.deltas.resize(static_cast<Eigen::Index>(source_vertex.size()), 3);
+  for (size_t i = 0; i < source_vertex.size(); ++i)
+    for (int c = 0; c < 3; ++c) t.deltas(i, c) = static_cast<float>(dirs(3 * source_vertex[i] + c, col));
+  return t;
+}
+
+void addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+  std::vector<MorphTarget>& targets = asset->mesh.morph_targets;
+  const std::vector<int>& src = asset->mesh.source_vertex;
+  if (o.correctives) {
+    for (int n = 0; n < model.numPoseFeatures(); ++n) {
+      targets.push_back(directionTarget(correctiveTargetName(model, n), model.posedirs, n, src));
+      asset->metadata.correctives.push_back(CorrectiveLayout{n, targets.back().name, 1.0, 0.0});
+    }
+  }
+  for (int i = 0; i < o.shape_keys; ++i)
+    targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
+  for (int i = 0; i < o.expression_keys; ++i)
+    targets.push_back(directionTarget("expr_" + std::to_string(i), model.exprdirs, i, src));
+}
+
+// Per-asset-vertex geometry and skin from the model's vertices.
+void buildMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const SparseSkin& skin,
+               const UvLayout* uv, SkinnedMesh* mesh) {
+  if (uv) {
+    mesh->source_vertex = uv->source_vertex;
+    mesh->triangles = uv->triangles;
+    mesh->uvs = uv->uvs;
+  } else {
+    mesh->source_vertex.resize(model.numVertices());
+    std::iota(mesh->source_vertex.begin(), mesh->source_vertex.end(), 0);
+    mesh->triangles = model.faces;
+  }
+  Eigen::MatrixXf normals = vertexNormals(v_shaped, model.faces);
+  const Eigen::Index v = static_cast<Eigen::Index>(mesh->source_vertex.size());
+  mesh->positions.resize(v, 3);
+  mesh->normals.resize(v, 3);
+  mesh->joints.resize(v, skin.joints.cols());
+  mesh->weights.resize(v, skin.weights.cols());
+  for (Eigen::Index i = 0; i < v; ++i) {
+    const int s = mesh->source_vertex[i];
+    mesh->positions.row(i) = v_shaped.row(s).cast<float>();
+    mesh->normals.row(i) = normals.row(s);
+    mesh->joints.row(i) = skin.joints.row(s);
+    mesh->weights.row(i) = skin.weights.row(s).cast<float>();
+  }
+}
+
+}  // namespace
+
+std::string correctiveTargetName(const BodyModel& model, int feature) {
+  const int joint = feature / 9 + 1, r = (feature % 9) / 3, c = feature % 3;
+  return "pose_" + model.joint_names[joint] + "_" + std::to_string(r) + std::to_string(c);
+}
+
+Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
+  if (Status s = checkOptions(model, o); !s) return s.error();
+  Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
+  if (!body) return body.error();
+  std::optional<UvLayout> uv;
+  if (!o.uv_obj.empty()) {
+    Result<UvLayout> layout = loadUvLayout(o.uv_obj, model);
+    if (!layout) return layout.error();
+    uv = std::move(*layout);
+  }
+  Asset asset;
+  asset.name = o.name;
+  asset.skeleton = buildSkeleton(model, body->joints);
+  const int m = std::min(o.max_influences, model.numJoints());
+  buildMesh(model, body->v_shaped, pruneWeights(model.weights, m), uv ? &*uv : nullptr, &asset.mesh);
+  AssetMetadata& meta = asset.metadata;
+  meta.model_kind = modelKindName(model.kind);
+  meta.model_name = model.name;
+  meta.exporter_version = SMPL_EXPORT_VERSION;
+  meta.betas = o.betas;
+  meta.betas.resize(model.numBetas(), 0.0);
+  meta.expression = o.expression;
+  meta.expression.resize(model.numExpressions(), 0.0);
+  meta.max_influences = m;
+  addMorphTargets(model, o, &asset);
+  return asset;
+}
+
+}  // namespace smpl

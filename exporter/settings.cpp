@@ -1,0 +1,181 @@
+#include "exporter/settings.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/npy.h"
+#include "core/npz.h"
+
+namespace smpl {
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Result<double> parseNumber(const std::string& text, const std::string& option) {
+  errno = 0;
+  char* end = nullptr;
+  double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v))
+    return makeError(option + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+Result<int> parseInt(const std::string& text, const std::string& option) {
+  Result<double> v = parseNumber(text, option);
+  if (!v || *v != std::floor(*v) || std::abs(*v) > 1e6) return makeError(option + ": '" + text + "' is not an integer");
+  return static_cast<int>(*v);
+}
+
+Result<std::vector<double>> parseList(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    Result<double> v = parseNumber(item, option);
+    if (!v) return v.error();
+    values.push_back(*v);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
+
+// One option with its value; returns an error for unknown names.
+Status applyOption(const std::string& name, const std::string& value, Settings* s) {
+  ExportOptions& e = s->export_options;
+  auto intInto = [&](int* target) -> Status {
+    Result<int> v = parseInt(value, name);
+    if (!v) return v.error();
+    *target = *v;
+    return Status();
+  };
+  if (name == "--model") s->model = value;
+  else if (name == "--out") s->out = value;
+  else if (name == "--betas-file") s->betas_file = value;
+  else if (name == "--uv") e.uv_obj = value;
+  else if (name == "--name") e.name = value;
+  else if (name == "--max-influences") return intInto(&e.max_influences);
+  else if (name == "--shape-keys") return intInto(&e.shape_keys);
+  else if (name == "--expression-keys") return intInto(&e.expression_keys);
+  else if (name == "--betas" || name == "--expression") {
+    Result<std::vector<double>> v = parseList(value, name);
+    if (!v) return v.error();
+    (name == "--betas" ? e.betas : e.expression) = *v;
+  } else if (name == "--correctives") {
+    if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
+    e.correctives = value == "all";
+  } else if (name == "--fbx-units") {
+    if (value != "m" && value != "cm") return makeError("--fbx-units: expected 'm' or 'cm', got '" + value + "'");
+    s->writer_options.fbx_units = value;
+  } else {
+    return makeError("unknown option '" + name + "' (see --help)");
+  }
+  return Status();
+}
+
+Status checkConflicts(const Settings& s, const std::vector<std::string>& given) {
+  auto has = [&](const char* o) { return std::find(given.begin(), given.end(), o) != given.end(); };
+  if (s.model.empty()) return makeError("missing --model PATH (use --model builtin for the demo body)");
+  if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
+  if (has("--betas") && has("--betas-file")) return makeError("--betas and --betas-file conflict: give one");
+  const bool fbx = endsWith(s.out, ".fbx");
+  if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
+    return makeError("--out " + s.out + ": unknown format (expected .glb, .gltf or .fbx)");
+  if (has("--fbx-units") && !fbx) return makeError("--fbx-units applies only to .fbx output");
+  return Status();
+}
+
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q"};
+
+}  // namespace
+
+Result<Settings> parseSettings(int argc, const char* const* argv) {
+  Settings s;
+  std::vector<std::string> given;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    std::string value;
+    if (size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+    } else if (std::find(std::begin(kFlags), std::end(kFlags), arg) == std::end(kFlags)) {
+      if (i + 1 >= argc) return makeError("option " + arg + " needs a value");
+      value = argv[++i];
+    }
+    if (std::find(given.begin(), given.end(), arg) != given.end())
+      return makeError("option " + arg + " given twice");
+    given.push_back(arg);
+    if (arg == "--help" || arg == "-h") s.help = true;
+    else if (arg == "--version") s.version = true;
+    else if (arg == "--quiet" || arg == "-q") s.quiet = true;
+    else if (Status st = applyOption(arg, value, &s); !st) return st.error();
+  }
+  s.writer_options.binary = !endsWith(s.out, ".gltf");
+  if (s.help || s.version) return s;
+  if (Status st = checkConflicts(s, given); !st) return st.error();
+  return s;
+}
+
+Result<std::vector<double>> readBetasFile(const std::string& path) {
+  if (endsWith(path, ".npy") || endsWith(path, ".npz")) {
+    Array a;
+    if (endsWith(path, ".npy")) {
+      Result<Array> r = readNpyFile(path);
+      if (!r) return r.error();
+      a = std::move(*r);
+    } else {
+      Result<ArrayDict> d = readNpzFile(path);
+      if (!d) return d.error();
+      auto it = d->find("betas");
+      if (it == d->end()) return makeError(path + ": missing key 'betas'");
+      a = it->second;
+    }
+    if (a.isString() || a.shape.size() > 2 || (a.shape.size() == 2 && a.shape[0] != 1))
+      return makeError(path + ": 'betas' has shape " + shapeString(a.shape) + "; expected (B,) or (1,B)");
+    return a.data;
+  }
+  std::ifstream in(path);
+  if (!in) return makeError(path + ": cannot open");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) return makeError(path + ": not valid JSON");
+  if (j.is_object() && j.contains("betas")) j = j["betas"];
+  if (!j.is_array()) return makeError(path + ": expected a JSON array of numbers or {\"betas\": [...]}");
+  std::vector<double> betas;
+  for (const auto& v : j) {
+    if (!v.is_number() || !std::isfinite(v.get<double>())) return makeError(path + ": 'betas' holds a non-number");
+    betas.push_back(v.get<double>());
+  }
+  return betas;
+}
+
+std::string usageText() {
+  return R"(smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose correctives
+
+Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
+
+  --model PATH|builtin   model file (.npz or .pkl from the model's authors), or the built-in demo body
+  --out FILE             output; format from the extension. Also writes FILE.smpl.json (metadata)
+  --betas v,v,...        shape coefficients (fewer than the model has are zero-padded)
+  --betas-file FILE      betas from .npy, .npz (key 'betas') or .json
+  --expression v,v,...   SMPL-X expression coefficients
+  --max-influences N     skin influences per vertex, 1..8 (default 4; >4 writes JOINTS_1/WEIGHTS_1)
+  --correctives all|none pose-corrective morph targets (default all)
+  --shape-keys N         also export the first N shape directions as morph targets shape_<i>
+  --expression-keys N    also export the first N expression directions (SMPL-X) as expr_<i>
+  --uv OBJ               UVs from an OBJ sharing the model's vertex order (seams split vertices)
+  --name NAME            mesh name (default body)
+  --fbx-units m|cm       FBX geometry units (default m)
+  --quiet, -q            no summary
+  --version, --help
+
+Exit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write output.
+)";
+}
+
+}  // namespace smpl

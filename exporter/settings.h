@@ -1,0 +1,35 @@
+// Command-line settings of smpl-export, parsed and checked before any work
+// (gltfpack's discipline: unknown or conflicting options fail first).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "exporter/pipeline.h"
+#include "plugins/writer.h"
+
+namespace smpl {
+
+struct Settings {
+  std::string model;        // path or "builtin"
+  std::string out;
+  std::string betas_file;
+  ExportOptions export_options;
+  WriterOptions writer_options;
+  bool quiet = false;
+  bool help = false;
+  bool version = false;
+  int error_poses = 32;     // random poses for the pruning-error report
+};
+
+// Parse argv; the error text is one line for the user.
+Result<Settings> parseSettings(int argc, const char* const* argv);
+
+// Usage text for --help.
+std::string usageText();
+
+// Betas from .npy, .npz (key 'betas') or .json ([..] or {"betas": [..]}).
+Result<std::vector<double>> readBetasFile(const std::string& path);
+
+}  // namespace smpl

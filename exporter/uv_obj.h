@@ -1,0 +1,26 @@
+// UVs from a Wavefront OBJ that shares the model's vertex order (`--uv`), as
+// the model authors ship them (e.g. smpl_uv.obj). A model vertex with several
+// UVs (a seam) is split into several asset vertices; source_vertex maps each
+// back, so skin weights and morph targets follow the split.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/body_model.h"
+#include "core/result.h"
+
+namespace smpl {
+
+struct UvLayout {
+  std::vector<int> source_vertex;  // V: model vertex of each asset vertex
+  Eigen::MatrixXf uvs;             // V x 2 (OBJ convention, v up)
+  Eigen::MatrixXi triangles;       // F x 3 asset-vertex indices
+};
+
+// The OBJ's faces must reference only model vertices (1-based, < N) and each
+// face a texture coordinate; polygons are fanned into triangles.
+Result<UvLayout> loadUvLayout(const std::string& path, const BodyModel& model);
+
+}  // namespace smpl

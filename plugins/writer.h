@@ -1,0 +1,28 @@
+// One interface for every output format. A writer serialises an Asset to bytes
+// (deterministic: same asset, same bytes); the caller writes them atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+#include "exporter/asset.h"
+
+namespace smpl {
+
+struct WriterOptions {
+  bool binary = true;          // glTF: .glb vs .gltf (embedded buffer)
+  std::string fbx_units = "m"; // FBX: "m" or "cm"
+  int fbx_version = 7400;      // FBX: 7400 or 7500
+};
+
+struct Writer {
+  virtual ~Writer() = default;
+  virtual const char* name() const = 0;
+  virtual Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const = 0;
+};
+
+// Writers by output file extension (".glb", ".gltf", ".fbx"); null if none.
+const Writer* writerForPath(const std::string& path);
+
+}  // namespace smpl

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Install every Debian package the build and the tests need. Idempotent: it
+# only calls apt-get when something is missing. Run as root (or with sudo).
+#   scripts/setup-deps.sh          build + test dependencies (Blender included)
+#   scripts/setup-deps.sh --build  only what building smpl-export needs
+set -euo pipefail
+
+build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-json3-dev)
+test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy blender
+           libassimp-dev mono-mcs)
+
+pkgs=("${build_pkgs[@]}")
+[[ "${1:-}" == "--build" ]] || pkgs+=("${test_pkgs[@]}")
+
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "setup-deps: all ${#pkgs[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+[[ $(id -u) -eq 0 ]] || SUDO="sudo"
+echo "setup-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup-deps: done"

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The whole test suite, from a fresh Debian machine: install dependencies,
+# build with AddressSanitizer + UBSan, run every CTest test (unit, CLI,
+# headless-Blender round trips, glTF validator, C#), then run each libFuzzer
+# target briefly. Exit status is non-zero if anything fails.
+#   scripts/test.sh [--no-fuzz]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+
+scripts/setup-deps.sh
+(cd tests/validator && npm ci --no-audit --no-fund --loglevel=error)
+
+cmake -S . -B build-test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMPL_SANITIZE=ON >/dev/null
+cmake --build build-test -j"$jobs"
+# Blender embeds its own allocator; sanitizers stay in our binaries only.
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+(cd build-test && ctest --output-on-failure -j"$jobs" --timeout 900)
+
+if [[ "${1:-}" != "--no-fuzz" ]]; then
+  scripts/fuzz.sh 30
+fi

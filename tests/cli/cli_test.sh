@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# CLI behaviour: failures print one "Error ..." line naming the file, exit
+# non-zero and leave no output; successes are deterministic.
+# Usage: cli_test.sh SMPL_EXPORT FIXTURE_DIR
+set -u
+exe=$1 fixtures=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+
+check() {  # name, condition result
+  if [ "$2" = 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1"; fi
+}
+
+expect_failure() {  # name, expected code, expected stderr text, args...
+  local name=$1 code=$2 text=$3; shift 3
+  rm -f "$work"/out.*
+  "$exe" "$@" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  [ "$got" = "$code" ]; check "$name: exit $got, expected $code" $?
+  grep -qF -- "$text" "$work/stderr"; check "$name: stderr lacks '$text': $(cat "$work/stderr")" $?
+  [ "$(wc -l <"$work/stderr")" = 1 ]; check "$name: error is not one line" $?
+  [ -z "$(ls "$work" | grep '^out\.')" ]; check "$name: left output $(ls "$work" | grep '^out\.')" $?
+}
+
+models=$fixtures/models
+head -c 5000 "$models/smpl_small.npz" >"$work/truncated.npz"
+head -c 3000 "$models/smpl_small_p2.pkl" >"$work/truncated.pkl"
+# A pickle whose REDUCE would run `touch hostile-ran` if anything executed it.
+python3 - "$work" <<'PY'
+import os, pickle, sys
+class Evil:
+    def __reduce__(self):
+        return (os.system, ("touch " + os.path.join(sys.argv[1], "hostile-ran"),))
+open(os.path.join(sys.argv[1], "hostile.pkl"), "wb").write(pickle.dumps({"v_template": Evil()}, protocol=2))
+PY
+
+expect_failure unknown-option 1 "unknown option '--bogus'" --model builtin --out "$work/out.glb" --bogus 1
+expect_failure missing-model 2 "Error loading $work/none.npz" --model "$work/none.npz" --out "$work/out.glb"
+expect_failure truncated-npz 2 "truncated.npz" --model "$work/truncated.npz" --out "$work/out.glb"
+expect_failure truncated-pkl 2 "truncated.pkl" --model "$work/truncated.pkl" --out "$work/out.glb"
+expect_failure hostile-pkl 2 "posix.system" --model "$work/hostile.pkl" --out "$work/out.glb"
+expect_failure too-many-betas 3 "11 values given" --model "$models/smpl_small.npz" --out "$work/out.glb" --betas 0,0,0,0,0,0,0,0,0,0,1
+expect_failure unwritable 4 "Error saving" --model "$models/smpl_small.npz" --out "$work/no/such/dir/out.glb"
+[ ! -e "$work/hostile-ran" ]; check "hostile pickle executed something" $?
+
+"$exe" --model "$models/smpl_small.npz" --out "$work/a.glb" --betas 0.5,-1 >"$work/summary" 2>&1
+check "export smpl_small: $(cat "$work/summary")" $?
+grep -q "morph targets" "$work/summary"; check "summary printed" $?
+grep -q "skinning error of 4 influences" "$work/summary"; check "pruning error printed" $?
+[ -s "$work/a.glb.smpl.json" ]; check "sidecar written" $?
+"$exe" --model "$models/smpl_small.npz" --out "$work/b.glb" --betas 0.5,-1 -q
+cmp -s "$work/a.glb" "$work/b.glb"; check "GLB output is deterministic" $?
+ls "$work" | grep -q tmp; [ $? != 0 ]; check "temporary files left behind" $?
+
+echo "$passed passed, $failed failed"
+[ "$failed" = 0 ]

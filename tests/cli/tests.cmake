@@ -1,0 +1,3 @@
+add_test(NAME cli_behaviour
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/cli_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli_behaviour PROPERTIES LABELS cli)
