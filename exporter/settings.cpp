@@ -46,6 +46,24 @@ Result<std::vector<double>> parseList(const std::string& text, const std::string
   return values;
 }
 
+// "A:B" (B exclusive, either may be empty) -> frame range.
+Status parseFrames(const std::string& value, AnimationOptions* a) {
+  size_t colon = value.find(':');
+  if (colon == std::string::npos) return makeError("--frames: expected A:B, got '" + value + "'");
+  const std::string first = value.substr(0, colon), end = value.substr(colon + 1);
+  if (!first.empty()) {
+    Result<int> v = parseInt(first, "--frames");
+    if (!v || *v < 0) return makeError("--frames: bad start '" + first + "'");
+    a->first_frame = *v;
+  }
+  if (!end.empty()) {
+    Result<int> v = parseInt(end, "--frames");
+    if (!v || *v <= a->first_frame) return makeError("--frames: end must be after start in '" + value + "'");
+    a->end_frame = *v;
+  }
+  return Status();
+}
+
 // One option with its value; returns an error for unknown names.
 Status applyOption(const std::string& name, const std::string& value, Settings* s) {
   ExportOptions& e = s->export_options;
@@ -55,7 +73,26 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
     *target = *v;
     return Status();
   };
-  if (name == "--model") s->model = value;
+  if (name == "--motion") s->motions.push_back(value);
+  else if (name == "--motion-dir") s->motion_dir = value;
+  else if (name == "--out-dir") s->out_dir = value;
+  else if (name == "--threads") return intInto(&s->threads);
+  else if (name == "--format") {
+    if (value != "glb" && value != "gltf" && value != "fbx") return makeError("--format: expected glb, gltf or fbx, got '" + value + "'");
+    s->format = value;
+  } else if (name == "--fps") {
+    Result<double> v = parseNumber(value, name);
+    if (!v || *v <= 0 || *v > 1000) return makeError("--fps: expected a rate in (0, 1000], got '" + value + "'");
+    s->animation.fps = *v;
+  } else if (name == "--frames") {
+    return parseFrames(value, &s->animation);
+  } else if (name == "--up") {
+    if (value != "y" && value != "z") return makeError("--up: expected 'y' or 'z', got '" + value + "'");
+    s->animation.up = value == "y" ? UpAxis::Y : UpAxis::Z;
+  } else if (name == "--root-motion") {
+    if (value != "keep" && value != "in-place") return makeError("--root-motion: expected 'keep' or 'in-place', got '" + value + "'");
+    s->animation.in_place = value == "in-place";
+  } else if (name == "--model") s->model = value;
   else if (name == "--out") s->out = value;
   else if (name == "--betas-file") s->betas_file = value;
   else if (name == "--uv") e.uv_obj = value;
@@ -82,8 +119,20 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
 Status checkConflicts(const Settings& s, const std::vector<std::string>& given) {
   auto has = [&](const char* o) { return std::find(given.begin(), given.end(), o) != given.end(); };
   if (s.model.empty()) return makeError("missing --model PATH (use --model builtin for the demo body)");
-  if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
   if (has("--betas") && has("--betas-file")) return makeError("--betas and --betas-file conflict: give one");
+  if (has("--betas-from-motion") && s.betas_given) return makeError("--betas-from-motion conflicts with --betas/--betas-file");
+  const bool batch = !s.motion_dir.empty() || !s.out_dir.empty();
+  const bool animated = !s.motions.empty() || batch;
+  for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion"})
+    if (has(o) && !animated) return makeError(std::string(o) + " needs --motion or --motion-dir");
+  if (batch) {
+    if (s.motion_dir.empty() || s.out_dir.empty()) return makeError("batch mode needs both --motion-dir and --out-dir");
+    if (!s.out.empty() || !s.motions.empty()) return makeError("--motion-dir/--out-dir conflict with --out/--motion");
+    if (has("--fbx-units") && s.format != "fbx") return makeError("--fbx-units applies only to --format fbx");
+    return Status();
+  }
+  if (has("--format") || has("--threads")) return makeError("--format and --threads apply only to batch mode (--motion-dir)");
+  if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
   const bool fbx = endsWith(s.out, ".fbx");
   if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
     return makeError("--out " + s.out + ": unknown format (expected .glb, .gltf or .fbx)");
@@ -91,7 +140,7 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   return Status();
 }
 
-const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q"};
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion"};
 
 }  // namespace
 
@@ -108,15 +157,18 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
       if (i + 1 >= argc) return makeError("option " + arg + " needs a value");
       value = argv[++i];
     }
-    if (std::find(given.begin(), given.end(), arg) != given.end())
+    if (arg != "--motion" && std::find(given.begin(), given.end(), arg) != given.end())
       return makeError("option " + arg + " given twice");
     given.push_back(arg);
     if (arg == "--help" || arg == "-h") s.help = true;
     else if (arg == "--version") s.version = true;
     else if (arg == "--quiet" || arg == "-q") s.quiet = true;
+    else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
     else if (Status st = applyOption(arg, value, &s); !st) return st.error();
   }
-  s.writer_options.binary = !endsWith(s.out, ".gltf");
+  s.betas_given = std::find(given.begin(), given.end(), "--betas") != given.end() ||
+                  std::find(given.begin(), given.end(), "--betas-file") != given.end();
+  s.writer_options.binary = !endsWith(s.out, ".gltf") && s.format != "gltf";
   if (s.help || s.version) return s;
   if (Status st = checkConflicts(s, given); !st) return st.error();
   return s;
@@ -171,6 +223,19 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
   --uv OBJ               UVs from an OBJ sharing the model's vertex order (seams split vertices)
   --name NAME            mesh name (default body)
   --fbx-units m|cm       FBX geometry units (default m)
+
+Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rotation matrices):
+  --motion FILE          bake FILE as an animation (repeatable: one animation each)
+  --fps F                resample to F frames per second (slerp/lerp; default: the motion's rate)
+  --frames A:B           source frames A (inclusive) to B (exclusive); either may be empty
+  --betas-from-motion    use the motion's betas (the default when no --betas/--betas-file)
+  --up y|z               up axis of the motion's world (default: z for AMASS files, else y);
+                         output is always Y-up
+  --root-motion keep|in-place   keep or drop horizontal root motion (default keep)
+  --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json in DIR, in parallel, skipping
+                         outputs newer than their inputs; per-file errors do not stop the batch
+  --format glb|gltf|fbx  batch output format (default glb)
+  --threads N            batch workers (default: all cores)
   --quiet, -q            no summary
   --version, --help
 

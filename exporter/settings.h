@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "exporter/animation.h"
 #include "exporter/pipeline.h"
 #include "plugins/writer.h"
 
@@ -15,12 +16,18 @@ struct Settings {
   std::string model;        // path or "builtin"
   std::string out;
   std::string betas_file;
+  std::vector<std::string> motions;  // --motion, repeatable: one animation each
+  std::string motion_dir, out_dir;   // batch mode
+  std::string format = "glb";        // batch output format
+  AnimationOptions animation;
+  bool betas_given = false;          // --betas or --betas-file; else betas come from the motion
   ExportOptions export_options;
   WriterOptions writer_options;
   bool quiet = false;
   bool help = false;
   bool version = false;
   int error_poses = 32;     // random poses for the pruning-error report
+  int threads = 0;          // batch workers; 0 = all cores
 };
 
 // Parse argv; the error text is one line for the user.

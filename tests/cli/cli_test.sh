@@ -8,7 +8,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0 failed=0
 
-check() {  # name, condition result
+check() {  # name, condition result (callers pass $? first: expansions in the name would reset it)
   if [ "$2" = 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1"; fi
 }
 
@@ -18,9 +18,13 @@ expect_failure() {  # name, expected code, expected stderr text, args...
   "$exe" "$@" >"$work/stdout" 2>"$work/stderr"
   local got=$?
   [ "$got" = "$code" ]; check "$name: exit $got, expected $code" $?
-  grep -qF -- "$text" "$work/stderr"; check "$name: stderr lacks '$text': $(cat "$work/stderr")" $?
+  local err
+  err=$(cat "$work/stderr")
+  grep -qF -- "$text" "$work/stderr"; check "$name: stderr lacks '$text': $err" $?
   [ "$(wc -l <"$work/stderr")" = 1 ]; check "$name: error is not one line" $?
-  [ -z "$(ls "$work" | grep '^out\.')" ]; check "$name: left output $(ls "$work" | grep '^out\.')" $?
+  local left
+  left=$(ls "$work" | grep '^out\.' || true)
+  [ -z "$left" ]; check "$name: left output $left" $?
 }
 
 models=$fixtures/models
@@ -45,7 +49,8 @@ expect_failure unwritable 4 "Error saving" --model "$models/smpl_small.npz" --ou
 [ ! -e "$work/hostile-ran" ]; check "hostile pickle executed something" $?
 
 "$exe" --model "$models/smpl_small.npz" --out "$work/a.glb" --betas 0.5,-1 >"$work/summary" 2>&1
-check "export smpl_small: $(cat "$work/summary")" $?
+status=$?
+check "export smpl_small: $(cat "$work/summary")" $status
 grep -q "morph targets" "$work/summary"; check "summary printed" $?
 grep -q "skinning error of 4 influences" "$work/summary"; check "pruning error printed" $?
 [ -s "$work/a.glb.smpl.json" ]; check "sidecar written" $?

@@ -1,0 +1,140 @@
+#include "exporter/animation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/joint_names.h"
+
+namespace smpl {
+namespace {
+
+// One resampled source position: frame index and blend fraction.
+struct Sample {
+  int frame;
+  double t;
+};
+
+std::vector<Sample> resampleTimes(int first, int end, double fps_in, double fps_out) {
+  std::vector<Sample> samples;
+  const double duration = (end - 1 - first) / fps_in;
+  const int count = static_cast<int>(std::floor(duration * fps_out + 1e-9)) + 1;
+  for (int i = 0; i < count; ++i) {
+    const double pos = first + i * fps_in / fps_out;
+    int frame = std::min(static_cast<int>(std::floor(pos + 1e-9)), end - 1);
+    samples.push_back({frame, std::max(0.0, pos - frame)});
+  }
+  return samples;
+}
+
+Eigen::Quaterniond rotationAt(const Motion& m, int source_joint, const Sample& s) {
+  Eigen::Quaterniond a(m.frames[s.frame][source_joint]);
+  if (s.t < 1e-12 || s.frame + 1 >= static_cast<int>(m.frames.size())) return a.normalized();
+  Eigen::Quaterniond b(m.frames[s.frame + 1][source_joint]);
+  return a.normalized().slerp(s.t, b.normalized());
+}
+
+Eigen::Vector3d translationAt(const Motion& m, const Sample& s) {
+  if (s.frame + 1 >= static_cast<int>(m.translation.size())) return m.translation[s.frame];
+  return (1 - s.t) * m.translation[s.frame] + s.t * m.translation[s.frame + 1];
+}
+
+// Quaternion sign continuity keeps LINEAR interpolation in engines on the short path.
+void makeContinuous(std::vector<Eigen::Quaterniond>* track) {
+  for (size_t i = 1; i < track->size(); ++i)
+    if ((*track)[i].dot((*track)[i - 1]) < 0) (*track)[i].coeffs() *= -1.0;
+}
+
+Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::string& context, int* end) {
+  const int total = static_cast<int>(motion.frames.size());
+  *end = o.end_frame < 0 ? total : o.end_frame;
+  if (o.first_frame < 0 || o.first_frame >= *end || *end > total)
+    return makeError(context + ": --frames " + std::to_string(o.first_frame) + ":" + std::to_string(*end) +
+                     " is outside the motion's " + std::to_string(total) + " frames");
+  if (o.fps < 0 || o.fps > 1000) return makeError("--fps must be in (0, 1000]");
+  return Status();
+}
+
+// Morph target index of each corrective layout entry (by name: the layout is the contract).
+std::vector<int> correctiveTargets(const Asset& asset) {
+  std::map<std::string, int> index;
+  for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i) index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
+  std::vector<int> targets;
+  for (const CorrectiveLayout& c : asset.metadata.correctives) targets.push_back(index.at(c.target));
+  return targets;
+}
+
+// Weight of each morph target per frame: correctives get scale * f + offset; others stay 0.
+void fillMorphWeights(const Asset& asset, const std::vector<int>& targets, const Rotations& rotations,
+                      Eigen::MatrixXf* weights, int frame) {
+  const Eigen::VectorXd f = poseFeatures(rotations);
+  const auto& correctives = asset.metadata.correctives;
+  for (size_t i = 0; i < correctives.size(); ++i)
+    (*weights)(frame, targets[i]) = static_cast<float>(correctives[i].scale * f[correctives[i].feature] + correctives[i].offset);
+}
+
+}  // namespace
+
+Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion, const std::string& context) {
+  const std::vector<std::string>& source = canonicalJointNames(motion.layout);
+  std::map<std::string, int> index;
+  for (size_t i = 0; i < source.size(); ++i) index[source[i]] = static_cast<int>(i);
+  MotionMapping m;
+  std::vector<bool> used(source.size(), false);
+  for (const std::string& name : model.joint_names) {
+    auto it = index.find(name);
+    m.source_of_joint.push_back(it == index.end() ? -1 : it->second);
+    if (it == index.end()) m.missing.push_back(name);
+    else used[it->second] = true;
+  }
+  for (size_t i = 0; i < source.size(); ++i)
+    if (!used[i]) m.dropped.push_back(source[i]);
+  if (m.source_of_joint[0] < 0)
+    return makeError(context + ": a " + modelKindName(motion.layout) + " motion cannot drive a " +
+                     modelKindName(model.kind) + " model (no common root joint)");
+  return m;
+}
+
+Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, const Motion& motion,
+                                    const AnimationOptions& o, const std::string& context, const Progress& progress) {
+  int end = 0;
+  if (Status s = checkFrames(motion, o, context, &end); !s) return s.error();
+  Result<MotionMapping> mapping = mapMotion(model, motion, context);
+  if (!mapping) return mapping.error();
+  const double fps = o.fps > 0 ? o.fps : motion.fps;
+  const std::vector<Sample> samples = resampleTimes(o.first_frame, end, motion.fps, fps);
+  const bool z_up = o.up == UpAxis::Z || (o.up == UpAxis::Auto && motion.amass);
+  // Z-up capture world -> Y-up output: rotate the whole body -90 degrees about X.
+  const Eigen::Matrix3d up = z_up ? Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix()
+                                  : Eigen::Matrix3d::Identity();
+  const int k = model.numJoints(), t = static_cast<int>(samples.size());
+  const Eigen::Vector3d j0 = asset.skeleton.rest_world.row(0).transpose();
+  AnimationClip clip;
+  clip.name = motion.name;
+  clip.fps = fps;
+  clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));
+  clip.morph_weights = Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
+  const std::vector<int> targets = correctiveTargets(asset);
+  Rotations local(k);
+  for (int i = 0; i < t; ++i) {
+    clip.times.push_back(i / fps);
+    for (int j = 0; j < k; ++j) {
+      const int src = mapping->source_of_joint[j];
+      Eigen::Quaterniond q = src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
+      if (j == 0) q = Eigen::Quaterniond(up) * q;
+      clip.rotations[j][i] = q;
+      local[j] = q.toRotationMatrix();
+    }
+    // The root node sits at J_0 + trans in the capture world; rotate it with the world.
+    Eigen::Vector3d root = up * (j0 + translationAt(motion, samples[i]));
+    if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
+    clip.root_translation.push_back(root);
+    fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
+    if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
+  }
+  for (auto& track : clip.rotations) makeContinuous(&track);
+  return clip;
+}
+
+}  // namespace smpl

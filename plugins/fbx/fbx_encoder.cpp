@@ -1,0 +1,213 @@
+#include "plugins/fbx/fbx_encoder.h"
+
+#include <zlib.h>
+
+#include <cstring>
+#include <limits>
+
+namespace smpl {
+namespace {
+
+const char kMagic[] = "Kaydara FBX Binary  \x00\x1a\x00";  // 23 bytes with the NULs
+constexpr size_t kMagicSize = 23;
+// Fixed footer bytes every reader and writer we know of uses.
+const unsigned char kFooterId[16] = {0xfa, 0xbc, 0xab, 0x09, 0xd0, 0xc8, 0xd4, 0x66,
+                                     0xb1, 0x76, 0xfb, 0x83, 0x1c, 0xf7, 0x26, 0x7e};
+const unsigned char kFooterMagic[16] = {0xf8, 0x5a, 0x8c, 0x6a, 0xde, 0xf5, 0xd9, 0x7e,
+                                        0xec, 0xe9, 0x0c, 0xe3, 0x75, 0x8f, 0x29, 0x0b};
+
+// Little-endian append, independent of the host byte order.
+template <class T>
+void putLE(std::string& out, T value) {
+  uint64_t bits = 0;
+  std::memcpy(&bits, &value, sizeof(T));
+  for (size_t i = 0; i < sizeof(T); ++i) out.push_back(static_cast<char>((bits >> (8 * i)) & 0xff));
+}
+
+template <class T>
+void patchLE(std::string& out, size_t at, T value) {
+  for (size_t i = 0; i < sizeof(T); ++i)
+    out[at + i] = static_cast<char>((uint64_t(value) >> (8 * i)) & 0xff);
+}
+
+FbxProperty scalar(char type, std::string payload) { return FbxProperty{type, std::move(payload)}; }
+
+template <class T>
+std::string encodeScalar(T v) {
+  std::string s;
+  putLE(s, v);
+  return s;
+}
+
+// Array payload: count, encoding (0 raw, 1 zlib), byte length, data.
+template <class T>
+FbxProperty encodeArray(char type, const std::vector<T>& values) {
+  std::string raw;
+  raw.reserve(values.size() * sizeof(T));
+  for (const T& v : values) putLE(raw, v);
+  std::string payload;
+  putLE(payload, static_cast<uint32_t>(values.size()));
+  if (raw.size() <= kFbxCompressThreshold) {
+    putLE(payload, uint32_t(0));
+    putLE(payload, static_cast<uint32_t>(raw.size()));
+    payload += raw;
+    return FbxProperty{type, std::move(payload)};
+  }
+  uLongf bound = compressBound(static_cast<uLong>(raw.size()));
+  std::string packed(bound, '\0');
+  int rc = compress2(reinterpret_cast<Bytef*>(&packed[0]), &bound,
+                     reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()),
+                     kFbxZlibLevel);
+  if (rc != Z_OK) {  // only on out-of-memory: fall back to raw storage
+    putLE(payload, uint32_t(0));
+    putLE(payload, static_cast<uint32_t>(raw.size()));
+    payload += raw;
+    return FbxProperty{type, std::move(payload)};
+  }
+  packed.resize(bound);
+  putLE(payload, uint32_t(1));
+  putLE(payload, static_cast<uint32_t>(packed.size()));
+  payload += packed;
+  return FbxProperty{type, std::move(payload)};
+}
+
+struct Encoder {
+  bool wide = false;  // 64-bit record headers (7500+)
+  std::string out;
+  std::string error;
+
+  size_t headerSize() const { return wide ? 24 : 12; }
+
+  void putHeaderField(uint64_t v) {
+    if (wide)
+      putLE(out, v);
+    else
+      putLE(out, static_cast<uint32_t>(v));
+  }
+
+  void patchHeaderField(size_t at, uint64_t v) {
+    if (wide)
+      patchLE(out, at, v);
+    else
+      patchLE(out, at, static_cast<uint32_t>(v));
+  }
+
+  void nullRecord() { out.append(headerSize() + 1, '\0'); }
+
+  bool node(const FbxNode& n) {
+    if (n.name.empty() || n.name.size() > 255) {
+      error = "FBX node name '" + n.name.substr(0, 40) + "' must be 1..255 bytes";
+      return false;
+    }
+    size_t header_at = out.size();
+    uint64_t prop_bytes = 0;
+    for (const FbxProperty& p : n.properties) prop_bytes += 1 + p.payload.size();
+    putHeaderField(0);  // end offset, patched below
+    putHeaderField(n.properties.size());
+    putHeaderField(prop_bytes);
+    out.push_back(static_cast<char>(n.name.size()));
+    out += n.name;
+    for (const FbxProperty& p : n.properties) {
+      out.push_back(p.type);
+      out += p.payload;
+    }
+    for (const FbxNode& child : n.children)
+      if (!node(child)) return false;
+    // Readers detect "has nested block" by end offset > end of properties.
+    if (!n.children.empty() || n.properties.empty()) nullRecord();
+    if (!wide && out.size() > std::numeric_limits<uint32_t>::max()) {
+      error = "FBX 7400 file exceeds 4 GiB at node '" + n.name + "'; use FBX 7500";
+      return false;
+    }
+    patchHeaderField(header_at, out.size());
+    return true;
+  }
+
+  void footer(uint32_t version) {
+    out.append(reinterpret_cast<const char*>(kFooterId), 16);
+    out.append(4, '\0');
+    size_t pad = 16 - (out.size() % 16);  // a full 16 when already aligned
+    out.append(pad, '\0');
+    putLE(out, version);
+    out.append(120, '\0');
+    out.append(reinterpret_cast<const char*>(kFooterMagic), 16);
+  }
+};
+
+}  // namespace
+
+FbxNode& FbxNode::add(std::string child_name) {
+  children.emplace_back(std::move(child_name));
+  return children.back();
+}
+
+FbxNode& FbxNode::addBool(bool v) {
+  properties.push_back(scalar('C', std::string(1, v ? '\x01' : '\x00')));
+  return *this;
+}
+FbxNode& FbxNode::addInt16(int16_t v) {
+  properties.push_back(scalar('Y', encodeScalar(v)));
+  return *this;
+}
+FbxNode& FbxNode::addInt32(int32_t v) {
+  properties.push_back(scalar('I', encodeScalar(v)));
+  return *this;
+}
+FbxNode& FbxNode::addInt64(int64_t v) {
+  properties.push_back(scalar('L', encodeScalar(v)));
+  return *this;
+}
+FbxNode& FbxNode::addFloat(float v) {
+  properties.push_back(scalar('F', encodeScalar(v)));
+  return *this;
+}
+FbxNode& FbxNode::addDouble(double v) {
+  properties.push_back(scalar('D', encodeScalar(v)));
+  return *this;
+}
+
+FbxNode& FbxNode::addString(const std::string& v) {
+  properties.push_back(scalar('S', encodeScalar(static_cast<uint32_t>(v.size())) + v));
+  return *this;
+}
+FbxNode& FbxNode::addRaw(const std::string& v) {
+  properties.push_back(scalar('R', encodeScalar(static_cast<uint32_t>(v.size())) + v));
+  return *this;
+}
+FbxNode& FbxNode::addFloatArray(const std::vector<float>& v) {
+  properties.push_back(encodeArray('f', v));
+  return *this;
+}
+FbxNode& FbxNode::addDoubleArray(const std::vector<double>& v) {
+  properties.push_back(encodeArray('d', v));
+  return *this;
+}
+FbxNode& FbxNode::addInt32Array(const std::vector<int32_t>& v) {
+  properties.push_back(encodeArray('i', v));
+  return *this;
+}
+FbxNode& FbxNode::addInt64Array(const std::vector<int64_t>& v) {
+  properties.push_back(encodeArray('l', v));
+  return *this;
+}
+FbxNode& FbxNode::addBoolArray(const std::vector<uint8_t>& v) {
+  properties.push_back(encodeArray('b', v));
+  return *this;
+}
+
+Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version) {
+  if (version < 7000 || version >= 8000)
+    return makeError("FBX: unsupported version " + std::to_string(version) +
+                     "; expected 7400 or 7500");
+  Encoder enc;
+  enc.wide = version >= 7500;
+  enc.out.append(kMagic, kMagicSize);
+  putLE(enc.out, version);
+  for (const FbxNode& n : top)
+    if (!enc.node(n)) return makeError(enc.error);
+  enc.nullRecord();
+  enc.footer(version);
+  return std::move(enc.out);
+}
+
+}  // namespace smpl

@@ -1,0 +1,73 @@
+// Binary FBX encoding: a tree of named nodes with typed properties -> bytes.
+// Knows nothing about scenes; fbx_scene.h builds the tree. The layout is the
+// one every binary FBX reader expects (Blender's parse_fbx.py, Assimp, ufbx,
+// the Autodesk SDK):
+//
+//   header   "Kaydara FBX Binary  \0" 0x1A 0x00, uint32 version
+//   node     endOffset, numProperties, propertyListLen (uint32 for 7400,
+//            uint64 for >= 7500), uint8 nameLen, name, properties, children,
+//            then a null record if the node has children or no properties
+//   top      nodes, then one null record
+//   footer   fixed 16-byte id, 4 zero bytes, padding to 16, version,
+//            120 zero bytes, fixed 16-byte magic
+//
+// Property payloads are encoded when added, so a node owns its bytes and the
+// encoder only lays them out. Arrays larger than 128 bytes are zlib
+// compressed at a fixed level (deterministic for a given zlib).
+//
+//   FbxNode root;
+//   FbxNode& n = root.add("Vertices");
+//   n.addDoubleArray(positions);
+//   Result<std::string> bytes = encodeFbx(root.children, 7400);
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace smpl {
+
+struct FbxProperty {
+  char type = 0;        // C Y I L F D S R f d l i b
+  std::string payload;  // encoded bytes after the type code
+};
+
+struct FbxNode {
+  std::string name;
+  std::vector<FbxProperty> properties;
+  std::vector<FbxNode> children;
+
+  FbxNode() = default;
+  explicit FbxNode(std::string n) : name(std::move(n)) {}
+
+  // Appends a child and returns it (reference valid until the next add()).
+  FbxNode& add(std::string child_name);
+
+  FbxNode& addBool(bool v);
+  FbxNode& addInt16(int16_t v);
+  FbxNode& addInt32(int32_t v);
+  FbxNode& addInt64(int64_t v);
+  FbxNode& addFloat(float v);
+  FbxNode& addDouble(double v);
+  FbxNode& addString(const std::string& v);
+  FbxNode& addRaw(const std::string& v);
+  FbxNode& addFloatArray(const std::vector<float>& v);
+  FbxNode& addDoubleArray(const std::vector<double>& v);
+  FbxNode& addInt32Array(const std::vector<int32_t>& v);
+  FbxNode& addInt64Array(const std::vector<int64_t>& v);
+  FbxNode& addBoolArray(const std::vector<uint8_t>& v);
+};
+
+// Arrays whose raw size exceeds this many bytes are deflated.
+constexpr size_t kFbxCompressThreshold = 128;
+// zlib level for array compression: fast, and fixed so output is stable.
+constexpr int kFbxZlibLevel = 1;
+
+// Serialises top-level nodes as a complete binary FBX file. version is 7400
+// (32-bit record headers) or 7500 (64-bit). Fails on names longer than 255
+// bytes or, for 7400, files beyond 4 GiB.
+Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version);
+
+}  // namespace smpl

@@ -1,0 +1,27 @@
+#include "plugins/fbx/fbx_writer.h"
+
+#include "plugins/fbx/fbx_encoder.h"
+#include "plugins/fbx/fbx_scene.h"
+
+namespace smpl {
+namespace {
+
+class FbxWriter : public Writer {
+ public:
+  const char* name() const override { return "fbx"; }
+
+  Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
+    Result<std::vector<FbxNode>> scene = buildFbxScene(asset, options);
+    if (!scene) return scene.error();
+    return encodeFbx(*scene, static_cast<uint32_t>(options.fbx_version));
+  }
+};
+
+}  // namespace
+
+const Writer& fbxWriter() {
+  static const FbxWriter writer;
+  return writer;
+}
+
+}  // namespace smpl

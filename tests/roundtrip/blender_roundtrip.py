@@ -1,0 +1,343 @@
+"""Headless-Blender round trip: import an exported asset, check it against the
+model read with numpy, pose it through bone rotations only, drive the
+correctives with the add-on and compare the evaluated mesh with the reference
+forward pass.
+
+  blender -b --factory-startup --python blender_roundtrip.py -- \
+      --asset body.glb --addon-dir blender/ [--model model.npz] \
+      [--reference PREFIX] [--betas 0.5,-1] [--poses 20] [--seed 1] \
+      [--label NAME] [--tol 1e-5] [--metadata-betas]
+
+--model: the model .npz, read here with numpy (independent of our C++ code);
+omitted for the builtin body, whose arrays then come from the reference dump.
+--reference: smpl-reference output (poses + C++ forward pass, pruned and
+unpruned weights); without it, poses are drawn here and numpy is the reference.
+Prints one line per case: "format layout M max_err_m mean_err_m".
+Exit status 0 only if every check passes.
+"""
+import argparse
+import os
+import sys
+import time
+
+import bpy
+import numpy as np
+
+np.bool = bool  # Debian numpy vs Blender 3.4's glTF importer
+sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import model_math  # noqa: E402
+
+# Model axes (+Y up) -> Blender world (+Z up): both importers turn +90 deg about X.
+MODEL_TO_WORLD = np.array([[1.0, 0, 0], [0, 0, -1], [0, 1, 0]])
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+        print("FAIL:", message)
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--asset", required=True)
+    ap.add_argument("--addon-dir", required=True)
+    ap.add_argument("--model")
+    ap.add_argument("--reference")
+    ap.add_argument("--betas", default="")
+    ap.add_argument("--metadata-betas", action="store_true",
+                    help="take betas from the asset's metadata (synthetic assets)")
+    ap.add_argument("--poses", type=int, default=20)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--label", default="")
+    ap.add_argument("--tol", type=float, default=1e-5)
+    return ap.parse_args(argv)
+
+
+def import_asset(path):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    ext = os.path.splitext(path)[1].lower()
+    if ext in (".glb", ".gltf"):
+        bpy.ops.import_scene.gltf(filepath=path)
+    elif ext == ".fbx":
+        bpy.ops.import_scene.fbx(filepath=path)
+    else:
+        raise SystemExit("blender_roundtrip: unknown asset type: " + path)
+    arms = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    meshes = [o for o in bpy.data.objects if o.type == "MESH" and o.data.shape_keys]
+    if len(arms) != 1 or len(meshes) != 1:
+        raise SystemExit("%s: expected 1 armature and 1 mesh with shape keys, found %d and %d"
+                         % (path, len(arms), len(meshes)))
+    return arms[0], meshes[0]
+
+
+def load_truth(args):
+    """Model arrays + subject from numpy (npz) or from the reference dump (builtin)."""
+    header, ref = model_math.read_reference(args.reference) if args.reference else (None, {})
+    if args.model:
+        model = model_math.load_model_npz(args.model)
+    else:
+        if "posedirs" not in ref:
+            raise SystemExit("blender_roundtrip: --model or a reference with --dump-model needed")
+        model = {k: ref[k] for k in ("posedirs", "weights")}
+        model["parents"] = header["parents"]
+    betas = [float(b) for b in args.betas.split(",") if b.strip()]
+    if args.metadata_betas:
+        from smpl_correctives import correctives
+        betas = (correctives.metadata_from_file(args.asset) or {}).get("betas", [])
+    if args.model:
+        v_shaped, joints = model_math.shape(model, betas)
+    else:
+        v_shaped, joints = ref["v_shaped"], ref["rest_joints"]
+    return model, v_shaped, joints, header, ref
+
+
+def world_to_model(points_world):
+    return points_world @ MODEL_TO_WORLD  # row vectors: (C^T p)^T = p^T C
+
+
+def basis_positions(mesh_obj):
+    """Rest (basis) vertex positions in model axes, metres."""
+    n = len(mesh_obj.data.vertices)
+    co = np.empty(n * 3, dtype=np.float32)
+    mesh_obj.data.shape_keys.reference_key.data.foreach_get("co", co)
+    return world_to_model(to_world(mesh_obj, co.reshape(n, 3)))
+
+
+def to_world(obj, points):
+    m = np.array(obj.matrix_world, dtype=np.float64)
+    return points.astype(np.float64) @ m[:3, :3].T + m[:3, 3]
+
+
+def vertex_map(mesh_obj, v_shaped):
+    """Model vertex index of every Blender vertex, matched by rest position."""
+    from mathutils import Vector
+    from mathutils.kdtree import KDTree
+    tree = KDTree(len(v_shaped))
+    for i, p in enumerate(v_shaped):
+        tree.insert(Vector(p), i)
+    tree.balance()
+    rest = basis_positions(mesh_obj)
+    found = [tree.find(Vector(p)) for p in rest]
+    worst = max(d for _, _, d in found)
+    check(worst <= 1e-5, "rest mesh differs from v_shaped by %.3g m" % worst)
+    index = np.array([i for _, i, _ in found])
+    check(len(set(index)) == len(v_shaped), "%d of %d model vertices present"
+          % (len(set(index)), len(v_shaped)))
+    return index, rest
+
+
+def check_metadata(asset, names, parents):
+    from smpl_correctives import correctives
+    meta = correctives.metadata_from_file(asset)
+    check(meta is not None, "%s: no SMPL metadata (asset.extras.smpl or sidecar)" % asset)
+    if meta is None:
+        return {}
+    check(meta.get("joint_names") == names, "metadata joint_names differ from the canonical names")
+    check(meta.get("parents") == parents, "metadata parents differ from kintree_table")
+    layout = [(c.get("feature"), c.get("target")) for c in meta.get("correctives", [])]
+    expect = list(enumerate(model_math.target_names(names)))
+    check(layout == expect, "metadata corrective layout is not feature n -> pose_<joint>_<rc>")
+    return meta
+
+
+def check_skeleton(arm, names, parents):
+    bones = arm.data.bones
+    for k, name in enumerate(names):
+        bone = bones.get(name)
+        check(bone is not None, "bone %s missing" % name)
+        if bone is None:
+            continue
+        want = names[parents[k]] if parents[k] >= 0 else None
+        got = bone.parent.name if bone.parent else None
+        check(got == want, "bone %s: parent %s, expected %s" % (name, got, want))
+    check(len(bones) == len(names), "%d bones, expected %d" % (len(bones), len(names)))
+
+
+def check_weights(mesh_obj, names, index, expected):
+    """Vertex groups against the model's weights pruned here with numpy."""
+    group_joint = {g.index: names.index(g.name) for g in mesh_obj.vertex_groups if g.name in names}
+    check(len(group_joint) == len(mesh_obj.vertex_groups), "vertex groups not named after joints")
+    got = np.zeros((len(index), len(names)))
+    for v in mesh_obj.data.vertices:
+        for g in v.groups:
+            if g.group in group_joint:
+                got[v.index, group_joint[g.group]] = g.weight
+    err = np.abs(got - expected[index]).max()
+    check(err <= 2e-6, "skin weights differ from numpy's pruned weights by %.3g" % err)
+
+
+def key_lookup(mesh_obj):
+    """Target name -> key block; importers may add prefixes ('Key|...')."""
+    table = {}
+    for kb in mesh_obj.data.shape_keys.key_blocks:
+        table[kb.name] = kb
+        table.setdefault(kb.name.rsplit("|", 1)[-1], kb)
+    return table
+
+
+def check_morph_targets(mesh_obj, names, posedirs, index):
+    keys = key_lookup(mesh_obj)
+    n = len(mesh_obj.data.vertices)
+    basis = np.empty(n * 3, dtype=np.float32)
+    mesh_obj.data.shape_keys.reference_key.data.foreach_get("co", basis)
+    linear = np.array(mesh_obj.matrix_world, dtype=np.float64)[:3, :3]
+    co = np.empty(n * 3, dtype=np.float32)
+    worst, missing = 0.0, []
+    for f, target in enumerate(model_math.target_names(names)):
+        kb = keys.get(target)
+        if kb is None:
+            missing.append(target)
+            continue
+        kb.data.foreach_get("co", co)
+        delta = world_to_model((co.astype(np.float64) - basis).reshape(n, 3) @ linear.T)
+        worst = max(worst, np.abs(delta - posedirs[index, :, f]).max())
+    check(not missing, "%d morph targets missing, e.g. %s" % (len(missing), missing[:3]))
+    check(worst <= 1e-6, "morph target deltas differ from posedirs by %.3g" % worst)
+
+
+def check_axes(arm, correctives):
+    """The add-on's C (model -> armature axes) against this script's own."""
+    arm_rot = np.array(arm.matrix_world.to_3x3().normalized(), dtype=np.float64)
+    axes = np.array(arm[correctives.PROP_AXES], dtype=np.float64).reshape(3, 3)
+    err = np.abs(axes - arm_rot.T @ MODEL_TO_WORLD).max()
+    check(err <= 1e-6, "add-on's model->armature axes off by %.3g" % err)
+
+
+def pose_armature(arm, names, rotations):
+    """Model-space local rotations R_k -> pose bone rotations.
+
+    Bone k's armature-space rotation change must be C G_k C^-1 (G_k the world
+    rotation); with Blender's parenting this makes the bone's basis rotation
+    B_k^-1 (C R_k C^-1) B_k, B_k the rest (matrix_local) rotation.
+    """
+    from mathutils import Matrix
+    arm_rot = np.array(arm.matrix_world.to_3x3().normalized(), dtype=np.float64)
+    c = arm_rot.T @ MODEL_TO_WORLD
+    for k, name in enumerate(names):
+        pb = arm.pose.bones[name]
+        rest = np.array(arm.data.bones[name].matrix_local.to_3x3().normalized(), dtype=np.float64)
+        basis = rest.T @ (c @ rotations[k] @ c.T) @ rest
+        pb.rotation_mode = "QUATERNION"
+        pb.rotation_quaternion = Matrix(basis.tolist()).to_quaternion()
+        pb.location = (0.0, 0.0, 0.0)
+        pb.scale = (1.0, 1.0, 1.0)
+
+
+def posed_joints(arm, names):
+    heads = np.array([arm.pose.bones[n].head for n in names], dtype=np.float64)
+    return world_to_model(to_world(arm, heads))
+
+
+def evaluated_vertices(mesh_obj):
+    dg = bpy.context.evaluated_depsgraph_get()
+    ev = mesh_obj.evaluated_get(dg)
+    me = ev.to_mesh()
+    co = np.empty(len(me.vertices) * 3, dtype=np.float32)
+    me.vertices.foreach_get("co", co)
+    out = world_to_model(to_world(ev, co.reshape(-1, 3)))
+    ev.to_mesh_clear()
+    return out
+
+
+def draw_poses(args, ref, k):
+    if "poses" in ref:
+        return ref["poses"]
+    rng = np.random.default_rng(args.seed)
+    return rng.uniform(-0.6, 0.6, (args.poses, k, 3))
+
+
+def run_poses(arm, mesh_obj, names, poses, index):
+    """Pose, drive the correctives, evaluate: (P,V,3) vertices, (P,K,3) joints, apply() seconds."""
+    from smpl_correctives import correctives
+    verts, joints, cost = [], [], []
+    for pose in poses:
+        pose_armature(arm, names, model_math.rodrigues(pose))
+        bpy.context.view_layer.update()
+        start = time.perf_counter()
+        correctives.apply(arm, mesh_obj)
+        cost.append(time.perf_counter() - start)
+        bpy.context.view_layer.update()
+        joints.append(posed_joints(arm, names))
+        verts.append(evaluated_vertices(mesh_obj))
+    return np.array(verts), np.array(joints), np.array(cost)
+
+
+def numpy_reference(model, v_shaped, rest_joints, poses, weights):
+    out = [model_math.forward(model, v_shaped, rest_joints, p, weights) for p in poses]
+    return (np.array([o[0] for o in out]), np.array([o[1] for o in out]),
+            np.array([o[2] for o in out]))
+
+
+def compare_reference(ref, name, numpy_value):
+    """smpl-reference (C++) against numpy: both double precision."""
+    if name in ref:
+        err = np.abs(ref[name] - numpy_value).max()
+        print("reference-vs-numpy %s max %.3g" % (name, err))
+        check(err <= 1e-9, "smpl-reference %s differs from numpy by %.3g" % (name, err))
+
+
+def main():
+    args = parse_args()
+    sys.path.insert(0, os.path.abspath(args.addon_dir))
+    from smpl_correctives import correctives
+    model, v_shaped, rest_joints, header, ref = load_truth(args)
+    k = len(model["parents"])
+    names, parents = model_math.joint_names(k), list(model["parents"])
+    arm, mesh_obj = import_asset(args.asset)
+    meta = check_metadata(args.asset, names, parents)
+    m = int(meta.get("max_influences", header["max_influences"] if header else 4))
+    check_skeleton(arm, names, parents)
+    index, _ = vertex_map(mesh_obj, v_shaped)
+    pruned = model_math.prune(model["weights"], m)
+    check_weights(mesh_obj, names, index, pruned)
+    check_morph_targets(mesh_obj, names, model["posedirs"], index)
+    correctives.bind(arm, mesh_obj, source_path=args.asset)
+    check_axes(arm, correctives)
+
+    poses = draw_poses(args, ref, k)
+    got, got_joints, cost = run_poses(arm, mesh_obj, names, poses, index)
+    want, want_joints, features = numpy_reference(model, v_shaped, rest_joints, poses, pruned)
+    want_full = numpy_reference(model, v_shaped, rest_joints, poses, model["weights"])[0]
+    compare_reference(ref, "features", features)
+    compare_reference(ref, "joints", want_joints)
+    compare_reference(ref, "vertices_pruned", want)
+    compare_reference(ref, "vertices_full", want_full)
+    err = np.abs(got_joints - want_joints).max()
+    check(err <= args.tol, "posed joints differ by %.3g m: bone rotation conversion is wrong" % err)
+
+    fmt = os.path.splitext(args.asset)[1].lstrip(".").lower()
+    label = args.label or os.path.basename(args.asset)
+    target = ref.get("vertices_pruned", want)
+    lossless = int((model["weights"] > 0).sum(1).max()) <= m  # pruning to M dropped nothing
+    for layout, reference in (("pruned", target), ("unpruned", ref.get("vertices_full", want_full))):
+        dist = np.linalg.norm(got - reference[:, index], axis=2)
+        print("%s %s:%s %d %.3e %.3e" % (fmt, label, layout, m, dist.max(), dist.mean()))
+        if layout == "pruned" or lossless:
+            check(dist.max() <= args.tol, "%s %s: max vertex error %.3g m > %g"
+                  % (label, layout, dist.max(), args.tol))
+    print("apply_cost K=%d keys=%d median_ms %.3f mean_ms %.3f max_ms %.3f" % (
+        k, len(model_math.target_names(names)), 1e3 * np.median(cost), 1e3 * cost.mean(), 1e3 * cost.max()))
+    if failures:
+        print("%d check(s) failed" % len(failures))
+        sys.stdout.flush()
+        os._exit(1)
+    print("OK")
+    sys.stdout.flush()
+    os._exit(0)
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except SystemExit as e:
+        print(e)
+        sys.stdout.flush()
+        os._exit(1)
+    except Exception:  # any error must fail the CTest run, not leave Blender at exit 0
+        import traceback
+        traceback.print_exc()
+        sys.stdout.flush()
+        os._exit(1)

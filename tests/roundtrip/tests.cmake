@@ -1,0 +1,159 @@
+# Round-trip tests through real readers (included from tests/CMakeLists.txt).
+#
+#   roundtrip.export.<case>      smpl-export writes <build>/roundtrip/<case>.<ext>,
+#                                case = <model>_m<M>_<format>, M = 4 and 8
+#   roundtrip.reference.<model>_m<M>  smpl-reference writes the C++ forward pass
+#   roundtrip.blender.<case>     headless Blender imports the asset, poses it with
+#                                20 seeded poses, drives the correctives with the
+#                                add-on and compares with the reference (1e-5 m)
+#   roundtrip.validator          Khronos glTF validator on every exported GLB
+#   blender.addon.*              the add-on alone, on GLBs written by numpy
+#                                (synthetic_asset.py), and installed from its zip
+#
+# Blender and node are required: when missing the tests fail, they never skip.
+# Labels: blender, validator.
+
+set(SMPL_ROUNDTRIP_DIR ${CMAKE_BINARY_DIR}/roundtrip)
+set(SMPL_ROUNDTRIP_SRC ${CMAKE_CURRENT_LIST_DIR})
+find_program(SMPL_BLENDER blender)
+if(NOT SMPL_BLENDER)
+  set(SMPL_BLENDER blender)  # the test then fails with "not found": no silent skip
+endif()
+find_program(SMPL_NODE node)
+if(NOT SMPL_NODE)
+  set(SMPL_NODE node)
+endif()
+option(SMPL_ROUNDTRIP_FBX "Also round-trip FBX output through Blender" ON)
+
+# --- the Blender add-on as an installable zip: <build>/smpl_correctives.zip
+set(SMPL_ADDON_FILES smpl_correctives/__init__.py smpl_correctives/correctives.py)
+set(SMPL_ADDON_ZIP ${CMAKE_BINARY_DIR}/smpl_correctives.zip)
+add_custom_command(OUTPUT ${SMPL_ADDON_ZIP}
+  COMMAND ${CMAKE_COMMAND} -E tar cf ${SMPL_ADDON_ZIP} --format=zip "--mtime=2000-01-01 00:00:00 UTC"
+          ${SMPL_ADDON_FILES}
+  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/blender
+  DEPENDS ${PROJECT_SOURCE_DIR}/blender/smpl_correctives/__init__.py
+          ${PROJECT_SOURCE_DIR}/blender/smpl_correctives/correctives.py
+  COMMENT "Packaging the Blender add-on: smpl_correctives.zip")
+add_custom_target(blender_addon ALL DEPENDS ${SMPL_ADDON_ZIP})
+
+# --- smpl-reference: the C++ forward pass for seeded random poses
+add_executable(smpl-reference ${PROJECT_SOURCE_DIR}/tests/tools/reference_tool.cpp)
+target_link_libraries(smpl-reference PRIVATE smpl_core)
+
+set(SMPL_BLENDER_RUN ${SMPL_BLENDER} -b --factory-startup --python-exit-code 1 --python)
+
+# smpl_roundtrip_reference(<name> <model> <M> <betas>): the C++ forward pass
+# for 20 seeded poses, shared by the formats. model: a fixture .npz (read by
+# numpy in Blender too) or "builtin" (arrays dumped for numpy).
+function(smpl_roundtrip_reference name model m betas)
+  set(dump)
+  if(model STREQUAL "builtin")
+    set(dump --dump-model)
+  endif()
+  add_test(NAME roundtrip.reference.${name}_m${m}
+    COMMAND smpl-reference --model ${model} --betas ${betas} --max-influences ${m}
+            --poses 20 --seed 7 --out ${SMPL_ROUNDTRIP_DIR}/${name}_m${m}_ref ${dump})
+  set_tests_properties(roundtrip.reference.${name}_m${m} PROPERTIES
+    FIXTURES_SETUP roundtrip_ref_${name}_m${m} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
+endfunction()
+
+# smpl_roundtrip_case(<name> <format> <model> <M> <betas> [SUFFIX s] [EXPORT_ARGS ...]):
+# export, then Blender.
+function(smpl_roundtrip_case name format model m betas)
+  cmake_parse_arguments(RT "" "SUFFIX" "EXPORT_ARGS" ${ARGN})
+  set(case ${name}_m${m}_${format}${RT_SUFFIX})
+  set(asset ${SMPL_ROUNDTRIP_DIR}/${case}.${format})
+  set(numpy_model)
+  if(NOT model STREQUAL "builtin")
+    set(numpy_model --model ${model})
+  endif()
+  add_test(NAME roundtrip.export.${case}
+    COMMAND smpl-export --model ${model} --betas ${betas} --max-influences ${m}
+            --out ${asset} --quiet ${RT_EXPORT_ARGS})
+  add_test(NAME roundtrip.blender.${case}
+    COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_roundtrip.py --
+            --asset ${asset} --addon-dir ${PROJECT_SOURCE_DIR}/blender
+            --reference ${SMPL_ROUNDTRIP_DIR}/${name}_m${m}_ref
+            --betas=${betas} --label ${name} --tol 1e-5 ${numpy_model})
+  set_tests_properties(roundtrip.export.${case} PROPERTIES
+    FIXTURES_SETUP roundtrip_${case} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
+  set_tests_properties(roundtrip.blender.${case} PROPERTIES
+    FIXTURES_REQUIRED "roundtrip_${case};roundtrip_ref_${name}_m${m};roundtrip_dir"
+    LABELS blender TIMEOUT 600)
+endfunction()
+
+add_test(NAME roundtrip.mkdir COMMAND ${CMAKE_COMMAND} -E make_directory ${SMPL_ROUNDTRIP_DIR})
+set_tests_properties(roundtrip.mkdir PROPERTIES FIXTURES_SETUP roundtrip_dir LABELS "blender;validator")
+
+# M = 4 (engines' limit, lossy) and M = 8, the CLI's maximum, which keeps every
+# influence of these models (at most 7 per vertex), so Blender must then match
+# the unpruned model too.
+set(SMPL_RT_MODELS smpl_small smplx_small builtin)
+set(SMPL_RT_INFLUENCES 4 8)
+set(SMPL_RT_BETAS "0.8,-0.5,0.3,1.2")
+set(SMPL_RT_FORMATS glb)
+if(SMPL_ROUNDTRIP_FBX)
+  list(APPEND SMPL_RT_FORMATS fbx)
+endif()
+set(SMPL_RT_GLBS)
+set(SMPL_RT_GLB_FIXTURES)
+foreach(i RANGE 2)
+  list(GET SMPL_RT_MODELS ${i} name)
+  set(model ${SMPL_FIXTURE_DIR}/models/${name}.npz)
+  if(name STREQUAL "builtin")
+    set(model builtin)
+  endif()
+  foreach(m ${SMPL_RT_INFLUENCES})
+    smpl_roundtrip_reference(${name} ${model} ${m} ${SMPL_RT_BETAS})
+    foreach(format ${SMPL_RT_FORMATS})
+      smpl_roundtrip_case(${name} ${format} ${model} ${m} ${SMPL_RT_BETAS})
+      if(format STREQUAL "glb")
+        list(APPEND SMPL_RT_GLBS ${SMPL_ROUNDTRIP_DIR}/${name}_m${m}_glb.glb)
+        list(APPEND SMPL_RT_GLB_FIXTURES roundtrip_${name}_m${m}_glb)
+      endif()
+    endforeach()
+  endforeach()
+endforeach()
+
+if(SMPL_ROUNDTRIP_FBX)
+  # Centimetre FBX: the importer scales the armature object; C must not care.
+  smpl_roundtrip_case(smpl_small fbx ${SMPL_FIXTURE_DIR}/models/smpl_small.npz 4
+                      ${SMPL_RT_BETAS} SUFFIX _cm EXPORT_ARGS --fbx-units cm)
+endif()
+
+# --- Khronos validator over every GLB the round trip writes (npm install is
+# done beforehand by the CI script in tests/validator).
+add_test(NAME roundtrip.validator
+  COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js ${SMPL_RT_GLBS})
+set_tests_properties(roundtrip.validator PROPERTIES
+  FIXTURES_REQUIRED "${SMPL_RT_GLB_FIXTURES}" LABELS validator)
+
+# --- the add-on alone, against GLBs written by numpy from the contract
+foreach(joints 24 55)
+  foreach(m 4 ${joints})
+    set(stem ${SMPL_ROUNDTRIP_DIR}/synthetic_${joints})
+    add_test(NAME blender.addon.synthetic_${joints}_m${m}.write
+      COMMAND ${SMPL_SYSTEM_PYTHON} ${SMPL_ROUNDTRIP_SRC}/synthetic_asset.py ${SMPL_ROUNDTRIP_DIR}
+              --joints ${joints} --max-influences ${m})
+    add_test(NAME blender.addon.synthetic_${joints}_m${m}
+      COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_roundtrip.py --
+              --asset ${stem}_m${m}.glb --addon-dir ${PROJECT_SOURCE_DIR}/blender
+              --model ${stem}_m${m}.npz --metadata-betas --label synthetic_${joints} --tol 1e-5)
+    set_tests_properties(blender.addon.synthetic_${joints}_m${m}.write PROPERTIES
+      FIXTURES_SETUP synthetic_${joints}_m${m} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
+    set_tests_properties(blender.addon.synthetic_${joints}_m${m} PROPERTIES
+      FIXTURES_REQUIRED "synthetic_${joints}_m${m};roundtrip_dir" LABELS blender)
+  endforeach()
+endforeach()
+
+# Installed from the zip: registration, the import operator, the frame-change
+# handler with a keyframed action, disable.
+add_test(NAME blender.addon.install
+  COMMAND ${CMAKE_COMMAND} -E env BLENDER_USER_SCRIPTS=${SMPL_ROUNDTRIP_DIR}/blender_user_scripts
+          ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_addon_test.py --
+          --zip ${SMPL_ADDON_ZIP} --asset ${SMPL_ROUNDTRIP_DIR}/synthetic_55_m55.glb
+          --model ${SMPL_ROUNDTRIP_DIR}/synthetic_55_m55.npz)
+set_tests_properties(blender.addon.install PROPERTIES
+  FIXTURES_REQUIRED "synthetic_55_m55;roundtrip_dir" LABELS blender)
+add_dependencies(smpl-reference blender_addon)  # the install test needs the zip built

@@ -1,0 +1,130 @@
+// Byte-exact goldens for the binary FBX encoder. The expected bytes are
+// written out by hand from the format description (record header, name,
+// properties, null records, footer), not taken from the encoder's output.
+#include "plugins/fbx/fbx_encoder.h"
+
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cstring>
+#include <string>
+
+namespace smpl {
+namespace {
+
+std::string bytes(std::initializer_list<int> values) {
+  std::string s;
+  for (int v : values) s.push_back(static_cast<char>(v));
+  return s;
+}
+
+const std::string kMagic = std::string("Kaydara FBX Binary  ") + bytes({0x00, 0x1a, 0x00});
+const std::string kFooterId = bytes({0xfa, 0xbc, 0xab, 0x09, 0xd0, 0xc8, 0xd4, 0x66, 0xb1, 0x76,
+                                     0xfb, 0x83, 0x1c, 0xf7, 0x26, 0x7e});
+const std::string kFooterMagic = bytes({0xf8, 0x5a, 0x8c, 0x6a, 0xde, 0xf5, 0xd9, 0x7e, 0xec, 0xe9,
+                                        0x0c, 0xe3, 0x75, 0x8f, 0x29, 0x0b});
+
+// Tree: A(I 1) { B(S "hi") }, C (no properties, no children).
+std::vector<FbxNode> tinyTree() {
+  std::vector<FbxNode> top(2);
+  top[0].name = "A";
+  top[0].addInt32(1);
+  top[0].add("B").addString("hi");
+  top[1].name = "C";
+  return top;
+}
+
+TEST(FbxEncoder, Version7400GoldenBytes) {
+  std::string expected = kMagic + bytes({0xe8, 0x1c, 0x00, 0x00});  // 7400; offset 27
+  // A @27: end 80, 1 property, 5 property bytes, name "A", I 1
+  expected += bytes({80, 0, 0, 0, 1, 0, 0, 0, 5, 0, 0, 0, 1, 'A', 'I', 1, 0, 0, 0});
+  // B @46: end 67, 1 property, 7 property bytes, name "B", S len 2 "hi"; no null record
+  expected += bytes({67, 0, 0, 0, 1, 0, 0, 0, 7, 0, 0, 0, 1, 'B', 'S', 2, 0, 0, 0, 'h', 'i'});
+  expected += std::string(13, '\0');  // A's nested-block null record, @67..80
+  // C @80: end 107, no properties: header, name, then a null record
+  expected += bytes({107, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 'C'}) + std::string(13, '\0');
+  expected += std::string(13, '\0');  // end of top level, @107..120
+  expected += kFooterId;              // @120..136
+  expected += std::string(4, '\0');   // @140
+  expected += std::string(4, '\0');   // padding to 144
+  expected += bytes({0xe8, 0x1c, 0x00, 0x00}) + std::string(120, '\0') + kFooterMagic;
+  ASSERT_EQ(expected.size(), 284u);
+
+  Result<std::string> out = encodeFbx(tinyTree(), 7400);
+  ASSERT_TRUE(out.ok()) << out.message();
+  EXPECT_EQ(*out, expected);
+}
+
+TEST(FbxEncoder, Version7500UsesWideHeadersAndNullRecords) {
+  std::vector<FbxNode> top(1);
+  top[0].name = "C";
+  std::string expected = kMagic + bytes({0x4c, 0x1d, 0x00, 0x00});  // 7500
+  // C @27: 3 x uint64 header (end 78), name, 25-byte null record
+  expected += bytes({78, 0, 0, 0, 0, 0, 0, 0}) + std::string(16, '\0') + bytes({1, 'C'});
+  expected += std::string(25, '\0');
+  expected += std::string(25, '\0');             // end of top level, @78..103
+  expected += kFooterId + std::string(4, '\0');  // @123
+  expected += std::string(5, '\0');              // padding to 128
+  expected += bytes({0x4c, 0x1d, 0x00, 0x00}) + std::string(120, '\0') + kFooterMagic;
+  ASSERT_EQ(expected.size(), 268u);
+
+  Result<std::string> out = encodeFbx(top, 7500);
+  ASSERT_TRUE(out.ok()) << out.message();
+  EXPECT_EQ(*out, expected);
+}
+
+TEST(FbxEncoder, ScalarAndSmallArrayPayloads) {
+  FbxNode n("N");
+  n.addBool(true).addInt16(-2).addInt64(-3).addFloat(1.5f).addDouble(-0.25).addRaw("xy");
+  n.addInt32Array({1, -1});
+  ASSERT_EQ(n.properties.size(), 7u);
+  EXPECT_EQ(n.properties[0].type, 'C');
+  EXPECT_EQ(n.properties[0].payload, bytes({1}));
+  EXPECT_EQ(n.properties[1].payload, bytes({0xfe, 0xff}));
+  EXPECT_EQ(n.properties[2].payload, bytes({0xfd, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff}));
+  EXPECT_EQ(n.properties[3].payload, bytes({0x00, 0x00, 0xc0, 0x3f}));        // 1.5f
+  EXPECT_EQ(n.properties[4].payload, bytes({0, 0, 0, 0, 0, 0, 0xd0, 0xbf}));  // -0.25
+  EXPECT_EQ(n.properties[5].type, 'R');
+  EXPECT_EQ(n.properties[5].payload, bytes({2, 0, 0, 0, 'x', 'y'}));
+  EXPECT_EQ(n.properties[6].type, 'i');
+  // count 2, encoding 0, 8 bytes, then the values
+  EXPECT_EQ(n.properties[6].payload,
+            bytes({2, 0, 0, 0, 0, 0, 0, 0, 8, 0, 0, 0, 1, 0, 0, 0, 0xff, 0xff, 0xff, 0xff}));
+}
+
+TEST(FbxEncoder, LargeArraysAreZlibCompressed) {
+  std::vector<double> values(100);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = 0.5 * double(i);
+  FbxNode n("N");
+  n.addDoubleArray(values);
+  const std::string& p = n.properties[0].payload;
+  ASSERT_GE(p.size(), 12u);
+  uint32_t count, encoding, length;
+  std::memcpy(&count, p.data(), 4);
+  std::memcpy(&encoding, p.data() + 4, 4);
+  std::memcpy(&length, p.data() + 8, 4);
+  EXPECT_EQ(count, 100u);
+  EXPECT_EQ(encoding, 1u);
+  ASSERT_EQ(length, p.size() - 12);
+  std::vector<double> back(100);
+  uLongf size = sizeof(double) * 100;
+  ASSERT_EQ(uncompress(reinterpret_cast<Bytef*>(back.data()), &size,
+                       reinterpret_cast<const Bytef*>(p.data() + 12), length),
+            Z_OK);
+  EXPECT_EQ(size, sizeof(double) * 100);
+  EXPECT_EQ(back, values);
+}
+
+TEST(FbxEncoder, RejectsBadNamesAndVersions) {
+  std::vector<FbxNode> top(1);
+  top[0].name = std::string(256, 'x');
+  EXPECT_FALSE(encodeFbx(top, 7400).ok());
+  top[0].name = "";
+  EXPECT_FALSE(encodeFbx(top, 7400).ok());
+  top[0].name = "ok";
+  EXPECT_FALSE(encodeFbx(top, 6100).ok());
+  EXPECT_TRUE(encodeFbx(top, 7400).ok());
+}
+
+}  // namespace
+}  // namespace smpl

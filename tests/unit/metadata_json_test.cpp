@@ -1,0 +1,86 @@
+// metadataJson: key order, values, round-trip doubles, hostile names.
+#include "exporter/metadata_json.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace smpl {
+namespace {
+
+Asset metadataAsset() {
+  Asset a;
+  a.name = "body";
+  a.skeleton.names = {"pelvis", "left_hip", "left_knee"};
+  a.skeleton.parents = {-1, 0, 1};
+  a.mesh.morph_targets.resize(2);
+  a.mesh.morph_targets[0].name = "pose_left_hip_00";
+  a.mesh.morph_targets[1].name = "shape_0";
+  AssetMetadata& m = a.metadata;
+  m.model_kind = "smpl";
+  m.model_name = "smpl_small.npz";
+  m.exporter_version = "0.1.0";
+  m.betas = {0.1, -1.0 / 3.0, 2.5e-300};
+  m.max_influences = 8;
+  m.correctives = {{0, "pose_left_hip_00", 0.5, -0.25}};
+  return a;
+}
+
+TEST(MetadataJson, KeysInDocumentedOrder) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(metadataJson(metadataAsset()));
+  std::vector<std::string> keys;
+  for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
+  const std::vector<std::string> want = {"model_kind",  "model_name",     "exporter_version",
+                                         "joint_names", "parents",        "betas",
+                                         "expression",  "max_influences", "units",
+                                         "up_axis",     "correctives",    "morph_targets"};
+  EXPECT_EQ(keys, want);
+  std::vector<std::string> entry_keys;
+  for (auto it = j["correctives"][0].begin(); it != j["correctives"][0].end(); ++it)
+    entry_keys.push_back(it.key());
+  EXPECT_EQ(entry_keys, (std::vector<std::string>{"feature", "target", "scale", "offset"}));
+}
+
+TEST(MetadataJson, ValuesRoundTrip) {
+  const Asset a = metadataAsset();
+  nlohmann::json j = nlohmann::json::parse(metadataJson(a));
+  EXPECT_EQ(j["model_kind"], "smpl");
+  EXPECT_EQ(j["model_name"], "smpl_small.npz");
+  EXPECT_EQ(j["exporter_version"], "0.1.0");
+  EXPECT_EQ(j["joint_names"], nlohmann::json({"pelvis", "left_hip", "left_knee"}));
+  EXPECT_EQ(j["parents"], nlohmann::json({-1, 0, 1}));
+  // Exact equality: the text must read back to the same doubles.
+  ASSERT_EQ(j["betas"].size(), 3u);
+  for (size_t i = 0; i < 3; ++i) EXPECT_EQ(j["betas"][i].get<double>(), a.metadata.betas[i]);
+  EXPECT_TRUE(j["expression"].is_array());
+  EXPECT_TRUE(j["expression"].empty());
+  EXPECT_EQ(j["max_influences"], 8);
+  EXPECT_EQ(j["units"], "meters");
+  EXPECT_EQ(j["up_axis"], "+Y");
+  EXPECT_EQ(j["correctives"][0]["feature"], 0);
+  EXPECT_EQ(j["correctives"][0]["target"], "pose_left_hip_00");
+  EXPECT_EQ(j["correctives"][0]["scale"].get<double>(), 0.5);
+  EXPECT_EQ(j["correctives"][0]["offset"].get<double>(), -0.25);
+  EXPECT_EQ(j["morph_targets"], nlohmann::json({"pose_left_hip_00", "shape_0"}));
+}
+
+TEST(MetadataJson, DeterministicAndEmptyListsStayArrays) {
+  Asset a;
+  EXPECT_EQ(metadataJson(a), metadataJson(a));
+  nlohmann::json j = nlohmann::json::parse(metadataJson(a));
+  for (const char* key :
+       {"joint_names", "parents", "betas", "expression", "correctives", "morph_targets"})
+    EXPECT_TRUE(j[key].is_array() && j[key].empty()) << key;
+}
+
+TEST(MetadataJson, InvalidUtf8NameDoesNotThrow) {
+  Asset a = metadataAsset();
+  a.skeleton.names[1] = std::string("bad\xff\xfe", 5);
+  std::string text;
+  ASSERT_NO_THROW(text = metadataJson(a));
+  nlohmann::json j = nlohmann::json::parse(text);
+  EXPECT_EQ(j["joint_names"].size(), 3u);
+}
+
+}  // namespace
+}  // namespace smpl

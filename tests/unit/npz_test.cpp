@@ -1,0 +1,137 @@
+// Tests for the .npz reader: archives written by np.savez,
+// np.savez_compressed and Python's zipfile (tests/fixtures/make_npy_cases.py)
+// against the values np.load returned; errors must name archive and member.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/npz.h"
+
+namespace smpl {
+namespace {
+
+const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/npy_cases/";
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  EXPECT_TRUE(in.good()) << "missing fixture " << path;
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+Result<ArrayDict> parse(const std::string& bytes) {
+  return parseNpz(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "model.npz");
+}
+
+std::string le(uint64_t v, int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) s += static_cast<char>(i < 8 ? (v >> (8 * i)) & 0xff : 0);
+  return s;
+}
+
+// A stored-only zip; enough to wrap hand-made members.
+std::string storedZip(const std::vector<std::pair<std::string, std::string>>& members) {
+  std::string body, cd;
+  for (const auto& m : members) {
+    const uint32_t crc = static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(m.second.data()),
+                                                     static_cast<uInt>(m.second.size())));
+    const std::string common = le(20, 2) + le(0, 6) + le(0x21, 2) + le(crc, 4) + le(m.second.size(), 4) +
+                               le(m.second.size(), 4) + le(m.first.size(), 2) + le(0, 2);
+    cd += le(0x02014b50, 4) + le(20, 2) + common + le(0, 10) + le(body.size(), 4) + m.first;
+    body += le(0x04034b50, 4) + common + m.first + m.second;
+  }
+  return body + cd + le(0x06054b50, 4) + le(0, 4) + le(members.size(), 2) + le(members.size(), 2) + le(cd.size(), 4) +
+         le(body.size(), 4) + le(0, 2);
+}
+
+std::string npy(const std::string& dict, const std::string& payload) {
+  std::string header = dict;
+  while ((10 + header.size() + 1) % 64) header += ' ';
+  header += '\n';
+  return std::string("\x93NUMPY\x01\x00", 8) + le(header.size(), 2) + header + payload;
+}
+
+void expectArray(const Array& a, const nlohmann::json& e) {
+  EXPECT_EQ(shapeString(a.shape), shapeString(e.at("shape").get<std::vector<int64_t>>()));
+  EXPECT_EQ(a.dtype, e.at("dtype").get<std::string>());
+  if (e.contains("strings")) {
+    EXPECT_EQ(a.strings, e.at("strings").get<std::vector<std::string>>());
+    return;
+  }
+  const nlohmann::json& values = e.at("values");
+  ASSERT_EQ(a.data.size(), values.size());
+  for (size_t i = 0; i < values.size(); ++i) {
+    ASSERT_FALSE(values[i].is_string()) << "fixture archives hold finite values only";
+    EXPECT_EQ(a.data[i], values[i].get<double>()) << "element " << i;
+  }
+}
+
+TEST(Npz, ArchivesMatchNpLoad) {
+  nlohmann::json expected = nlohmann::json::parse(readAll(kCases + "expected_npz.json"));
+  ASSERT_EQ(expected.size(), 4u);
+  for (auto file = expected.begin(); file != expected.end(); ++file) {
+    SCOPED_TRACE(file.key());
+    Result<ArrayDict> d = readNpzFile(kCases + file.key());
+    ASSERT_TRUE(d.ok()) << d.message();
+    ASSERT_EQ(d->size(), file.value().size());
+    for (auto key = file.value().begin(); key != file.value().end(); ++key) {
+      SCOPED_TRACE(key.key());
+      auto it = d->find(key.key());
+      ASSERT_NE(it, d->end());
+      expectArray(it->second, key.value());
+    }
+  }
+}
+
+TEST(Npz, ZipErrorsNameTheFileNotItsDirectory) {
+  Result<ArrayDict> d = readNpzFile(kCases + "names_u.npy");  // an .npy is not a zip
+  ASSERT_FALSE(d.ok());
+  EXPECT_EQ(d.message().rfind("names_u.npy: not a zip archive", 0), 0u) << d.message();
+  Result<ArrayDict> missing = readNpzFile(kCases + "missing.npz");
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.message().find("missing.npz: cannot open"), std::string::npos) << missing.message();
+}
+
+TEST(Npz, MemberErrorsNameArchiveAndMember) {
+  const std::string good = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
+  const std::string cut = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(10, '\0'));
+  Result<ArrayDict> d = parse(storedZip({{"betas.npy", good}, {"shapedirs.npy", cut}}));
+  ASSERT_FALSE(d.ok());
+  EXPECT_EQ(d.message(), "model.npz/shapedirs.npy: truncated data: expected 16 bytes, found 10");
+  const std::string obj = npy("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
+  Result<ArrayDict> o = parse(storedZip({{"kintree_table.npy", obj}}));
+  ASSERT_FALSE(o.ok());
+  EXPECT_EQ(o.message().rfind("model.npz/kintree_table.npy: object arrays", 0), 0u) << o.message();
+  Result<ArrayDict> txt = parse(storedZip({{"readme.txt", "hello"}}));
+  ASSERT_FALSE(txt.ok());
+  EXPECT_EQ(txt.message().rfind("model.npz/readme.txt: not an .npy file", 0), 0u) << txt.message();
+}
+
+TEST(Npz, KeysDropTheNpySuffixAndDuplicatesAreRefused) {
+  const std::string a = npy("{'descr': '<i2', 'fortran_order': False, 'shape': (), }", std::string("\x07\x00", 2));
+  Result<ArrayDict> d = parse(storedZip({{"dir/", ""}, {"fps.npy", a}, {"fps.npy.npy", a}}));
+  ASSERT_TRUE(d.ok()) << d.message();
+  ASSERT_EQ(d->size(), 2u);
+  EXPECT_EQ(d->at("fps").data, std::vector<double>{7});
+  EXPECT_EQ(d->count("fps.npy"), 1u);
+  Result<ArrayDict> dup = parse(storedZip({{"fps.npy", a}, {"fps", a}}));
+  ASSERT_FALSE(dup.ok());
+  EXPECT_EQ(dup.message(), "model.npz/fps: duplicate member 'fps'");
+}
+
+TEST(Npz, EveryTruncationOfAStoredArchiveIsAnError) {
+  const std::string full = readAll(kCases + "stored.npz");
+  for (size_t len = 0; len < full.size(); ++len) {
+    Result<ArrayDict> d = parse(full.substr(0, len));
+    ASSERT_FALSE(d.ok()) << "cut at " << len;
+    EXPECT_EQ(d.message().rfind("model.npz", 0), 0u) << d.message();
+  }
+}
+
+}  // namespace
+}  // namespace smpl

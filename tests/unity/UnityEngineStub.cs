@@ -1,0 +1,184 @@
+// The few UnityEngine types unity/Runtime uses, hand-written so the runtime
+// compiles and runs under mono in CI without Unity. Semantics follow Unity's
+// documentation where the runtime depends on them: float quaternions with
+// Hamilton products, Transform.rotation as the world rotation (derived from
+// the parent chain and localRotation), SkinnedMeshRenderer blend shape weights
+// on Unity's 0..100 scale, unclamped (legacyClampBlendShapeWeights off).
+using System;
+using System.Collections.Generic;
+
+namespace UnityEngine
+{
+    public struct Vector3
+    {
+        public float x, y, z;
+        public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
+    }
+
+    public struct Quaternion
+    {
+        public float x, y, z, w;
+        public Quaternion(float x, float y, float z, float w) { this.x = x; this.y = y; this.z = z; this.w = w; }
+        public static Quaternion identity { get { return new Quaternion(0, 0, 0, 1); } }
+
+        public static Quaternion operator *(Quaternion a, Quaternion b)
+        {
+            return new Quaternion(
+                a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+                a.w * b.y + a.y * b.w + a.z * b.x - a.x * b.z,
+                a.w * b.z + a.z * b.w + a.x * b.y - a.y * b.x,
+                a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
+        }
+
+        public static Quaternion Inverse(Quaternion q) { return new Quaternion(-q.x, -q.y, -q.z, q.w); }
+    }
+
+    public struct Matrix4x4
+    {
+        public float m00, m01, m02, m03, m10, m11, m12, m13, m20, m21, m22, m23, m30, m31, m32, m33;
+    }
+
+    public class Object
+    {
+        public string name = "";
+    }
+
+    public class GameObject : Object
+    {
+        readonly List<Component> components = new List<Component>();
+        public readonly Transform transform;
+
+        public GameObject(string name)
+        {
+            this.name = name;
+            transform = new Transform();
+            Attach(transform);
+        }
+
+        void Attach(Component c)
+        {
+            c.gameObject = this;
+            c.name = name;
+            components.Add(c);
+        }
+
+        public T AddComponent<T>() where T : Component, new()
+        {
+            var c = new T();
+            Attach(c);
+            return c;
+        }
+
+        public T GetComponent<T>() where T : Component
+        {
+            foreach (Component c in components)
+                if (c is T) return (T)c;
+            return null;
+        }
+    }
+
+    public class Component : Object
+    {
+        public GameObject gameObject;
+        public Transform transform { get { return gameObject.transform; } }
+        public T GetComponent<T>() where T : Component { return gameObject.GetComponent<T>(); }
+    }
+
+    public class Behaviour : Component
+    {
+        public bool enabled = true;
+    }
+
+    public class MonoBehaviour : Behaviour { }
+
+    public class Transform : Component
+    {
+        Transform parentTransform;
+        readonly List<Transform> children = new List<Transform>();
+        public Quaternion localRotation = Quaternion.identity;
+
+        public Transform parent
+        {
+            get { return parentTransform; }
+            set
+            {
+                if (parentTransform != null) parentTransform.children.Remove(this);
+                parentTransform = value;
+                if (value != null) value.children.Add(this);
+            }
+        }
+
+        public int childCount { get { return children.Count; } }
+        public Transform GetChild(int index) { return children[index]; }
+
+        public Quaternion rotation
+        {
+            get { return parentTransform == null ? localRotation : parentTransform.rotation * localRotation; }
+            set { localRotation = parentTransform == null ? value : Quaternion.Inverse(parentTransform.rotation) * value; }
+        }
+    }
+
+    public class Mesh : Object
+    {
+        public List<string> blendShapeNames = new List<string>();
+        Matrix4x4[] bindposeArray = new Matrix4x4[0];
+        public int blendShapeCount { get { return blendShapeNames.Count; } }
+        public string GetBlendShapeName(int index) { return blendShapeNames[index]; }
+        // Unity returns a copy, as here.
+        public Matrix4x4[] bindposes
+        {
+            get { return (Matrix4x4[])bindposeArray.Clone(); }
+            set { bindposeArray = (Matrix4x4[])value.Clone(); }
+        }
+    }
+
+    public class Renderer : Component { }
+
+    public class SkinnedMeshRenderer : Renderer
+    {
+        public Mesh sharedMesh;
+        public Transform[] bones = new Transform[0];
+        public Transform rootBone;
+        public readonly Dictionary<int, float> weights = new Dictionary<int, float>();
+
+        public void SetBlendShapeWeight(int index, float value)
+        {
+            if (sharedMesh == null || index < 0 || index >= sharedMesh.blendShapeCount)
+                throw new ArgumentOutOfRangeException("index");
+            weights[index] = value;
+        }
+
+        public float GetBlendShapeWeight(int index)
+        {
+            float v;
+            return weights.TryGetValue(index, out v) ? v : 0f;
+        }
+    }
+
+    public class TextAsset : Object
+    {
+        public string text = "";
+    }
+
+    public static class Debug
+    {
+        public static readonly List<string> Log = new List<string>();
+        public static void LogWarning(object message, Object context) { Log.Add("warning: " + message); }
+        public static void LogError(object message, Object context) { Log.Add("error: " + message); }
+    }
+
+    [AttributeUsage(AttributeTargets.Class)]
+    public sealed class AddComponentMenu : Attribute { public AddComponentMenu(string menuName) { } }
+
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true)]
+    public sealed class RequireComponent : Attribute { public RequireComponent(Type t) { } }
+
+    [AttributeUsage(AttributeTargets.Class)]
+    public sealed class DisallowMultipleComponent : Attribute { }
+
+    [AttributeUsage(AttributeTargets.Class)]
+    public sealed class DefaultExecutionOrder : Attribute { public DefaultExecutionOrder(int order) { } }
+
+    [AttributeUsage(AttributeTargets.Field)]
+    public sealed class TooltipAttribute : Attribute { public TooltipAttribute(string tooltip) { } }
+}

@@ -1,0 +1,224 @@
+// SmplCorrectives (the MonoBehaviour) on stubbed UnityEngine objects, with
+// Unity's float types: importer-decorated bone and blend shape names, a
+// rotated character, rest from bind poses (in centimetres) or from Start, a
+// sidecar with scale/offset, a missing bone, and a wrong axis convention
+// that must be detected.
+#if SMPL_EXPORT_MONO_TESTS
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Text;
+using SmplExport.Correctives;
+using UnityEngine;
+
+namespace SmplExport.Correctives.Tests
+{
+    // Model/ (rotated by W)
+    //   Body        SkinnedMeshRenderer + SmplCorrectives
+    //   Armature/   bones named prefix + joint name, parented as the model
+    public sealed class TestRig
+    {
+        public readonly GameObject Model, Body;
+        public readonly Transform[] Bones;
+        public readonly SkinnedMeshRenderer Skin;
+        public readonly SmplCorrectives Driver;
+        public readonly Dictionary<string, int> ShapeIndex = new Dictionary<string, int>();
+        public Quaternion W = Quaternion.identity;
+
+        public TestRig(ReferenceModel model, string bonePrefix, string shapePrefix)
+        {
+            Model = new GameObject("Model");
+            Body = new GameObject("Body");
+            Body.transform.parent = Model.transform;
+            var armature = new GameObject("Armature");
+            armature.transform.parent = Model.transform;
+            Bones = new Transform[model.JointCount];
+            for (int k = 0; k < model.JointCount; ++k)
+            {
+                Bones[k] = new GameObject(bonePrefix + model.JointNames[k]).transform;
+                Bones[k].parent = k == 0 ? armature.transform : Bones[model.Parents[k]];
+            }
+            Skin = Body.AddComponent<SkinnedMeshRenderer>();
+            Skin.sharedMesh = new Mesh { name = "BodyMesh" };
+            // Reverse order and unrelated shapes: lookup must go by name.
+            Skin.sharedMesh.blendShapeNames.Add("Smile");
+            SidecarLayout layout = SidecarLayout.FromSkeleton(model.JointNames, model.Parents);
+            for (int i = layout.Correctives.Length - 1; i >= 0; --i)
+            {
+                ShapeIndex[layout.Correctives[i].Target] = Skin.sharedMesh.blendShapeCount;
+                Skin.sharedMesh.blendShapeNames.Add(shapePrefix + layout.Correctives[i].Target);
+            }
+            Driver = Body.AddComponent<SmplCorrectives>();
+            Driver.sidecar = new TextAsset { name = "body.glb.smpl.json", text = Sidecar(model, 1.0, 0.0) };
+        }
+
+        public void Pose(Quat[] world)
+        {
+            Model.transform.rotation = W;
+            for (int k = 0; k < Bones.Length; ++k) Bones[k].rotation = W * ToFloat(world[k]);
+        }
+
+        public static string Sidecar(ReferenceModel model, double scale, double offset)
+        {
+            var sb = new StringBuilder("{\"model_kind\":\"smpl\",\"joint_names\":[");
+            for (int k = 0; k < model.JointCount; ++k) sb.Append(k > 0 ? "," : "").Append('"').Append(model.JointNames[k]).Append('"');
+            sb.Append("],\"parents\":[").Append(string.Join(",", Array.ConvertAll(model.Parents, p => p.ToString(CultureInfo.InvariantCulture))));
+            sb.Append("],\"units\":\"meters\",\"correctives\":[");
+            for (int n = 0; n < 9 * (model.JointCount - 1); ++n)
+            {
+                int k = n / 9 + 1, rc = n % 9;
+                sb.Append(n > 0 ? "," : "").Append("{\"feature\":").Append(n)
+                  .Append(",\"target\":\"pose_").Append(model.JointNames[k]).Append('_').Append(rc / 3).Append(rc % 3)
+                  .Append("\",\"scale\":").Append(scale.ToString("R", CultureInfo.InvariantCulture))
+                  .Append(",\"offset\":").Append(offset.ToString("R", CultureInfo.InvariantCulture)).Append('}');
+            }
+            return sb.Append("]}").ToString();
+        }
+
+        public static Quaternion ToFloat(Quat q) { return new Quaternion((float)q.X, (float)q.Y, (float)q.Z, (float)q.W); }
+
+        // Unity's bind pose of a bone whose mesh-space rest rotation is `rest`,
+        // for an asset in centimetres (uniform scale 100).
+        public static Matrix4x4 BindPose(Quat rest)
+        {
+            var m = new double[9];
+            rest.Inverse().WriteMatrixMinusIdentity(m, 0);
+            for (int i = 0; i < 3; ++i) m[4 * i] += 1.0;
+            return new Matrix4x4 {
+                m00 = (float)(100 * m[0]), m01 = (float)(100 * m[1]), m02 = (float)(100 * m[2]),
+                m10 = (float)(100 * m[3]), m11 = (float)(100 * m[4]), m12 = (float)(100 * m[5]),
+                m20 = (float)(100 * m[6]), m21 = (float)(100 * m[7]), m22 = (float)(100 * m[8]),
+                m33 = 1 };
+        }
+    }
+
+    static class ComponentTests
+    {
+        static readonly Quaternion Turned = Normalised(new Quaternion(0.3f, -0.5f, 0.2f, 0.78f));
+
+        public static void Run(ReferenceModel model)
+        {
+            StartPoseDecoratedNames(model);
+            BindPosesWithSidecar(model);
+            WrongAxisConventionIsDetected(model);
+            MissingBone(model);
+        }
+
+        // Identity-rest bones with Mixamo-style names, rest taken at Start.
+        static void StartPoseDecoratedNames(ReferenceModel model)
+        {
+            var rig = new TestRig(model, "mixamorig:", "BlendShapeChannel.");
+            rig.W = Turned;
+            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
+            if (model.JointCount == 24) rig.Driver.sidecar = null;  // the built-in SMPL layout
+            rig.Pose(Identities(model.JointCount));
+            bool ready = rig.Driver.Initialize();
+            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
+                                   model.Name + ": StartPose setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            if (!ready) return;
+            double feature = 0, weight = 0;
+            foreach (ReferencePose pose in model.Poses)
+            {
+                rig.Pose(pose.IdentityRestWorld);
+                rig.Driver.Evaluate();
+                feature = Math.Max(feature, CorrectivesTests.MaxError(rig.Driver.Features, pose.Features));
+                weight = Math.Max(weight, WeightError(rig, model, pose.Features, 1.0, 0.0));
+            }
+            CorrectivesTests.CheckClose(feature, CorrectivesTests.FloatTolerance, model.Name + ": SmplCorrectives features, rest at Start");
+            CorrectivesTests.CheckClose(weight, CorrectivesTests.FloatTolerance, model.Name + ": blend shape weights / 100, rest at Start");
+        }
+
+        // Bones with random bind orientations (FBX-like), rest from the mesh's
+        // bind poses while the character starts in a non-rest pose, and a
+        // sidecar mapping every feature to 100 * (0.5 f + 0.5).
+        static void BindPosesWithSidecar(ReferenceModel model)
+        {
+            var rig = new TestRig(model, "Armature|", model.Name + ".");
+            rig.W = Turned;
+            var order = new List<int>();
+            for (int k = model.JointCount - 1; k >= 0; --k) order.Add(k);  // renderer order != model order
+            rig.Skin.bones = order.ConvertAll(k => rig.Bones[k]).ToArray();
+            rig.Skin.sharedMesh.bindposes = order.ConvertAll(k => TestRig.BindPose(model.BindRest[k])).ToArray();
+            rig.Driver.sidecar = new TextAsset { name = "body.glb.smpl.json", text = TestRig.Sidecar(model, 0.5, 0.5) };
+            rig.Pose(model.Poses[0].BindRestWorld);
+            bool ready = rig.Driver.Initialize();
+            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
+                                   model.Name + ": BindPoses setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            if (!ready) return;
+            double feature = 0, weight = 0;
+            foreach (ReferencePose pose in model.Poses)
+            {
+                rig.Pose(pose.BindRestWorld);
+                rig.Driver.Evaluate();
+                feature = Math.Max(feature, CorrectivesTests.MaxError(rig.Driver.Features, pose.Features));
+                weight = Math.Max(weight, WeightError(rig, model, pose.Features, 0.5, 0.5));
+            }
+            CorrectivesTests.CheckClose(feature, CorrectivesTests.FloatTolerance, model.Name + ": SmplCorrectives features, bind poses");
+            CorrectivesTests.CheckClose(weight, CorrectivesTests.FloatTolerance, model.Name + ": weights with sidecar scale/offset");
+        }
+
+        static void WrongAxisConventionIsDetected(ReferenceModel model)
+        {
+            var rig = new TestRig(model, "", "");
+            rig.Driver.axisConvention = SmplCorrectives.AxisConvention.Identity;
+            rig.Pose(Identities(model.JointCount));
+            rig.Driver.Initialize();
+            double worst = 0;
+            foreach (ReferencePose pose in model.Poses)
+            {
+                rig.Pose(pose.IdentityRestWorld);
+                rig.Driver.Evaluate();
+                worst = Math.Max(worst, CorrectivesTests.MaxError(rig.Driver.Features, pose.Features));
+            }
+            CorrectivesTests.Check(worst > 1e-3, model.Name + ": identity axis convention went unnoticed (max error " + worst + ")");
+        }
+
+        // A leaf joint without a bone: its features are zero, the rest still match.
+        static void MissingBone(ReferenceModel model)
+        {
+            int leaf = model.JointCount - 1;
+            var rig = new TestRig(model, "", "");
+            rig.Bones[leaf].name = "unrelated_" + leaf + "x";
+            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
+            rig.Pose(Identities(model.JointCount));
+            rig.Driver.Initialize();
+            CorrectivesTests.Check(rig.Driver.Messages.Count == 1 && rig.Driver.Messages[0].Contains(model.JointNames[leaf]),
+                                   model.Name + ": missing bone not reported: " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            ReferencePose pose = model.Poses[0];
+            rig.Pose(pose.IdentityRestWorld);
+            rig.Driver.Evaluate();
+            var expected = (double[])pose.Features.Clone();
+            for (int i = 0; i < 9; ++i) expected[9 * (leaf - 1) + i] = 0;
+            CorrectivesTests.CheckClose(CorrectivesTests.MaxError(rig.Driver.Features, expected), CorrectivesTests.FloatTolerance,
+                                        model.Name + ": features with a missing leaf bone");
+        }
+
+        static double WeightError(TestRig rig, ReferenceModel model, double[] features, double scale, double offset)
+        {
+            double worst = 0;
+            for (int k = 1; k < model.JointCount; ++k)
+                for (int rc = 0; rc < 9; ++rc)
+                {
+                    string target = "pose_" + model.JointNames[k] + "_" + (rc / 3) + (rc % 3);
+                    double expected = scale * features[9 * (k - 1) + rc] + offset;
+                    double actual = rig.Skin.GetBlendShapeWeight(rig.ShapeIndex[target]) / 100.0;
+                    worst = Math.Max(worst, Math.Abs(actual - expected));
+                }
+            return worst;
+        }
+
+        static Quat[] Identities(int count)
+        {
+            var q = new Quat[count];
+            for (int k = 0; k < count; ++k) q[k] = Quat.Identity;
+            return q;
+        }
+
+        static Quaternion Normalised(Quaternion q)
+        {
+            float n = (float)Math.Sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+            return new Quaternion(q.x / n, q.y / n, q.z / n, q.w / n);
+        }
+    }
+}
+#endif

@@ -1,0 +1,112 @@
+// Small pieces checked on their own: name matching, sidecar parsing and its
+// errors, the JSON reader on hostile input, axis map validation, and the
+// bind pose rotation extraction.
+#if SMPL_EXPORT_MONO_TESTS
+using System;
+using System.Collections.Generic;
+using SmplExport.Correctives;
+
+namespace SmplExport.Correctives.Tests
+{
+    static class UnitTests
+    {
+        public static void Run()
+        {
+            NameMatching();
+            SidecarParsing();
+            HostileJson();
+            AxisMapValidation();
+            RotationFromScaledMatrix();
+        }
+
+        static void NameMatching()
+        {
+            Check(NameMatch.IsSuffixMatch("mixamorig:left_hip", "left_hip"), "prefix with ':'");
+            Check(NameMatch.IsSuffixMatch("Armature/pelvis", "pelvis"), "prefix with '/'");
+            Check(NameMatch.IsSuffixMatch("Body.pose_left_hip_00", "pose_left_hip_00"), "blend shape channel prefix");
+            Check(!NameMatch.IsSuffixMatch("spine12", "spine1") && !NameMatch.IsSuffixMatch("xspine1", "spine1"),
+                  "no match without a separator");
+            Check(!NameMatch.IsSuffixMatch("spine1", "spine1"), "equal names are exact, not suffix, matches");
+            // Exact names win, are not reused, and the least decorated suffix match wins.
+            int[] m = NameMatch.Assign(new[] { "left_hip", "hip", "neck", "head" },
+                                       new[] { "a:left_hip", "left_hip", "x:y:neck", "y:neck", "jaw" });
+            Check(m[0] == 1, "exact match preferred over suffix (got " + m[0] + ")");
+            Check(m[1] == 0, "'hip' falls back to a suffix match of an unused name (got " + m[1] + ")");
+            Check(m[2] == 3, "shortest suffix match wins (got " + m[2] + ")");
+            Check(m[3] == -1, "no candidate gives -1 (got " + m[3] + ")");
+        }
+
+        static void SidecarParsing()
+        {
+            string ok = "{\"joint_names\":[\"root\",\"a\"],\"parents\":[-1,0],\"correctives\":[" +
+                        "{\"feature\":8,\"target\":\"pose_a_22\",\"scale\":0.5,\"offset\":1}]}";
+            string error;
+            SidecarLayout layout = SidecarLayout.Parse(ok, "x.smpl.json", out error);
+            Check(layout != null && layout.Correctives.Length == 1 && layout.Correctives[0].Feature == 8 &&
+                  layout.Correctives[0].Scale == 0.5 && layout.Correctives[0].Offset == 1.0, "sidecar parsed: " + error);
+            layout = SidecarLayout.Parse("{\"asset\":{\"version\":\"2.0\",\"extras\":{\"smpl\":" + ok + "}}}", "a.gltf", out error);
+            Check(layout != null && layout.JointNames[1] == "a", "glTF asset.extras.smpl accepted: " + error);
+            ExpectError(ok.Replace("\"feature\":8", "\"feature\":9"), "feature must be an integer in [0, 9)");
+            ExpectError(ok.Replace("\"feature\":8", "\"feature\":2.5"), "feature must be an integer");
+            ExpectError(ok.Replace("[-1,0]", "[-1]"), "'parents' has 1 entries");
+            ExpectError(ok.Replace("\"target\":\"pose_a_22\",", ""), "target must be a string");
+            ExpectError("{\"joint_names\":[", "JSON error");
+            ExpectError("[1,2]", "no 'joint_names'");
+            // Parsed, but the table itself is invalid: reported by CorrectiveMath.Create.
+            string bad = ok.Replace("[-1,0]", "[-1,1]");
+            layout = SidecarLayout.Parse(bad, "x.smpl.json", out error);
+            CorrectiveMath math = layout == null ? null : CorrectiveMath.Create(layout.Parents, CorrectiveMath.MirrorX, out error);
+            Check(math == null && error != null && error.Contains("joint 1 has parent 1"), "bad parents rejected: " + error);
+        }
+
+        static void ExpectError(string json, string expected)
+        {
+            string error;
+            SidecarLayout layout = SidecarLayout.Parse(json, "x.smpl.json", out error);
+            Check(layout == null && error != null && error.StartsWith("x.smpl.json: ") && error.Contains(expected),
+                  "expected error containing '" + expected + "', got: " + (error ?? "success"));
+        }
+
+        static void HostileJson()
+        {
+            object v;
+            string error;
+            Check(!MiniJson.TryParse(new string('[', 100000), out v, out error) && error.Contains("nesting"), "deep nesting rejected");
+            foreach (string bad in new[] { "", "{", "[1,]", "\"abc", "\"\\u12\"", "{\"a\" 1}", "nul", "1 2", "-" })
+                Check(!MiniJson.TryParse(bad, out v, out error), "malformed JSON accepted: " + bad);
+            Check(MiniJson.TryParse(" {\"a\\n\\u0041\":[1e-3,true,null,\"x\"]} ", out v, out error) &&
+                  ((List<object>)((Dictionary<string, object>)v)["a\nA"]).Count == 4, "valid JSON parsed: " + error);
+        }
+
+        static void AxisMapValidation()
+        {
+            string error;
+            int[] parents = { -1, 0 };
+            Check(CorrectiveMath.Create(parents, new double[] { 1, 0, 0, 0, 1, 0, 0, 0, 0 }, out error) == null &&
+                  error.Contains("singular"), "singular axis map rejected");
+            Check(CorrectiveMath.Create(parents, new double[] { 1, 1, 0, 0, 1, 0, 0, 0, 1 }, out error) == null &&
+                  error.Contains("not orthogonal"), "sheared axis map rejected");
+            Check(CorrectiveMath.Create(parents, new double[] { 1, 0, 0 }, out error) == null, "short axis map rejected");
+            Check(CorrectiveMath.Create(new int[0], CorrectiveMath.MirrorX, out error) == null, "empty skeleton rejected");
+            // A single joint has no features; Compute must still work.
+            CorrectiveMath one = CorrectiveMath.Create(new[] { -1 }, CorrectiveMath.MirrorX, out error);
+            Check(one != null && one.FeatureCount == 0, "single joint: " + error);
+            if (one != null) one.Compute(new[] { Quat.Identity }, new double[0]);
+        }
+
+        static void RotationFromScaledMatrix()
+        {
+            // 90 degrees about z, scaled by 100 as in a centimetre bind pose.
+            Quat q = Quat.FromMatrix(new double[] { 0, -100, 0, 100, 0, 0, 0, 0, 100 });
+            double h = Math.Sqrt(0.5);
+            Check(Math.Abs(Math.Abs(q.Z) - h) < 1e-12 && Math.Abs(Math.Abs(q.W) - h) < 1e-12 && q.Z * q.W > 0 &&
+                  Math.Abs(q.X) < 1e-12 && Math.Abs(q.Y) < 1e-12, "rotation from a scaled matrix");
+            // 180 degrees about x (trace -1, the Shepperd branch on x).
+            q = Quat.FromMatrix(new double[] { 1, 0, 0, 0, -1, 0, 0, 0, -1 });
+            Check(Math.Abs(Math.Abs(q.X) - 1) < 1e-12, "rotation by pi");
+        }
+
+        static void Check(bool ok, string what) { CorrectivesTests.Check(ok, "unit: " + what); }
+    }
+}
+#endif
