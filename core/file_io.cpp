@@ -88,7 +88,8 @@ Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
   std::vector<uint8_t> bytes;
   struct stat st;
   size_t hint = 0;
-  if (::fstat(fd.fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) hint = static_cast<size_t>(st.st_size);
+  if (::fstat(fd.fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
+    hint = static_cast<size_t>(st.st_size);
   if (Status s = readAll(fd.fd, path, hint, bytes); !s) return s.error();
   return bytes;
 }
@@ -96,7 +97,8 @@ Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
 Status writeFileAtomic(const std::string& path, const void* data, size_t size) {
   const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
   Status st = writeTemp(tmp, path, data, size);
-  if (st && ::rename(tmp.c_str(), path.c_str()) != 0) st = ioError(path, "cannot rename temporary file into place", errno);
+  if (st && ::rename(tmp.c_str(), path.c_str()) != 0)
+    st = ioError(path, "cannot rename temporary file into place", errno);
   if (!st) {
     ::unlink(tmp.c_str());
     return st;

@@ -29,17 +29,18 @@ Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, c
   return a;
 }
 
-void runBlock(const BodyModel& model, const BatchInput& in, const Eigen::MatrixXd& weights, int first, int count,
-              Eigen::MatrixXd* out) {
+void runBlock(const BodyModel& model, const Eigen::MatrixXf& posedirs, const BatchInput& in,
+              const Eigen::MatrixXd& weights, int first, int count, Eigen::MatrixXd* out) {
   const Eigen::Index n = model.numVertices(), p = model.numPoseFeatures();
-  Eigen::MatrixXd features(p, count);
-  for (int t = 0; t < count; ++t) features.col(t) = poseFeatures((*in.frames)[first + t]);
-  Eigen::MatrixXd v_posed = model.posedirs * features;  // 3N x count, the one big product
+  Eigen::MatrixXf features(p, count);
+  for (int t = 0; t < count; ++t) features.col(t) = poseFeatures((*in.frames)[first + t]).cast<float>();
+  Eigen::MatrixXf v_posed(3 * n, count);
+  v_posed.noalias() = posedirs * features;  // 3N x count, the one big product
   Eigen::Matrix<double, Eigen::Dynamic, 12> blended(n, 12);
   for (int t = 0; t < count; ++t) {
     blended.noalias() = weights * restRelative(model, (*in.frames)[first + t], in.body->joints);
     double* dst = out->col(first + t).data();
-    const double* corr = v_posed.col(t).data();
+    const float* corr = v_posed.col(t).data();
     for (Eigen::Index i = 0; i < n; ++i) {
       const double x = in.body->v_shaped(i, 0) + corr[3 * i], y = in.body->v_shaped(i, 1) + corr[3 * i + 1],
                    z = in.body->v_shaped(i, 2) + corr[3 * i + 2];
@@ -55,11 +56,12 @@ Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
   const int frames = static_cast<int>(in.frames->size());
   Eigen::MatrixXd out(3 * model.numVertices(), frames);
   const Eigen::MatrixXd& weights = in.weights ? *in.weights : model.weights;
+  const Eigen::MatrixXf posedirs = model.posedirs.cast<float>();
   const int block = std::max(1, in.block);
   const int blocks = (frames + block - 1) / block;
   auto work = [&](int worker, int workers) {
     for (int b = worker; b < blocks; b += workers)
-      runBlock(model, in, weights, b * block, std::min(block, frames - b * block), &out);
+      runBlock(model, posedirs, in, weights, b * block, std::min(block, frames - b * block), &out);
   };
   const int workers = std::max(1, std::min(in.threads, blocks));
   std::vector<std::thread> pool;

@@ -20,7 +20,7 @@ namespace {
 constexpr size_t kMagicBytes = 6;
 constexpr size_t kMaxHeaderBytes = 1 << 20;  // numpy itself refuses > 10000 by default
 constexpr size_t kMaxDims = 64;              // numpy's NPY_MAXDIMS (2.x); 1.x uses 32
-constexpr int64_t kMaxStringChars = 1 << 26;
+constexpr size_t kMaxStringChars = 1 << 26;  // characters per string element
 
 struct NpyHeader {
   std::string descr;
@@ -31,7 +31,7 @@ struct NpyHeader {
 
 // Element type decoded from a descr such as "<f8" or "|S6".
 struct DType {
-  char kind = 0;       // 'f', 'i', 'u', 'b', 'U', 'S'
+  char kind = 0;        // 'f', 'i', 'u', 'b', 'U', 'S'
   size_t itemsize = 0;  // bytes per element
   bool big_endian = false;
 };
@@ -49,7 +49,8 @@ struct Cursor {
   const std::string& s;
   size_t pos = 0;
   void skipSpace() {
-    while (pos < s.size() && (s[pos] == ' ' || s[pos] == '\t' || s[pos] == '\n' || s[pos] == '\r')) ++pos;
+    while (pos < s.size() && (s[pos] == ' ' || s[pos] == '\t' || s[pos] == '\n' || s[pos] == '\r'))
+      ++pos;
   }
   bool eat(char c) {
     skipSpace();
@@ -72,12 +73,14 @@ struct Cursor {
 Result<std::string> parseQuoted(Cursor& c, const std::string& ctx) {
   c.skipSpace();
   if (c.pos >= c.s.size() || (c.s[c.pos] != '\'' && c.s[c.pos] != '"'))
-    return makeError(ctx + ": bad .npy header: expected a quoted string at offset " + std::to_string(c.pos));
+    return makeError(ctx + ": bad .npy header: expected a quoted string at offset " +
+                     std::to_string(c.pos));
   const char quote = c.s[c.pos++];
   size_t end = c.s.find(quote, c.pos);
   if (end == std::string::npos) return makeError(ctx + ": bad .npy header: unterminated string");
   std::string out = c.s.substr(c.pos, end - c.pos);
-  if (out.find('\\') != std::string::npos) return makeError(ctx + ": bad .npy header: escapes in strings are not supported");
+  if (out.find('\\') != std::string::npos)
+    return makeError(ctx + ": bad .npy header: escapes in strings are not supported");
   c.pos = end + 1;
   return out;
 }
@@ -85,14 +88,18 @@ Result<std::string> parseQuoted(Cursor& c, const std::string& ctx) {
 // One dimension: decimal digits, optionally with Python 2's 'L' suffix.
 Result<int64_t> parseDim(Cursor& c, const std::string& ctx) {
   c.skipSpace();
-  if (c.pos < c.s.size() && c.s[c.pos] == '-') return makeError(ctx + ": bad .npy header: negative dimension in shape");
+  if (c.pos < c.s.size() && c.s[c.pos] == '-')
+    return makeError(ctx + ": bad .npy header: negative dimension in shape");
   int64_t v = 0;
   size_t start = c.pos;
   for (; c.pos < c.s.size() && c.s[c.pos] >= '0' && c.s[c.pos] <= '9'; ++c.pos) {
-    if (v > (std::numeric_limits<int64_t>::max() - 9) / 10) return makeError(ctx + ": bad .npy header: dimension too large");
+    if (v > (std::numeric_limits<int64_t>::max() - 9) / 10)
+      return makeError(ctx + ": bad .npy header: dimension too large");
     v = v * 10 + (c.s[c.pos] - '0');
   }
-  if (c.pos == start) return makeError(ctx + ": bad .npy header: expected a dimension at offset " + std::to_string(start));
+  if (c.pos == start)
+    return makeError(ctx + ": bad .npy header: expected a dimension at offset " +
+                     std::to_string(start));
   if (c.pos < c.s.size() && c.s[c.pos] == 'L') ++c.pos;
   return v;
 }
@@ -102,26 +109,32 @@ Result<std::vector<int64_t>> parseShape(Cursor& c, const std::string& ctx) {
   if (!c.eat('(')) return makeError(ctx + ": bad .npy header: 'shape' must be a tuple");
   std::vector<int64_t> shape;
   while (!c.eat(')')) {
-    if (shape.size() == kMaxDims) return makeError(ctx + ": bad .npy header: more than 64 dimensions");
+    if (shape.size() == kMaxDims)
+      return makeError(ctx + ": bad .npy header: more than 64 dimensions");
     Result<int64_t> d = parseDim(c, ctx);
     if (!d) return d.error();
     shape.push_back(*d);
-    if (!c.eat(',') && !c.peek(')')) return makeError(ctx + ": bad .npy header: malformed 'shape' tuple");
+    if (!c.eat(',') && !c.peek(')'))
+      return makeError(ctx + ": bad .npy header: malformed 'shape' tuple");
   }
   return shape;
 }
 
 Status parseHeaderValue(Cursor& c, const std::string& key, NpyHeader& h, const std::string& ctx) {
   if (key == "descr" && !h.has_descr) {
-    if (c.peek('[')) return makeError(ctx + ": structured dtypes (record arrays) are not supported");
+    if (c.peek('['))
+      return makeError(ctx + ": structured dtypes (record arrays) are not supported");
     Result<std::string> d = parseQuoted(c, ctx);
     if (!d) return d.error();
     h.descr = *d;
     h.has_descr = true;
   } else if (key == "fortran_order" && !h.has_order) {
-    if (c.eatWord("True")) h.fortran_order = true;
-    else if (c.eatWord("False")) h.fortran_order = false;
-    else return makeError(ctx + ": bad .npy header: 'fortran_order' must be True or False");
+    if (c.eatWord("True"))
+      h.fortran_order = true;
+    else if (c.eatWord("False"))
+      h.fortran_order = false;
+    else
+      return makeError(ctx + ": bad .npy header: 'fortran_order' must be True or False");
     h.has_order = true;
   } else if (key == "shape" && !h.has_shape) {
     Result<std::vector<int64_t>> s = parseShape(c, ctx);
@@ -143,10 +156,12 @@ Result<NpyHeader> parseHeaderDict(const std::string& text, const std::string& ct
     if (!key) return key.error();
     if (!c.eat(':')) return makeError(ctx + ": bad .npy header: expected ':' after '" + *key + "'");
     if (Status st = parseHeaderValue(c, *key, h, ctx); !st) return st.error();
-    if (!c.eat(',') && !c.peek('}')) return makeError(ctx + ": bad .npy header: expected ',' or '}' after '" + *key + "'");
+    if (!c.eat(',') && !c.peek('}'))
+      return makeError(ctx + ": bad .npy header: expected ',' or '}' after '" + *key + "'");
   }
   c.skipSpace();
-  if (c.pos != text.size()) return makeError(ctx + ": bad .npy header: trailing characters after the dict");
+  if (c.pos != text.size())
+    return makeError(ctx + ": bad .npy header: trailing characters after the dict");
   if (!h.has_descr || !h.has_order || !h.has_shape)
     return makeError(ctx + ": bad .npy header: needs 'descr', 'fortran_order' and 'shape'");
   return h;
@@ -155,50 +170,58 @@ Result<NpyHeader> parseHeaderDict(const std::string& text, const std::string& ct
 // ---- preamble and dtype ----------------------------------------------------
 
 // Checks magic and version; returns the header text and sets `data_offset`.
-Result<std::string> readPreamble(const uint8_t* data, size_t size, const std::string& ctx, size_t& data_offset) {
+Result<std::string> readPreamble(const uint8_t* data, size_t size, const std::string& ctx,
+                                 size_t& data_offset) {
   if (size < kMagicBytes + 2 || std::memcmp(data, "\x93NUMPY", kMagicBytes) != 0)
     return makeError(ctx + ": not an .npy file (bad magic)");
   const int major = data[6], minor = data[7];
   if (major < 1 || major > 3 || minor != 0)
-    return makeError(ctx + ": unsupported .npy version " + std::to_string(major) + "." + std::to_string(minor));
+    return makeError(ctx + ": unsupported .npy version " + std::to_string(major) + "." +
+                     std::to_string(minor));
   const size_t len_bytes = major == 1 ? 2 : 4;
   if (size < 8 + len_bytes) return makeError(ctx + ": truncated .npy header");
   size_t header_len = 0;
   for (size_t i = 0; i < len_bytes; ++i) header_len |= static_cast<size_t>(data[8 + i]) << (8 * i);
   if (header_len > kMaxHeaderBytes)
-    return makeError(ctx + ": bad .npy header: header length " + std::to_string(header_len) + " is absurd");
+    return makeError(ctx + ": bad .npy header: header length " + std::to_string(header_len) +
+                     " is absurd");
   data_offset = 8 + len_bytes + header_len;
   if (data_offset > size)
-    return makeError(ctx + ": truncated .npy header: expected " + std::to_string(header_len) + " bytes, found " +
-                     std::to_string(size - 8 - len_bytes));
+    return makeError(ctx + ": truncated .npy header: expected " + std::to_string(header_len) +
+                     " bytes, found " + std::to_string(size - 8 - len_bytes));
   return std::string(reinterpret_cast<const char*>(data) + 8 + len_bytes, header_len);
 }
 
-Result<size_t> descrItemCount(const std::string& digits, const std::string& descr, const std::string& ctx) {
-  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+Result<size_t> descrItemCount(const std::string& digits, const std::string& descr,
+                              const std::string& ctx) {
+  if (digits.empty() || digits.size() > 9 ||
+      digits.find_first_not_of("0123456789") != std::string::npos)
     return makeError(ctx + ": unsupported dtype '" + descr + "'");
   return static_cast<size_t>(std::stoll(digits));
+}
+
+bool validItemSize(char kind, size_t n) {
+  if (kind == 'f') return n == 2 || n == 4 || n == 8;
+  if (kind == 'i' || kind == 'u') return n == 1 || n == 2 || n == 4 || n == 8;
+  if (kind == 'b') return n == 1;
+  if (kind == 'S' || kind == 'U') return n >= 1 && n <= kMaxStringChars;
+  return false;
 }
 
 Result<DType> parseDescr(const std::string& descr, const std::string& ctx) {
   if (descr.size() < 2 || std::string("<>|=").find(descr[0]) == std::string::npos)
     return makeError(ctx + ": unsupported dtype '" + descr + "'");
   const char order = descr[0], kind = descr[1];
-  if (kind == 'O') return makeError(ctx + ": object arrays ('" + descr + "') are not supported; save a numeric array");
-  if (kind == 'V') return makeError(ctx + ": structured/void dtype '" + descr + "' is not supported");
+  if (kind == 'O')
+    return makeError(ctx + ": object arrays ('" + descr +
+                     "') are not supported; save a numeric array");
+  if (kind == 'V')
+    return makeError(ctx + ": structured/void dtype '" + descr + "' is not supported");
   Result<size_t> n = descrItemCount(descr.substr(2), descr, ctx);
   if (!n) return n.error();
-  DType t{kind, *n, order == '>' || (order == '=' && hostIsBigEndian())};
-  bool ok = false;
-  switch (kind) {
-    case 'f': ok = *n == 2 || *n == 4 || *n == 8; break;
-    case 'i': case 'u': ok = *n == 1 || *n == 2 || *n == 4 || *n == 8; break;
-    case 'b': ok = *n == 1; break;
-    case 'S': ok = *n >= 1 && *n <= kMaxStringChars; break;
-    case 'U': ok = *n >= 1 && *n <= kMaxStringChars, t.itemsize = *n * 4; break;
-    default: break;
-  }
-  if (!ok) return makeError(ctx + ": unsupported dtype '" + descr + "'");
+  // 'U' counts characters of 4-byte UTF-32 code units; all others count bytes.
+  DType t{kind, kind == 'U' ? *n * 4 : *n, order == '>' || (order == '=' && hostIsBigEndian())};
+  if (!validItemSize(kind, *n)) return makeError(ctx + ": unsupported dtype '" + descr + "'");
   if (order == '|' && t.itemsize > 1 && kind != 'S')
     return makeError(ctx + ": dtype '" + descr + "' needs a byte order");
   return t;
@@ -207,14 +230,18 @@ Result<DType> parseDescr(const std::string& descr, const std::string& ctx) {
 // Product of the dimensions, or an error if it (or its byte size) overflows.
 // Dimensions are checked even when one of them is 0, so Array::size() of any
 // returned array cannot overflow either.
-Result<size_t> elementCount(const std::vector<int64_t>& shape, size_t itemsize, const std::string& ctx) {
+Result<size_t> elementCount(const std::vector<int64_t>& shape, size_t itemsize,
+                            const std::string& ctx) {
   const uint64_t limit = static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) / itemsize;
   uint64_t nonzero = 1;
   bool empty = false;
   for (int64_t d : shape) {
-    if (d == 0) empty = true;
-    else if (static_cast<uint64_t>(d) > limit / nonzero) return makeError(ctx + ": shape " + shapeString(shape) + " is too large");
-    else nonzero *= static_cast<uint64_t>(d);
+    if (d == 0)
+      empty = true;
+    else if (static_cast<uint64_t>(d) > limit / nonzero)
+      return makeError(ctx + ": shape " + shapeString(shape) + " is too large");
+    else
+      nonzero *= static_cast<uint64_t>(d);
   }
   if (nonzero > std::numeric_limits<size_t>::max() / itemsize)
     return makeError(ctx + ": shape " + shapeString(shape) + " is too large");
@@ -232,22 +259,29 @@ uint64_t loadUnsigned(const uint8_t* p, size_t n, bool big) {
 double halfToDouble(uint16_t h) {
   const int sign = h >> 15, exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
   double v;
-  if (exponent == 0) v = std::ldexp(mantissa, -24);  // zero and subnormals
-  else if (exponent == 31) v = mantissa ? std::numeric_limits<double>::quiet_NaN() : std::numeric_limits<double>::infinity();
-  else v = std::ldexp(mantissa + 1024, exponent - 25);
+  if (exponent == 0)
+    v = std::ldexp(mantissa, -24);  // zero and subnormals
+  else if (exponent == 31)
+    v = mantissa ? std::numeric_limits<double>::quiet_NaN()
+                 : std::numeric_limits<double>::infinity();
+  else
+    v = std::ldexp(mantissa + 1024, exponent - 25);
   return sign ? -v : v;
 }
 
 double loadNumber(const uint8_t* p, const DType& t) {
   const uint64_t bits = loadUnsigned(p, t.itemsize, t.big_endian);
   switch (t.kind) {
-    case 'b': return bits != 0 ? 1.0 : 0.0;
-    case 'u': return static_cast<double>(bits);
+    case 'b':
+      return bits != 0 ? 1.0 : 0.0;
+    case 'u':
+      return static_cast<double>(bits);
     case 'i': {
       const unsigned shift = 64 - 8 * static_cast<unsigned>(t.itemsize);
       return static_cast<double>(static_cast<int64_t>(bits << shift) >> shift);  // sign-extend
     }
-    default: break;  // 'f'
+    default:
+      break;  // 'f'
   }
   if (t.itemsize == 2) return halfToDouble(static_cast<uint16_t>(bits));
   if (t.itemsize == 4) {
@@ -299,12 +333,14 @@ Result<std::string> convertString(const uint8_t* p, const DType& t, const std::s
   std::string out;
   for (size_t i = 0; i < n; ++i) {
     const uint32_t cp = static_cast<uint32_t>(loadUnsigned(p + 4 * i, 4, t.big_endian));
-    if (!appendUtf8(cp, out)) return makeError(ctx + ": invalid unicode code point " + std::to_string(cp) + " in a string");
+    if (!appendUtf8(cp, out))
+      return makeError(ctx + ": invalid unicode code point " + std::to_string(cp) + " in a string");
   }
   return out;
 }
 
-Result<std::vector<std::string>> convertStrings(const uint8_t* p, size_t count, const DType& t, const std::string& ctx) {
+Result<std::vector<std::string>> convertStrings(const uint8_t* p, size_t count, const DType& t,
+                                                const std::string& ctx) {
   std::vector<std::string> out;
   out.reserve(count);
   for (size_t i = 0; i < count; ++i) {
@@ -340,7 +376,8 @@ std::vector<T> fortranToC(std::vector<T> in, const std::vector<int64_t>& shape) 
   return out;
 }
 
-Status fillElements(const uint8_t* p, size_t count, const DType& t, bool fortran, Array& a, const std::string& ctx) {
+Status fillElements(const uint8_t* p, size_t count, const DType& t, bool fortran, Array& a,
+                    const std::string& ctx) {
   if (t.kind == 'S' || t.kind == 'U') {
     Result<std::vector<std::string>> s = convertStrings(p, count, t, ctx);
     if (!s) return s.error();
@@ -367,11 +404,13 @@ Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& cont
   if (!count) return count.error();
   const size_t need = *count * t->itemsize, have = size - offset;
   if (have < need)
-    return makeError(context + ": truncated data: expected " + std::to_string(need) + " bytes, found " + std::to_string(have));
+    return makeError(context + ": truncated data: expected " + std::to_string(need) +
+                     " bytes, found " + std::to_string(have));
   Array a;
   a.shape = h->shape;
   a.dtype = h->descr;
-  if (Status st = fillElements(data + offset, *count, *t, h->fortran_order, a, context); !st) return st.error();
+  if (Status st = fillElements(data + offset, *count, *t, h->fortran_order, a, context); !st)
+    return st.error();
   return a;
 }
 

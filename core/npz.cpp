@@ -14,7 +14,8 @@ namespace smpl {
 namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // np.load's NpzFile drops ".npy" from member names to form the keys.
@@ -31,7 +32,8 @@ Result<ArrayDict> parseNpz(const uint8_t* data, size_t size, const std::string& 
   for (ZipEntry& e : *entries) {
     if (endsWith(e.name, "/") && e.data.empty()) continue;  // directory entry
     const std::string key = keyOf(e.name);
-    if (arrays.count(key)) return makeError(context + "/" + e.name + ": duplicate member '" + key + "'");
+    if (arrays.count(key))
+      return makeError(context + "/" + e.name + ": duplicate member '" + key + "'");
     Result<Array> a = parseNpy(e.data.data(), e.data.size(), context + "/" + e.name);
     if (!a) return a.error();
     std::vector<uint8_t>().swap(e.data);

@@ -51,15 +51,18 @@ struct CentralEntry {
 
 Result<size_t> findEocd(const uint8_t* data, size_t size, const std::string& ctx) {
   if (size < kEocdBytes) return makeError(ctx + ": not a zip archive (too short)");
-  const size_t lowest = size - kEocdBytes > kMaxCommentBytes ? size - kEocdBytes - kMaxCommentBytes : 0;
+  const size_t lowest =
+      size - kEocdBytes > kMaxCommentBytes ? size - kEocdBytes - kMaxCommentBytes : 0;
   for (size_t pos = size - kEocdBytes + 1; pos-- > lowest;) {
-    if (le32(data + pos) == kEocdSig && pos + kEocdBytes + le16(data + pos + 20) <= size) return pos;
+    if (le32(data + pos) == kEocdSig && pos + kEocdBytes + le16(data + pos + 20) <= size)
+      return pos;
   }
   return makeError(ctx + ": not a zip archive (no end of central directory record)");
 }
 
 // Replaces the 16/32-bit EOCD fields with the zip64 record's, when present.
-Status readZip64Eocd(const uint8_t* data, size_t eocd, Directory& dir, bool needed, const std::string& ctx) {
+Status readZip64Eocd(const uint8_t* data, size_t eocd, Directory& dir, bool needed,
+                     const std::string& ctx) {
   if (eocd < kZip64LocatorBytes || le32(data + eocd - kZip64LocatorBytes) != kZip64LocatorSig) {
     if (needed) return makeError(ctx + ": zip64 end of central directory locator missing");
     return Status();
@@ -67,7 +70,8 @@ Status readZip64Eocd(const uint8_t* data, size_t eocd, Directory& dir, bool need
   const size_t loc = eocd - kZip64LocatorBytes;
   const uint64_t rec = le64(data + loc + 8);
   if (rec > loc || loc - rec < kZip64EocdBytes || le32(data + rec) != kZip64EocdSig)
-    return makeError(ctx + ": bad zip64 end of central directory record offset " + std::to_string(rec));
+    return makeError(ctx + ": bad zip64 end of central directory record offset " +
+                     std::to_string(rec));
   if (le32(data + rec + 16) != 0 || le32(data + rec + 20) != 0)
     return makeError(ctx + ": multi-disk zip archives are not supported");
   dir.entries = le64(data + rec + 32);
@@ -81,7 +85,8 @@ Result<Directory> readDirectory(const uint8_t* data, size_t size, const std::str
   Result<size_t> eocd = findEocd(data, size, ctx);
   if (!eocd) return eocd.error();
   const uint8_t* e = data + *eocd;
-  const uint16_t disk = le16(e + 4), cd_disk = le16(e + 6), on_disk = le16(e + 8), total = le16(e + 10);
+  const uint16_t disk = le16(e + 4), cd_disk = le16(e + 6), on_disk = le16(e + 8),
+                 total = le16(e + 10);
   Directory dir{total, le32(e + 16), le32(e + 12), *eocd};
   const bool needed = total == 0xFFFF || dir.cd_size == 0xFFFFFFFFu || dir.cd_offset == 0xFFFFFFFFu;
   if ((disk != 0 && disk != 0xFFFF) || (cd_disk != 0 && cd_disk != 0xFFFF) || on_disk != total)
@@ -91,8 +96,8 @@ Result<Directory> readDirectory(const uint8_t* data, size_t size, const std::str
     return makeError(ctx + ": central directory (offset " + std::to_string(dir.cd_offset) + ", " +
                      std::to_string(dir.cd_size) + " bytes) lies outside the archive");
   if (dir.entries > dir.cd_size / kCentralBytes)
-    return makeError(ctx + ": central directory of " + std::to_string(dir.cd_size) + " bytes cannot hold " +
-                     std::to_string(dir.entries) + " entries");
+    return makeError(ctx + ": central directory of " + std::to_string(dir.cd_size) +
+                     " bytes cannot hold " + std::to_string(dir.entries) + " entries");
   return dir;
 }
 
@@ -119,22 +124,26 @@ Status applyZip64Extra(const uint8_t* p, size_t len, CentralEntry& c, const std:
 Status checkSupported(const CentralEntry& c, const std::string& ectx) {
   if (c.flags & 0x41) return makeError(ectx + ": encrypted zip entries are not supported");
   if (c.method != 0 && c.method != 8)
-    return makeError(ectx + ": unsupported compression method " + std::to_string(c.method) + " (only stored and deflate)");
+    return makeError(ectx + ": unsupported compression method " + std::to_string(c.method) +
+                     " (only stored and deflate)");
   if (c.method == 0 && c.csize != c.usize)
-    return makeError(ectx + ": stored entry sizes disagree (" + std::to_string(c.csize) + " vs " + std::to_string(c.usize) + ")");
+    return makeError(ectx + ": stored entry sizes disagree (" + std::to_string(c.csize) + " vs " +
+                     std::to_string(c.usize) + ")");
   if (c.method == 8 && c.usize > c.csize * kMaxDeflateRatio + 258)
-    return makeError(ectx + ": declared uncompressed size " + std::to_string(c.usize) + " is impossible for " +
-                     std::to_string(c.csize) + " bytes of deflate data");
+    return makeError(ectx + ": declared uncompressed size " + std::to_string(c.usize) +
+                     " is impossible for " + std::to_string(c.csize) + " bytes of deflate data");
   return Status();
 }
 
 // Parses the entry at `pos` (within [pos, end)) and advances `pos`.
-Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t end, const std::string& ctx) {
+Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t end,
+                                      const std::string& ctx) {
   if (end - pos < kCentralBytes || le32(data + pos) != kCentralSig)
     return makeError(ctx + ": corrupt central directory at offset " + std::to_string(pos));
   const uint8_t* h = data + pos;
   const size_t n = le16(h + 28), x = le16(h + 30), k = le16(h + 32);
-  if (end - pos - kCentralBytes < n + x + k) return makeError(ctx + ": corrupt central directory at offset " + std::to_string(pos));
+  if (end - pos - kCentralBytes < n + x + k)
+    return makeError(ctx + ": corrupt central directory at offset " + std::to_string(pos));
   CentralEntry c;
   c.name.assign(reinterpret_cast<const char*>(h + kCentralBytes), n);
   c.flags = le16(h + 8);
@@ -150,10 +159,12 @@ Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t e
   return c;
 }
 
-Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, const Directory& dir, const ZipLimits& limits,
+Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, const Directory& dir,
+                                                       const ZipLimits& limits,
                                                        const std::string& ctx) {
   if (dir.entries > limits.max_entries)
-    return makeError(ctx + ": " + std::to_string(dir.entries) + " entries exceed the limit of " + std::to_string(limits.max_entries));
+    return makeError(ctx + ": " + std::to_string(dir.entries) + " entries exceed the limit of " +
+                     std::to_string(limits.max_entries));
   std::vector<CentralEntry> entries;
   entries.reserve(dir.entries);
   size_t pos = dir.cd_offset;
@@ -162,8 +173,9 @@ Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, cons
     Result<CentralEntry> c = readCentralEntry(data, pos, dir.cd_offset + dir.cd_size, ctx);
     if (!c) return c.error();
     if (c->usize > limits.max_total_uncompressed - total)
-      return makeError(ctx + ": declared uncompressed size exceeds the limit of " + std::to_string(limits.max_total_uncompressed) +
-                       " bytes at '" + c->name + "'");
+      return makeError(ctx + ": declared uncompressed size exceeds the limit of " +
+                       std::to_string(limits.max_total_uncompressed) + " bytes at '" + c->name +
+                       "'");
     total += c->usize;
     entries.push_back(std::move(*c));
   }
@@ -171,43 +183,52 @@ Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, cons
 }
 
 // Checks the local header against the central entry; returns the data offset.
-Result<size_t> locateData(const uint8_t* data, const CentralEntry& c, uint64_t data_end, const std::string& ectx) {
-  if (c.local_offset > data_end || data_end - c.local_offset < kLocalBytes || le32(data + c.local_offset) != kLocalSig)
-    return makeError(ectx + ": local header offset " + std::to_string(c.local_offset) + " is out of range or corrupt");
+Result<size_t> locateData(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
+                          const std::string& ectx) {
+  if (c.local_offset > data_end || data_end - c.local_offset < kLocalBytes ||
+      le32(data + c.local_offset) != kLocalSig)
+    return makeError(ectx + ": local header offset " + std::to_string(c.local_offset) +
+                     " is out of range or corrupt");
   const uint8_t* h = data + c.local_offset;
   const size_t n = le16(h + 26), x = le16(h + 28);
   const uint64_t start = c.local_offset + kLocalBytes + n + x;
   if (start > data_end || c.csize > data_end - start)
-    return makeError(ectx + ": entry data (" + std::to_string(c.csize) + " bytes at offset " + std::to_string(start) +
-                     ") lies outside the archive");
-  if (n != c.name.size() || std::memcmp(h + kLocalBytes, c.name.data(), n) != 0 || le16(h + 8) != c.method)
+    return makeError(ectx + ": entry data (" + std::to_string(c.csize) + " bytes at offset " +
+                     std::to_string(start) + ") lies outside the archive");
+  if (n != c.name.size() || std::memcmp(h + kLocalBytes, c.name.data(), n) != 0 ||
+      le16(h + 8) != c.method)
     return makeError(ectx + ": local header disagrees with the central directory");
   return static_cast<size_t>(start);
 }
 
 // One inflate() step into `out` (or, once `out` is full, into a spill byte
 // whose use proves the entry is larger than declared).
-Status inflateStep(z_stream& zs, std::vector<uint8_t>& out, uint64_t& out_pos, const std::string& ectx, bool& done) {
+Status inflateStep(z_stream& zs, std::vector<uint8_t>& out, uint64_t& out_pos,
+                   const std::string& ectx, bool& done) {
   uint8_t spill = 0;
   const bool full = out_pos == out.size();
-  const uInt room = full ? 1 : static_cast<uInt>(std::min<uint64_t>(out.size() - out_pos, kZlibChunk));
+  const uInt room =
+      full ? 1 : static_cast<uInt>(std::min<uint64_t>(out.size() - out_pos, kZlibChunk));
   zs.next_out = full ? &spill : out.data() + out_pos;
   zs.avail_out = room;
   const uInt in_before = zs.avail_in;
   const int ret = inflate(&zs, Z_NO_FLUSH);
   const uInt produced = room - zs.avail_out;
   if (full && produced > 0)
-    return makeError(ectx + ": deflate data inflates to more than the declared " + std::to_string(out.size()) + " bytes");
+    return makeError(ectx + ": deflate data inflates to more than the declared " +
+                     std::to_string(out.size()) + " bytes");
   out_pos += produced;
   done = ret == Z_STREAM_END;
   if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR)
-    return makeError(ectx + ": corrupt deflate data (" + (zs.msg ? zs.msg : "zlib error " + std::to_string(ret)) + ")");
+    return makeError(ectx + ": corrupt deflate data (" +
+                     (zs.msg ? zs.msg : "zlib error " + std::to_string(ret)) + ")");
   if (!done && produced == 0 && in_before == zs.avail_in && zs.avail_in > 0)
     return makeError(ectx + ": corrupt deflate data (no progress)");
   return Status();
 }
 
-Status inflateInto(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out, const std::string& ectx) {
+Status inflateInto(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
+                   const std::string& ectx) {
   z_stream zs{};
   if (inflateInit2(&zs, -15) != Z_OK) return makeError(ectx + ": cannot initialise zlib");
   uint64_t in_pos = 0, out_pos = 0;
@@ -227,7 +248,8 @@ Status inflateInto(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
   }
   inflateEnd(&zs);
   if (st && out_pos != out.size())
-    st = makeError(ectx + ": deflate data inflates to " + std::to_string(out_pos) + " bytes; declared " + std::to_string(out.size()));
+    st = makeError(ectx + ": deflate data inflates to " + std::to_string(out_pos) +
+                   " bytes; declared " + std::to_string(out.size()));
   return st;
 }
 
@@ -235,7 +257,8 @@ uint32_t crc32Of(const std::vector<uint8_t>& bytes) {
   return static_cast<uint32_t>(crc32_z(crc32_z(0L, Z_NULL, 0), bytes.data(), bytes.size()));
 }
 
-Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end, const std::string& ctx) {
+Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
+                              const std::string& ctx) {
   const std::string ectx = ctx + "/" + c.name;
   Result<size_t> start = locateData(data, c, data_end, ectx);
   if (!start) return start.error();
@@ -248,13 +271,15 @@ Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64
     if (Status st = inflateInto(data + *start, c.csize, e.data, ectx); !st) return st.error();
   }
   const uint32_t crc = crc32Of(e.data);
-  if (crc != c.crc) return makeError(ectx + ": CRC mismatch: expected " + hex32(c.crc) + ", found " + hex32(crc));
+  if (crc != c.crc)
+    return makeError(ectx + ": CRC mismatch: expected " + hex32(c.crc) + ", found " + hex32(crc));
   return e;
 }
 
 }  // namespace
 
-Result<std::vector<ZipEntry>> readZip(const uint8_t* data, size_t size, const std::string& context, const ZipLimits& limits) {
+Result<std::vector<ZipEntry>> readZip(const uint8_t* data, size_t size, const std::string& context,
+                                      const ZipLimits& limits) {
   if (data == nullptr) size = 0;
   Result<Directory> dir = readDirectory(data, size, context);
   if (!dir) return dir.error();

@@ -23,6 +23,7 @@ struct Skeleton {
 struct MorphTarget {
   std::string name;                     // pose_<joint>_<r><c>, shape_<i>, expr_<i>
   Eigen::MatrixXf deltas;               // V x 3 position deltas (V = asset vertex count)
+  float rest_weight = 0.0f;             // weight at the rest pose (non-zero for the unit encoding)
 };
 
 struct SkinnedMesh {

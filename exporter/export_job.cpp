@@ -88,6 +88,8 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
   if (!s.betas_given) betasFromMotion(model, *motions, &options);
+  if (options.encoding == CorrectiveEncoding::Auto)  // baked weights must survive importers that clamp
+    options.encoding = motions->empty() ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
   Result<Asset> asset = buildAsset(model, options);
   if (!asset) return fail(failure, kExitExport, "exporting", job.out, asset.message());
   ExportReport report;

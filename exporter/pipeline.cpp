@@ -69,15 +69,40 @@ MorphTarget directionTarget(std::string name, const Eigen::MatrixXd& dirs, int c
   return t;
 }
 
+// Unit encoding of feature n: weight = 0.5 f + offset keeps weights in [0, 1].
+CorrectiveLayout encodedLayout(const BodyModel& model, int n, CorrectiveEncoding encoding) {
+  CorrectiveLayout c{n, correctiveTargetName(model, n), 1.0, 0.0};
+  if (encoding == CorrectiveEncoding::Unit) {
+    const bool diagonal = (n % 9) / 3 == n % 3;
+    c.scale = 0.5;
+    c.offset = diagonal ? 1.0 : 0.5;
+  }
+  return c;
+}
+
+void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+  SkinnedMesh& mesh = asset->mesh;
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(model.posedirs.rows());  // sum (offset/scale) P_n, in double
+  for (int n = 0; n < model.numPoseFeatures(); ++n) {
+    const CorrectiveLayout c = encodedLayout(model, n, o.encoding);
+    // weight * delta must equal f * P: delta = P / scale; the offset's
+    // contribution at every pose is removed from the stored base mesh.
+    MorphTarget t = directionTarget(c.target, model.posedirs / c.scale, n, mesh.source_vertex);
+    t.rest_weight = static_cast<float>(c.offset);
+    if (c.offset != 0.0) shift += (c.offset / c.scale) * model.posedirs.col(n);
+    mesh.morph_targets.push_back(std::move(t));
+    asset->metadata.correctives.push_back(c);
+  }
+  if (o.encoding == CorrectiveEncoding::Unit)
+    for (Eigen::Index i = 0; i < mesh.positions.rows(); ++i)
+      for (int c = 0; c < 3; ++c)
+        mesh.positions(i, c) = static_cast<float>(mesh.positions(i, c) - shift(3 * mesh.source_vertex[i] + c));
+}
+
 void addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* asset) {
   std::vector<MorphTarget>& targets = asset->mesh.morph_targets;
   const std::vector<int>& src = asset->mesh.source_vertex;
-  if (o.correctives) {
-    for (int n = 0; n < model.numPoseFeatures(); ++n) {
-      targets.push_back(directionTarget(correctiveTargetName(model, n), model.posedirs, n, src));
-      asset->metadata.correctives.push_back(CorrectiveLayout{n, targets.back().name, 1.0, 0.0});
-    }
-  }
+  if (o.correctives) addCorrectives(model, o, asset);
   for (int i = 0; i < o.shape_keys; ++i)
     targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
   for (int i = 0; i < o.expression_keys; ++i)

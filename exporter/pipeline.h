@@ -15,11 +15,23 @@
 
 namespace smpl {
 
+// How corrective weights are encoded (DESIGN.md "Pose correctives as morph targets").
+//   Signed: weight = f[n] (diagonal features in [-2, 0], off-diagonal in [-1, 1]).
+//   Unit:   weight = 0.5 f[n] + o, o = 1 (diagonal) or 0.5 (off-diagonal), so
+//           weights stay in [0, 1] for engines and importers that clamp; the
+//           deltas are 2 P_n and the stored base mesh is v_shaped - sum 2 o P_n,
+//           so the rest pose (weights = o, written as the default weights)
+//           is exactly v_shaped. The mapping is in the metadata.
+//   Auto:   Unit when the export bakes an animation (importers such as
+//           Blender's clamp animated weights to [0, 1]), else Signed.
+enum class CorrectiveEncoding { Auto, Signed, Unit };
+
 struct ExportOptions {
   std::vector<double> betas;       // zero-padded to the model's count; more is an error
   std::vector<double> expression;  // SMPL-X only
   int max_influences = 4;
   bool correctives = true;         // one morph target per pose feature
+  CorrectiveEncoding encoding = CorrectiveEncoding::Auto;  // resolved by the caller; Auto acts as Signed here
   int shape_keys = 0;              // also export the first N shape directions
   int expression_keys = 0;         // also export the first N expression directions
   std::string uv_obj;              // optional OBJ with UVs in the model's vertex order

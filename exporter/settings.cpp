@@ -107,6 +107,9 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--correctives") {
     if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
     e.correctives = value == "all";
+  } else if (name == "--corrective-weights") {
+    if (value != "signed" && value != "unit") return makeError("--corrective-weights: expected 'signed' or 'unit', got '" + value + "'");
+    e.encoding = value == "unit" ? CorrectiveEncoding::Unit : CorrectiveEncoding::Signed;
   } else if (name == "--fbx-units") {
     if (value != "m" && value != "cm") return makeError("--fbx-units: expected 'm' or 'cm', got '" + value + "'");
     s->writer_options.fbx_units = value;
@@ -218,6 +221,11 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
   --expression v,v,...   SMPL-X expression coefficients
   --max-influences N     skin influences per vertex, 1..8 (default 4; >4 writes JOINTS_1/WEIGHTS_1)
   --correctives all|none pose-corrective morph targets (default all)
+  --corrective-weights signed|unit
+                         signed: weight = pose feature f, in [-2, 1] (default without --motion);
+                         unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1],
+                         for engines/importers that clamp weights (default with --motion: Blender
+                         clamps animated weights); the mapping is in the metadata
   --shape-keys N         also export the first N shape directions as morph targets shape_<i>
   --expression-keys N    also export the first N expression directions (SMPL-X) as expr_<i>
   --uv OBJ               UVs from an OBJ sharing the model's vertex order (seams split vertices)

@@ -47,7 +47,7 @@ void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape) {
   ctx.blend_channels.push_back(channel);
   FbxNode& c = ctx.addObject("Deformer", channel, target.name, "SubDeformer", "BlendShapeChannel");
   c.add("Version").addInt32(100);
-  c.add("DeformPercent").addDouble(0.0);
+  c.add("DeformPercent").addDouble(100.0 * target.rest_weight);  // rest pose weight (unit encoding)
   c.add("FullWeights").addDoubleArray({100.0});  // one shape per channel, full at 100%
 
   ctx.connectOO(channel, blend_shape);

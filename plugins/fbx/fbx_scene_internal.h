@@ -77,6 +77,9 @@ struct SceneContext {
   void connectOP(int64_t child, int64_t parent, const std::string& property);
 };
 
+// Checks sizes and index ranges of the asset and the options (fbx_validate.cpp).
+Status validateInput(const Asset& asset, const WriterOptions& options);
+
 // Object builders, each one job (fbx_geometry.cpp, fbx_skeleton.cpp,
 // fbx_morphs.cpp, fbx_animation.cpp).
 void buildMeshObjects(SceneContext& ctx);

@@ -310,7 +310,7 @@ Status addMesh(tinygltf::Model& model, const Asset& asset) {
     int accessor = addFloats(model, rowMajor(t.deltas), TINYGLTF_TYPE_VEC3,
                              TINYGLTF_TARGET_ARRAY_BUFFER, true);
     prim.targets.push_back({{"POSITION", accessor}});
-    mesh.weights.push_back(0.0);
+    mesh.weights.push_back(t.rest_weight);  // non-zero only for the unit corrective encoding
     names.emplace_back(t.name);
   }
   // An empty targetNames would serialise as null (tinygltf), so omit it.

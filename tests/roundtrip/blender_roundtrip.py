@@ -111,15 +111,46 @@ def to_world(obj, points):
     return points.astype(np.float64) @ m[:3, :3].T + m[:3, 3]
 
 
-def vertex_map(mesh_obj, v_shaped):
-    """Model vertex index of every Blender vertex, matched by rest position."""
+def corrective_encoding(asset, count):
+    """(scale, offset) per corrective feature from the file's metadata: weight = scale * f + offset."""
+    import json
+    with open(asset + ".smpl.json") as fh:  # the CLI's sidecar: same content as the file's metadata
+        meta = json.load(fh)
+    scale, offset = np.ones(count), np.zeros(count)
+    for c in meta.get("correctives", []):
+        scale[c["feature"]], offset[c["feature"]] = c.get("scale", 1.0), c.get("offset", 0.0)
+    return scale, offset
+
+
+def rest_positions(mesh_obj, offsets):
+    """The rest mesh in model axes: the basis plus every shape key at its rest
+    weight (non-zero for the unit corrective encoding, whose basis is shifted).
+    `offsets` maps shape key name -> rest weight."""
+    keys = mesh_obj.data.shape_keys
+    n = len(mesh_obj.data.vertices)
+    basis = np.empty(n * 3, dtype=np.float32)
+    keys.reference_key.data.foreach_get("co", basis)
+    rest = basis.astype(np.float64)
+    co = np.empty(n * 3, dtype=np.float32)
+    for kb in keys.key_blocks[1:]:
+        w = offsets.get(kb.name, offsets.get(kb.name.rsplit("|", 1)[-1], 0.0))
+        if w:
+            kb.data.foreach_get("co", co)
+            rest += w * (co.astype(np.float64) - basis)
+    return world_to_model(to_world(mesh_obj, rest.reshape(n, 3)))
+
+
+def vertex_map(mesh_obj, v_shaped, rest=None):
+    """Model vertex index of every Blender vertex, matched by rest position
+    (`rest` defaults to the basis positions)."""
     from mathutils import Vector
     from mathutils.kdtree import KDTree
     tree = KDTree(len(v_shaped))
     for i, p in enumerate(v_shaped):
         tree.insert(Vector(p), i)
     tree.balance()
-    rest = basis_positions(mesh_obj)
+    if rest is None:
+        rest = basis_positions(mesh_obj)
     found = [tree.find(Vector(p)) for p in rest]
     worst = max(d for _, _, d in found)
     check(worst <= 1e-5, "rest mesh differs from v_shaped by %.3g m" % worst)

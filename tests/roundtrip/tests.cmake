@@ -157,3 +157,6 @@ add_test(NAME blender.addon.install
 set_tests_properties(blender.addon.install PROPERTIES
   FIXTURES_REQUIRED "synthetic_55_m55;roundtrip_dir" LABELS blender)
 add_dependencies(smpl-reference blender_addon)  # the install test needs the zip built
+
+# Baked animation (motions) through Blender and the validator; batch CLI.
+include(${CMAKE_CURRENT_LIST_DIR}/anim_tests.cmake)

@@ -1,5 +1,7 @@
 // Tests for whole-file reads, atomic writes and baseName. Each test works in
 // its own scratch directory so leftover temporary files can be detected.
+#include "core/file_io.h"
+
 #include <dirent.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -11,8 +13,6 @@
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include "core/file_io.h"
 
 namespace smpl {
 namespace {
@@ -96,7 +96,9 @@ TEST_F(FileIo, FailedRenameRemovesTheTemporary) {
   std::ofstream(path + "/keep") << "x";
   Status st = writeFileAtomic(path, std::string("data"));
   ASSERT_FALSE(st.ok());
-  EXPECT_NE(st.message().find(path + ": cannot rename temporary file into place"), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find(path + ": cannot rename temporary file into place"),
+            std::string::npos)
+      << st.message();
   EXPECT_EQ(list(), std::vector<std::string>{"sub"});
   std::remove((path + "/keep").c_str());
 }

@@ -30,7 +30,8 @@ TEST(ForwardBatch, EqualsForwardForEveryFrameAndThreadCount) {
       ASSERT_TRUE(ref.ok());
       Eigen::MatrixXd got = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
           batch.col(t).data(), model->numVertices(), 3);
-      EXPECT_LT((got - ref->vertices).cwiseAbs().maxCoeff(), 1e-12) << "frame " << t << " threads " << threads;
+      // 1e-6: the corrective GEMM runs in float (forward_batch.h).
+      EXPECT_LT((got - ref->vertices).cwiseAbs().maxCoeff(), 1e-6) << "frame " << t << " threads " << threads;
     }
   }
 }

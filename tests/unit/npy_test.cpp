@@ -1,6 +1,8 @@
 // Tests for the .npy reader. Good inputs are written by numpy
 // (tests/fixtures/make_npy_cases.py) and compared with the values numpy
 // itself reports; bad inputs are built here by editing headers and bytes.
+#include "core/npy.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,8 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include "core/npy.h"
 
 namespace smpl {
 namespace {
@@ -40,13 +40,17 @@ std::string makeNpy(const std::string& dict, const std::string& payload, int ver
   return out + header + payload;
 }
 
-std::string doubles(std::vector<double> v) { return std::string(reinterpret_cast<const char*>(v.data()), v.size() * 8); }
+std::string doubles(std::vector<double> v) {
+  return std::string(reinterpret_cast<const char*>(v.data()), v.size() * 8);
+}
 
 void expectValue(double got, const nlohmann::json& want, size_t i) {
   if (want.is_string()) {
     const std::string w = want.get<std::string>();
-    if (w == "nan") EXPECT_TRUE(std::isnan(got)) << "element " << i;
-    else EXPECT_EQ(got, w == "inf" ? INFINITY : -INFINITY) << "element " << i;
+    if (w == "nan")
+      EXPECT_TRUE(std::isnan(got)) << "element " << i;
+    else
+      EXPECT_EQ(got, w == "inf" ? INFINITY : -INFINITY) << "element " << i;
     return;
   }
   const double w = want.get<double>();
@@ -96,7 +100,8 @@ TEST(Npy, MissingFileNamesThePath) {
 }
 
 TEST(Npy, EveryTruncationIsAnErrorNamingTheFile) {
-  for (const char* name : {"f8_fortran_2d.npy", "names_u.npy", "scalar_f8.npy", "version_2.npy", "bytes_s.npy"}) {
+  for (const char* name :
+       {"f8_fortran_2d.npy", "names_u.npy", "scalar_f8.npy", "version_2.npy", "bytes_s.npy"}) {
     const std::string full = readAll(kCases + name);
     ASSERT_TRUE(parse(full).ok()) << name;
     const size_t data_start = full.find('\n') + 1;
@@ -105,7 +110,8 @@ TEST(Npy, EveryTruncationIsAnErrorNamingTheFile) {
       ASSERT_FALSE(a.ok()) << name << " cut at " << len;
       EXPECT_EQ(a.message().rfind("cut.npy: ", 0), 0u) << a.message();
       if (len < data_start) continue;
-      const std::string want = "truncated data: expected " + std::to_string(full.size() - data_start) + " bytes, found " +
+      const std::string want = "truncated data: expected " +
+                               std::to_string(full.size() - data_start) + " bytes, found " +
                                std::to_string(len - data_start);
       EXPECT_NE(a.message().find(want), std::string::npos) << a.message();
     }
@@ -113,16 +119,19 @@ TEST(Npy, EveryTruncationIsAnErrorNamingTheFile) {
 }
 
 TEST(Npy, HandBuiltHeaderParses) {
-  Result<Array> a = parse(makeNpy("{'shape': (3L,), 'fortran_order': False, 'descr': '<f8'}", doubles({1, 2, 3})));
+  Result<Array> a = parse(
+      makeNpy("{'shape': (3L,), 'fortran_order': False, 'descr': '<f8'}", doubles({1, 2, 3})));
   ASSERT_TRUE(a.ok()) << a.message();
   EXPECT_EQ(a->data, (std::vector<double>{1, 2, 3}));
-  Result<Array> v2 = parse(makeNpy("{\"descr\": \"<f8\", \"fortran_order\": True, \"shape\": (1, 2), }", doubles({4, 5}), 2));
+  Result<Array> v2 = parse(makeNpy(
+      "{\"descr\": \"<f8\", \"fortran_order\": True, \"shape\": (1, 2), }", doubles({4, 5}), 2));
   ASSERT_TRUE(v2.ok()) << v2.message();
   EXPECT_EQ(v2->data, (std::vector<double>{4, 5}));
 }
 
 TEST(Npy, TrailingBytesAfterTheDataAreTolerated) {
-  Result<Array> a = parse(makeNpy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", doubles({1, 2, 3})));
+  Result<Array> a = parse(
+      makeNpy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", doubles({1, 2, 3})));
   ASSERT_TRUE(a.ok()) << a.message();
   EXPECT_EQ(a->data, (std::vector<double>{1, 2}));
 }
@@ -157,24 +166,29 @@ TEST(Npy, BadPreambleIsRefused) {
   absurd[11] = '\x7f';
   shortlen[8] = '\xff';
   shortlen[9] = '\x7f';
-  for (const BadCase& c : {BadCase{magic, "bad magic"}, BadCase{version, "unsupported .npy version 4.0"},
-                           BadCase{absurd, "absurd"}, BadCase{shortlen, "truncated .npy header"},
-                           BadCase{"", "bad magic"}, BadCase{"\x93NUMPY\x01", "bad magic"}})
+  for (const BadCase& c :
+       {BadCase{magic, "bad magic"}, BadCase{version, "unsupported .npy version 4.0"},
+        BadCase{absurd, "absurd"}, BadCase{shortlen, "truncated .npy header"},
+        BadCase{"", "bad magic"}, BadCase{"\x93NUMPY\x01", "bad magic"}})
     expectError(c);
 }
 
 TEST(Npy, BadHeaderDictIsRefused) {
   const std::vector<BadCase> cases = {
       {withDict("{'descr': '<f8', 'fortran_order': False}"), "needs 'descr'"},
-      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (3,), 'extra': 1}"), "unexpected or repeated key 'extra'"},
-      {withDict("{'descr': '<f8', 'descr': '<f8', 'fortran_order': False, 'shape': (3,)}"), "repeated key 'descr'"},
+      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (3,), 'extra': 1}"),
+       "unexpected or repeated key 'extra'"},
+      {withDict("{'descr': '<f8', 'descr': '<f8', 'fortran_order': False, 'shape': (3,)}"),
+       "repeated key 'descr'"},
       {withDict("{'descr': '<f8', 'fortran_order': 0, 'shape': (3,)}"), "True or False"},
       {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (-3,)}"), "negative dimension"},
       {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': [3]}"), "must be a tuple"},
       {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (3 4)}"), "malformed 'shape'"},
-      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (99999999999999999999,)}"), "dimension too large"},
+      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (99999999999999999999,)}"),
+       "dimension too large"},
       {withDict("{'descr: '<f8', 'fortran_order': False, 'shape': (3,)}"), "bad .npy header"},
-      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (3,)} x"), "trailing characters"},
+      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (3,)} x"),
+       "trailing characters"},
       {withDict("{'descr': '<f8' 'fortran_order': False, 'shape': (3,)}"), "expected ',' or '}'"},
       {withDict("['descr', '<f8']"), "expected a dict"},
       {withDict("{'descr': '<f\\x38', 'fortran_order': False, 'shape': (3,)}"), "escapes"},
@@ -215,23 +229,32 @@ TEST(Npy, HugeDeclaredShapesFailWithoutAllocating) {
   // Each would need terabytes if the reader trusted the header.
   expectError({withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (1000000000000,), }"),
                "truncated data: expected 8000000000000 bytes, found 24"});
-  expectError({withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (4294967296, 4294967296), }"), "too large"});
-  expectError({withDict("{'descr': '|u1', 'fortran_order': False, 'shape': (4611686018427387904, 4, 0), }"), "too large"});
-  expectError({withDict("{'descr': '<U67108864', 'fortran_order': False, 'shape': (4294967296, 4294967296), }"),
-               "too large"});
+  expectError(
+      {withDict("{'descr': '<f8', 'fortran_order': False, 'shape': (4294967296, 4294967296), }"),
+       "too large"});
+  expectError(
+      {withDict("{'descr': '|u1', 'fortran_order': False, 'shape': (4611686018427387904, 4, 0), }"),
+       "too large"});
+  expectError(
+      {withDict(
+           "{'descr': '<U67108864', 'fortran_order': False, 'shape': (4294967296, 4294967296), }"),
+       "too large"});
 }
 
 TEST(Npy, InvalidUnicodeIsRefused) {
   const std::string bad("\x00\x00\x11\x00", 4);  // U+110000, beyond Unicode
-  expectError({makeNpy("{'descr': '<U1', 'fortran_order': False, 'shape': (1,), }", bad), "invalid unicode code point"});
+  expectError({makeNpy("{'descr': '<U1', 'fortran_order': False, 'shape': (1,), }", bad),
+               "invalid unicode code point"});
   const std::string surrogate("\x00\xd8\x00\x00", 4);
-  expectError({makeNpy("{'descr': '<U1', 'fortran_order': False, 'shape': (1,), }", surrogate), "invalid unicode"});
+  expectError({makeNpy("{'descr': '<U1', 'fortran_order': False, 'shape': (1,), }", surrogate),
+               "invalid unicode"});
 }
 
 TEST(Npy, HalfFloatsDecodeExactly) {
   // Bit patterns from IEEE 754 binary16: smallest subnormal, largest normal, one.
   const std::string bits("\x01\x00\xff\x7b\x00\x3c\x00\xfc", 8);
-  Result<Array> a = parse(makeNpy("{'descr': '<f2', 'fortran_order': False, 'shape': (4,), }", bits));
+  Result<Array> a =
+      parse(makeNpy("{'descr': '<f2', 'fortran_order': False, 'shape': (4,), }", bits));
   ASSERT_TRUE(a.ok()) << a.message();
   EXPECT_EQ(a->data, (std::vector<double>{std::ldexp(1.0, -24), 65504.0, 1.0, -INFINITY}));
 }

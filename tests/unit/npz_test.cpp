@@ -1,6 +1,8 @@
 // Tests for the .npz reader: archives written by np.savez,
 // np.savez_compressed and Python's zipfile (tests/fixtures/make_npy_cases.py)
 // against the values np.load returned; errors must name archive and member.
+#include "core/npz.h"
+
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -10,8 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include "core/npz.h"
 
 namespace smpl {
 namespace {
@@ -38,15 +38,16 @@ std::string le(uint64_t v, int n) {
 std::string storedZip(const std::vector<std::pair<std::string, std::string>>& members) {
   std::string body, cd;
   for (const auto& m : members) {
-    const uint32_t crc = static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(m.second.data()),
-                                                     static_cast<uInt>(m.second.size())));
-    const std::string common = le(20, 2) + le(0, 6) + le(0x21, 2) + le(crc, 4) + le(m.second.size(), 4) +
-                               le(m.second.size(), 4) + le(m.first.size(), 2) + le(0, 2);
+    const uint32_t crc = static_cast<uint32_t>(crc32(
+        0, reinterpret_cast<const Bytef*>(m.second.data()), static_cast<uInt>(m.second.size())));
+    const std::string common = le(20, 2) + le(0, 6) + le(0x21, 2) + le(crc, 4) +
+                               le(m.second.size(), 4) + le(m.second.size(), 4) +
+                               le(m.first.size(), 2) + le(0, 2);
     cd += le(0x02014b50, 4) + le(20, 2) + common + le(0, 10) + le(body.size(), 4) + m.first;
     body += le(0x04034b50, 4) + common + m.first + m.second;
   }
-  return body + cd + le(0x06054b50, 4) + le(0, 4) + le(members.size(), 2) + le(members.size(), 2) + le(cd.size(), 4) +
-         le(body.size(), 4) + le(0, 2);
+  return body + cd + le(0x06054b50, 4) + le(0, 4) + le(members.size(), 2) + le(members.size(), 2) +
+         le(cd.size(), 4) + le(body.size(), 4) + le(0, 2);
 }
 
 std::string npy(const std::string& dict, const std::string& payload) {
@@ -94,16 +95,20 @@ TEST(Npz, ZipErrorsNameTheFileNotItsDirectory) {
   EXPECT_EQ(d.message().rfind("names_u.npy: not a zip archive", 0), 0u) << d.message();
   Result<ArrayDict> missing = readNpzFile(kCases + "missing.npz");
   ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.message().find("missing.npz: cannot open"), std::string::npos) << missing.message();
+  EXPECT_NE(missing.message().find("missing.npz: cannot open"), std::string::npos)
+      << missing.message();
 }
 
 TEST(Npz, MemberErrorsNameArchiveAndMember) {
-  const std::string good = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
-  const std::string cut = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(10, '\0'));
+  const std::string good =
+      npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
+  const std::string cut =
+      npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(10, '\0'));
   Result<ArrayDict> d = parse(storedZip({{"betas.npy", good}, {"shapedirs.npy", cut}}));
   ASSERT_FALSE(d.ok());
   EXPECT_EQ(d.message(), "model.npz/shapedirs.npy: truncated data: expected 16 bytes, found 10");
-  const std::string obj = npy("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
+  const std::string obj =
+      npy("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
   Result<ArrayDict> o = parse(storedZip({{"kintree_table.npy", obj}}));
   ASSERT_FALSE(o.ok());
   EXPECT_EQ(o.message().rfind("model.npz/kintree_table.npy: object arrays", 0), 0u) << o.message();
@@ -113,7 +118,8 @@ TEST(Npz, MemberErrorsNameArchiveAndMember) {
 }
 
 TEST(Npz, KeysDropTheNpySuffixAndDuplicatesAreRefused) {
-  const std::string a = npy("{'descr': '<i2', 'fortran_order': False, 'shape': (), }", std::string("\x07\x00", 2));
+  const std::string a =
+      npy("{'descr': '<i2', 'fortran_order': False, 'shape': (), }", std::string("\x07\x00", 2));
   Result<ArrayDict> d = parse(storedZip({{"dir/", ""}, {"fps.npy", a}, {"fps.npy.npy", a}}));
   ASSERT_TRUE(d.ok()) << d.message();
   ASSERT_EQ(d->size(), 2u);

@@ -1,6 +1,8 @@
 // Tests for the zip reader. Archives written by numpy / Python's zipfile come
 // from tests/fixtures/make_npy_cases.py; hostile ones are assembled here with
 // a tiny writer and then patched field by field (offsets per APPNOTE.TXT).
+#include "core/zip.h"
+
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -10,8 +12,6 @@
 #include <set>
 #include <string>
 #include <vector>
-
-#include "core/zip.h"
 
 namespace smpl {
 namespace {
@@ -58,7 +58,8 @@ std::string rawDeflate(const std::string& in) {
 }
 
 uint32_t crcOf(const std::string& s) {
-  return static_cast<uint32_t>(crc32(0, reinterpret_cast<const Bytef*>(s.data()), static_cast<uInt>(s.size())));
+  return static_cast<uint32_t>(
+      crc32(0, reinterpret_cast<const Bytef*>(s.data()), static_cast<uInt>(s.size())));
 }
 
 struct TestEntry {
@@ -78,8 +79,9 @@ Built buildZip(const std::vector<TestEntry>& entries, const std::string& comment
   std::string cd;
   for (const TestEntry& e : entries) {
     const std::string payload = e.deflate ? rawDeflate(e.data) : e.data;
-    const std::string common = le16(20) + le16(0) + le16(e.deflate ? 8 : 0) + le16(0) + le16(0x21) + le32(crcOf(e.data)) +
-                               le32(static_cast<uint32_t>(payload.size())) + le32(static_cast<uint32_t>(e.data.size())) +
+    const std::string common = le16(20) + le16(0) + le16(e.deflate ? 8 : 0) + le16(0) + le16(0x21) +
+                               le32(crcOf(e.data)) + le32(static_cast<uint32_t>(payload.size())) +
+                               le32(static_cast<uint32_t>(e.data.size())) +
                                le16(static_cast<uint32_t>(e.name.size())) + le16(0);
     b.central.push_back(cd.size());
     cd += le32(0x02014b50) + le16(20) + common + le16(0) + le16(0) + le16(0) + le32(0) +
@@ -94,16 +96,19 @@ Built buildZip(const std::vector<TestEntry>& entries, const std::string& comment
   b.bytes += cd;
   b.eocd = b.bytes.size();
   const uint32_t n = static_cast<uint32_t>(entries.size());
-  b.bytes += le32(0x06054b50) + le16(0) + le16(0) + le16(n) + le16(n) + le32(static_cast<uint32_t>(cd.size())) +
-             le32(static_cast<uint32_t>(cd_offset)) + le16(static_cast<uint32_t>(comment.size())) + comment;
+  b.bytes += le32(0x06054b50) + le16(0) + le16(0) + le16(n) + le16(n) +
+             le32(static_cast<uint32_t>(cd.size())) + le32(static_cast<uint32_t>(cd_offset)) +
+             le16(static_cast<uint32_t>(comment.size())) + comment;
   return b;
 }
 
-Result<std::vector<ZipEntry>> read(const std::string& bytes, const ZipLimits& limits = ZipLimits()) {
+Result<std::vector<ZipEntry>> read(const std::string& bytes,
+                                   const ZipLimits& limits = ZipLimits()) {
   return readZip(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "model.npz", limits);
 }
 
-void expectError(const std::string& bytes, const std::string& keyword, const ZipLimits& limits = ZipLimits()) {
+void expectError(const std::string& bytes, const std::string& keyword,
+                 const ZipLimits& limits = ZipLimits()) {
   Result<std::vector<ZipEntry>> r = read(bytes, limits);
   ASSERT_FALSE(r.ok()) << "accepted; expected '" << keyword << "'";
   EXPECT_EQ(r.message().rfind("model.npz", 0), 0u) << r.message();
@@ -141,7 +146,8 @@ TEST(Zip, ReadsArchivesWrittenByNumpyAndPython) {
       names.insert(e.name);
       EXPECT_EQ(std::string(e.data.begin(), e.data.begin() + 6), "\x93NUMPY");
     }
-    for (auto it = expected[file].begin(); it != expected[file].end(); ++it) want.insert(it.key() + ".npy");
+    for (auto it = expected[file].begin(); it != expected[file].end(); ++it)
+      want.insert(it.key() + ".npy");
     EXPECT_EQ(names, want);
   }
 }
@@ -165,7 +171,8 @@ TEST(Zip, NotAZip) {
 TEST(Zip, DeclaredSizesOverTheLimitFailBeforeReading) {
   ZipLimits limits;
   limits.max_total_uncompressed = 1000;  // the two entries hold 1027 bytes
-  expectError(buildZip(kTwo).bytes, "declared uncompressed size exceeds the limit of 1000 bytes at 'b.npy'", limits);
+  expectError(buildZip(kTwo).bytes,
+              "declared uncompressed size exceeds the limit of 1000 bytes at 'b.npy'", limits);
   limits = ZipLimits();
   limits.max_entries = 1;
   expectError(buildZip(kTwo).bytes, "2 entries exceed the limit of 1", limits);
@@ -181,7 +188,8 @@ TEST(Zip, DeflateBombStopsAtTheDeclaredSize) {
   Built b = buildZip({{"bomb.npy", std::string(20 << 20, '\0'), true}});
   ASSERT_LT(b.bytes.size(), 40000u);  // 20 MiB of zeros deflate to ~20 KiB
   put32(b.bytes, b.central[0] + 24, 1 << 20);
-  expectError(b.bytes, "model.npz/bomb.npy: deflate data inflates to more than the declared 1048576 bytes");
+  expectError(b.bytes,
+              "model.npz/bomb.npy: deflate data inflates to more than the declared 1048576 bytes");
 }
 
 TEST(Zip, ShorterDeflateOutputThanDeclaredIsAnError) {
@@ -195,7 +203,8 @@ TEST(Zip, CorruptDeflateStream) {
   b.bytes[b.data[1]] = '\xff';  // block type 3 is reserved
   expectError(b.bytes, "model.npz/b.npy: corrupt deflate data");
   Built cut = buildZip(kTwo);
-  const uint32_t csize = static_cast<uint32_t>(cut.central[0] - cut.data[1]);  // the stream ends where the cd starts
+  const uint32_t csize =
+      static_cast<uint32_t>(cut.central[0] - cut.data[1]);  // the stream ends where the cd starts
   put32(cut.bytes, cut.central[1] + 20, csize - 3);
   put32(cut.bytes, cut.local[1] + 18, csize - 3);
   expectError(cut.bytes, "model.npz/b.npy: truncated deflate data");

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Batch mode: `smpl-export --model builtin --motion-dir D --out-dir O`.
+# A bad motion fails alone (one "Error loading" line, exit 3) while the good
+# ones convert; a second run skips up-to-date outputs; touching a motion
+# reconverts only it; outputs are byte-identical across runs and out dirs.
+# Usage: batch_test.sh SMPL_EXPORT FIXTURE_DIR
+set -u
+exe=$1 fixtures=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+
+check() {  # name, condition result
+  if [ "$2" = 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1"; fi
+}
+
+motions=$work/motions out=$work/out
+mkdir -p "$motions"
+good="amass_smplh.npz smpl_72.npz plain.json"
+for f in $good bad_trans.npz; do cp "$fixtures/motions/$f" "$motions/" || exit 1; done
+
+run() {  # out dir, expected exit, expected summary; leaves stdout/stderr in $work
+  "$exe" --model builtin --motion-dir "$motions" --out-dir "$1" >"$work/stdout" 2>"$work/stderr"
+  local got=$?
+  [ "$got" = "$2" ]; check "exit $got, expected $2 ($3)" $?
+  grep -qxF "$3" "$work/stdout"; check "stdout lacks '$3': $(tail -n 1 "$work/stdout")" $?
+  grep -qF "Error loading $motions/bad_trans.npz: " "$work/stderr"
+  check "no 'Error loading $motions/bad_trans.npz: ...' line: $(cat "$work/stderr")" $?
+  [ "$(grep -c '^Error' "$work/stderr")" = 1 ]; check "expected exactly one Error line: $(cat "$work/stderr")" $?
+}
+
+outputs() {  # the files an out dir must hold, sorted
+  for f in $good; do echo "${f%.*}.glb" "${f%.*}.glb.smpl.json"; done | tr ' ' '\n' | sort
+}
+
+# 1. First run: 3 converted, 1 failed, nothing written for the bad one.
+run "$out" 3 "batch: 3 converted, 0 up to date, 1 failed"
+[ "$(ls "$out" | sort)" = "$(outputs)" ]; check "outputs: $(ls "$out" | tr '\n' ' ')" $?
+(cd "$out" && sha256sum $(outputs)) >"$work/first.sha"
+
+# 2. Nothing changed: all up to date, the bad one still fails.
+run "$out" 3 "batch: 0 converted, 3 up to date, 1 failed"
+
+# 3. A touched motion is reconverted alone, to the same bytes.
+sleep 1
+touch "$motions/smpl_72.npz"
+run "$out" 3 "batch: 1 converted, 2 up to date, 1 failed"
+[ "$out/smpl_72.glb" -nt "$out/amass_smplh.glb" ]; check "smpl_72.glb was not rewritten" $?
+(cd "$out" && sha256sum -c --quiet "$work/first.sha"); check "outputs changed after reconverting" $?
+
+# 4. Determinism across out dirs (fresh run, any thread schedule).
+run "$work/out2" 3 "batch: 3 converted, 0 up to date, 1 failed"
+(cd "$work/out2" && sha256sum -c --quiet "$work/first.sha"); check "a fresh out dir differs from the first" $?
+
+# 5. The outputs are real animated GLBs: glTF magic and an "animations" array.
+for f in $good; do
+  glb=$out/${f%.*}.glb
+  [ "$(head -c 4 "$glb")" = "glTF" ]; check "$glb: not a GLB" $?
+  grep -qa '"animations"' "$glb"; check "$glb: no animations" $?
+done
+
+echo "batch_test: $passed passed, $failed failed"
+[ "$failed" = 0 ]

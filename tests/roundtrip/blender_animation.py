@@ -1,0 +1,315 @@
+"""Headless-Blender check of baked animation: import an animated GLB/FBX
+written by `smpl-export --motion`, play it with NO runtime script (the baked
+weights channel / DeformPercent curves alone drive the correctives), and
+compare the evaluated mesh at chosen frames with numpy's forward pass of the
+motion file read here with numpy.
+
+  blender -b --factory-startup --python-exit-code 1 --python blender_animation.py -- \
+      --asset walk.glb --model model.npz --motion walk.npz [--fps 30] [--tol 1e-4] \
+      [--label smplh] [--subframe-report]
+
+Reference (independent of the C++ code): joints mapped by canonical name
+(model_math.joint_names), betas = the motion's first min(16, B) values, weights
+pruned to the asset's max_influences (model_math.prune), output frame i at
+source position i * fps_src / fps_out (quaternion slerp, linear trans), vertices
++ trans, then C = Rx(-90 deg) (AMASS files are Z-up; the export is Y-up).
+
+Prints one line per checked frame: "format layout M frame max_err_m".
+Each frame is checked twice: as imported, and with the shape key slider
+ranges opened to [-10, 10] (what an importer that does not clamp would give),
+which separates importer clamping from everything else; both are asserted.
+--subframe-report (after widening): also evaluates Blender half-way between
+output keys and prints its error against the slerped keys and against the
+source motion at that time (the resampling loss), without asserting on them.
+Exit status 0 only if every check passes.
+"""
+import argparse
+import os
+import sys
+import time
+
+import bpy
+import numpy as np
+
+np.bool = bool  # Debian numpy vs Blender 3.4's glTF importer
+sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_roundtrip as rt  # noqa: E402  (import helpers, failures list)
+import model_math  # noqa: E402
+
+# AMASS world (Z-up) -> exported model axes (Y-up): -90 degrees about X.
+Z_UP_TO_Y_UP = np.array([[1.0, 0, 0], [0, 0, 1], [0, -1, 0]])
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--asset", required=True)
+    ap.add_argument("--model", required=True, help="model .npz (read with numpy)")
+    ap.add_argument("--motion", required=True, help="motion .npz (read with numpy)")
+    ap.add_argument("--fps", type=float, default=0.0, help="the --fps given to smpl-export")
+    ap.add_argument("--tol", type=float, default=1e-4)
+    ap.add_argument("--label", default="")
+    ap.add_argument("--subframe-report", action="store_true")
+    return ap.parse_args(argv)
+
+
+# --- the motion, read with numpy -------------------------------------------------
+
+def read_motion(path):
+    """Joint name -> (T,3) axis-angle, trans (T,3), betas, fps (AMASS SMPL-H / SMPL-X / SMPL)."""
+    data = np.load(path, allow_pickle=False)
+    if "root_orient" in data.files:  # AMASS SMPL-X release: split keys
+        parts = [data[k] for k in ("root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand")]
+        poses = np.concatenate(parts, axis=1)
+    else:
+        poses = np.asarray(data["poses"], dtype=np.float64)
+    frames = poses.shape[0]
+    poses = poses.reshape(frames, -1, 3)
+    names = model_math.joint_names(poses.shape[1])  # SMPL 24, SMPL-H 52, SMPL-X 55
+    fps = next(float(data[k]) for k in ("mocap_framerate", "mocap_frame_rate", "fps") if k in data.files)
+    trans = np.asarray(data["trans"], dtype=np.float64) if "trans" in data.files else np.zeros((frames, 3))
+    betas = np.asarray(data["betas"], dtype=np.float64) if "betas" in data.files else np.zeros(0)
+    amass = "mocap_framerate" in data.files or "mocap_frame_rate" in data.files
+    return {"rot": {n: poses[:, j] for j, n in enumerate(names)}, "trans": trans, "betas": betas,
+            "fps": fps, "frames": frames, "amass": amass}
+
+
+def quat_from_aa(aa):
+    angle = np.linalg.norm(aa)
+    axis = aa / angle if angle > 0 else np.zeros(3)
+    return np.concatenate([[np.cos(angle / 2)], np.sin(angle / 2) * axis])
+
+
+def aa_from_quat(q):
+    q = q / np.linalg.norm(q)
+    if q[0] < 0:
+        q = -q
+    s = np.linalg.norm(q[1:])
+    return np.zeros(3) if s < 1e-15 else 2 * np.arctan2(s, q[0]) * q[1:] / s
+
+
+def slerp_aa(a, b, t):
+    """Slerp between two axis-angle rotations, returned as axis-angle."""
+    qa, qb = quat_from_aa(a), quat_from_aa(b)
+    if qa @ qb < 0:
+        qb = -qb
+    cos = min(1.0, qa @ qb)
+    omega = np.arccos(cos)
+    if omega < 1e-12:
+        return aa_from_quat(qa)
+    return aa_from_quat((np.sin((1 - t) * omega) * qa + np.sin(t * omega) * qb) / np.sin(omega))
+
+
+def pose_at(motion, names, position):
+    """(K,3) axis-angle for the model's joints and trans at a source position (frames)."""
+    last = motion["frames"] - 1
+    f0 = min(int(np.floor(position + 1e-9)), last)
+    t = max(0.0, position - f0) if f0 < last else 0.0
+    f1 = min(f0 + 1, last)
+    pose = np.zeros((len(names), 3))
+    for k, name in enumerate(names):
+        if name in motion["rot"]:  # joints the motion lacks keep the rest rotation
+            track = motion["rot"][name]
+            pose[k] = track[f0] if t < 1e-12 else slerp_aa(track[f0], track[f1], t)
+    trans = (1 - t) * motion["trans"][f0] + t * motion["trans"][f1]
+    return pose, trans
+
+
+class Reference:
+    """numpy forward pass of the motion on the model, in exported (Y-up) axes."""
+
+    def __init__(self, model, motion, weights):
+        self.model, self.motion, self.weights = model, motion, weights
+        self.names = model_math.joint_names(len(model["parents"]))
+        b = min(model["shapedirs"].shape[2], 300)  # SMPL-X stores 300 shape + 100 expression columns
+        self.betas = motion["betas"][:min(16, b)]
+        self.v_shaped, self.joints = model_math.shape(model, self.betas)
+        self.up = Z_UP_TO_Y_UP if motion["amass"] else np.eye(3)
+
+    def at(self, position, features=None):
+        """Vertices (N,3), joints (K,3), features; `features` overrides the corrective weights."""
+        pose, trans = pose_at(self.motion, self.names, position)
+        v_shaped = self.v_shaped
+        if features is not None:  # forward() is linear in v_shaped for fixed joints
+            f_model = (model_math.rodrigues(pose)[1:] - np.eye(3)).reshape(-1)
+            v_shaped = v_shaped + self.model["posedirs"] @ (features - f_model)
+        verts, joints, f = model_math.forward(self.model, v_shaped, self.joints, pose, self.weights)
+        return (verts + trans) @ self.up.T, (joints + trans) @ self.up.T, f
+
+
+# --- Blender side ----------------------------------------------------------------
+
+def import_asset(path, fps):
+    """Import with the scene at the output rate: the glTF importer keys at t * scene fps."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.fps, scene.render.fps_base = int(round(fps)), 1.0
+    fmt = os.path.splitext(path)[1].lstrip(".").lower()
+    if fmt == "glb":
+        bpy.ops.import_scene.gltf(filepath=path)
+    else:
+        bpy.ops.import_scene.fbx(filepath=path)  # sets the scene rate from the file's TimeMode
+    arms = [o for o in bpy.data.objects if o.type == "ARMATURE"]
+    meshes = [o for o in bpy.data.objects if o.type == "MESH" and o.data.shape_keys]
+    if len(arms) != 1 or len(meshes) != 1:
+        raise SystemExit("%s: expected 1 armature and 1 mesh with shape keys, found %d and %d"
+                         % (path, len(arms), len(meshes)))
+    rt.check(abs(scene.render.fps / scene.render.fps_base - fps) < 1e-6,
+             "%s: scene rate after import %.4f fps, expected %g" % (path, scene.render.fps / scene.render.fps_base, fps))
+    for obj, what in ((arms[0], "armature"), (meshes[0].data.shape_keys, "shape keys")):
+        ad = obj.animation_data
+        rt.check(ad is not None and ad.action is not None, "%s: no active action on the %s" % (path, what))
+    return fmt, arms[0], meshes[0]
+
+
+def key_blocks(mesh_obj, names, evaluated=True):
+    """Shape key blocks in corrective feature order (importers may prefix names)."""
+    keys = mesh_obj.data.shape_keys
+    if evaluated:
+        keys = keys.evaluated_get(bpy.context.evaluated_depsgraph_get())
+    table = {}
+    for kb in keys.key_blocks:
+        table[kb.name] = kb
+        table.setdefault(kb.name.rsplit("|", 1)[-1], kb)
+    return [table[t] for t in model_math.target_names(names)]
+
+
+def evaluate(scene, frame, subframe=0.0):
+    scene.frame_set(frame, subframe=subframe)
+    bpy.context.view_layer.update()
+
+
+def explain_clamping(ctx, position, got, keys, f, lo, hi):
+    """Print whether Blender's key values are f clamped to the slider ranges, and
+    whether numpy with Blender's key values reproduces Blender's mesh."""
+    ref, index = ctx["ref"], ctx["index"]
+    explained = np.linalg.norm(got - ref.at(position, keys)[0][index], axis=1).max()
+    bad = np.abs(keys - f) > 1e-5
+    clamped = np.abs(keys - np.clip(f, lo, hi)).max() <= 1e-5
+    print("  %d of %d key values differ from f (worst %.3f); key values == f clamped to the "
+          "slider ranges: %s; numpy with Blender's key values: %.3e m"
+          % (bad.sum(), f.size, np.abs(keys - f).max(), clamped, explained))
+    if bad.any():
+        i = np.flatnonzero(bad)[:3]
+        print("  e.g. f %s -> key %s, slider_min %s" % (np.round(f[i], 4), np.round(keys[i], 4),
+                                                      np.round(lo[i], 4)))
+
+
+def check_frame(ctx, out_frame, position, tol, tag):
+    """Blender at output key `out_frame` vs numpy at source `position`; returns the error."""
+    evaluate(bpy.context.scene, out_frame + ctx["offset"])
+    ref, index = ctx["ref"], ctx["index"]
+    got = rt.evaluated_vertices(ctx["mesh"])
+    want, want_joints, f = ref.at(position)
+    err = np.linalg.norm(got - want[index], axis=1).max()
+    joint_err = np.abs(rt.posed_joints(ctx["arm"], ref.names) - want_joints).max()
+    blocks = key_blocks(ctx["mesh"], ref.names)
+    # Key values decoded to features: weight = scale * f + offset (file metadata).
+    keys = (np.array([kb.value for kb in blocks]) - ctx["offset_w"]) / ctx["scale"]
+    lo = (np.array([kb.slider_min for kb in blocks]) - ctx["offset_w"]) / ctx["scale"]
+    hi = (np.array([kb.slider_max for kb in blocks]) - ctx["offset_w"]) / ctx["scale"]
+    print("%s %s%s %d %d %.3e" % (ctx["fmt"], ctx["label"], tag, ctx["m"], out_frame, err))
+    print("  joints_err_m %.3e key_value_err %.3e (f in [%.3f, %.3f])"
+          % (joint_err, np.abs(keys - f).max(), f.min(), f.max()))
+    if abs(position - round(position)) > 1e-9:  # a key between source frames
+        near = [np.linalg.norm(got - ref.at(p)[0][index], axis=1).max()
+                for p in (np.floor(position), np.ceil(position))]
+        print("  key at source frame %.2f: vs source frame %d %.3e m, vs source frame %d %.3e m"
+              % (position, np.floor(position), near[0], np.ceil(position), near[1]))
+    if err > tol:
+        explain_clamping(ctx, position, got, keys, f, lo, hi)
+    rt.check(joint_err <= tol, "frame %d: posed joints off by %.3g m" % (out_frame, joint_err))
+    rt.check(err <= tol, "%s%s frame %d: max vertex error %.3g m > %g"
+             % (ctx["fmt"], tag, out_frame, err, tol))
+    return err
+
+
+def subframe_report(ctx, ratio, count):
+    """Half-way between output keys: vs the slerped keys and vs the source motion there."""
+    ref, index = ctx["ref"], ctx["index"]
+    for i in (0, count // 2, count - 2):
+        evaluate(bpy.context.scene, i + ctx["offset"], 0.5)
+        got = rt.evaluated_vertices(ctx["mesh"])
+        pos0, pos1 = i * ratio, (i + 1) * ratio
+        # The pose an engine that slerps between the two output keys would show.
+        pa, ta = pose_at(ref.motion, ref.names, pos0)
+        pb, tb = pose_at(ref.motion, ref.names, pos1)
+        mid = np.array([slerp_aa(a, b, 0.5) for a, b in zip(pa, pb)])
+        verts = model_math.forward(ref.model, ref.v_shaped, ref.joints, mid, ref.weights)[0]
+        slerped = (verts + 0.5 * (ta + tb)) @ ref.up.T
+        source = ref.at(0.5 * (pos0 + pos1))[0]  # the source motion at that time
+        e_slerp = np.linalg.norm(got - slerped[index], axis=1).max()
+        e_source = np.linalg.norm(got - source[index], axis=1).max()
+        e_keys = np.linalg.norm(slerped - source, axis=1).max()
+        nearest = ref.at(np.round(0.5 * (pos0 + pos1)))[0]
+        e_near = np.linalg.norm(got - nearest[index], axis=1).max()
+        print("resample %s %s %d frame %.1f source_frame %.2f blender_vs_slerped_keys_m %.3e "
+              "blender_vs_source_m %.3e blender_vs_nearest_source_frame_m %.3e slerped_keys_vs_source_m %.3e"
+              % (ctx["fmt"], ctx["label"], ctx["m"], i + 0.5, 0.5 * (pos0 + pos1), e_slerp, e_source,
+                 e_near, e_keys))
+
+
+def widen_sliders(mesh_obj):
+    """What a non-clamping importer would give: slider ranges opened to [-10, 10]."""
+    for kb in mesh_obj.data.shape_keys.key_blocks:
+        kb.slider_min, kb.slider_max = -10.0, 10.0
+
+
+def main():
+    args = parse_args()
+    start = time.perf_counter()
+    model = model_math.load_model_npz(args.model)
+    motion = read_motion(args.motion)
+    fps_out = args.fps or motion["fps"]
+    fmt, arm, mesh_obj = import_asset(args.asset, fps_out)
+    m = read_max_influences(args.asset)
+    ref = Reference(model, motion, model_math.prune(model["weights"], m))
+    names = model_math.target_names(ref.names)
+    scale, offset = rt.corrective_encoding(args.asset, len(names))
+    index, _ = rt.vertex_map(mesh_obj, ref.v_shaped, rt.rest_positions(mesh_obj, dict(zip(names, offset))))
+    ratio = motion["fps"] / fps_out  # source frames per output frame
+    count = int(np.floor((motion["frames"] - 1) / ratio + 1e-9)) + 1
+    ctx = {"fmt": fmt, "arm": arm, "mesh": mesh_obj, "ref": ref, "index": index, "m": m,
+           "scale": scale, "offset_w": offset,
+           "label": args.label or os.path.splitext(os.path.basename(args.model))[0],
+           "offset": 1 if fmt == "fbx" else 0}  # Blender's FBX importer starts at frame 1
+    frames = sorted({0, count // 2, count - 1})
+    worst = max(check_frame(ctx, i, i * ratio, args.tol, "") for i in frames)
+    seconds = time.perf_counter() - start
+    # The same frames with the slider ranges opened: isolates importer clamping
+    # from everything else the file carries (still asserted).
+    widen_sliders(mesh_obj)
+    widened = max(check_frame(ctx, i, i * ratio, args.tol, ":widened") for i in frames)
+    if args.subframe_report:  # after widening: measures interpolation, not clamping
+        subframe_report(ctx, ratio, count)
+    print("blender_time_s %s %s %d %.2f max_err_m %.3e widened_max_err_m %.3e frames %s of %d"
+          % (fmt, ctx["label"], m, seconds, worst, widened, frames, count))
+    if rt.failures:
+        print("%d check(s) failed" % len(rt.failures))
+        sys.stdout.flush()
+        os._exit(1)
+    print("OK")
+    sys.stdout.flush()
+    os._exit(0)
+
+
+def read_max_influences(asset):
+    """M from the sidecar written next to the asset (DESIGN.md metadata)."""
+    import json
+    with open(asset + ".smpl.json", encoding="utf-8") as fh:
+        return int(json.load(fh)["max_influences"])
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except SystemExit as e:
+        print(e)
+        sys.stdout.flush()
+        os._exit(1)
+    except Exception:  # any error must fail the CTest run, not leave Blender at exit 0
+        import traceback
+        traceback.print_exc()
+        sys.stdout.flush()
+        os._exit(1)
