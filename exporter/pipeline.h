@@ -32,6 +32,8 @@ struct ExportOptions {
   int max_influences = 4;
   bool correctives = true;         // one morph target per pose feature
   CorrectiveEncoding encoding = CorrectiveEncoding::Auto;  // resolved by the caller; Auto acts as Signed here
+  int corrective_basis = 0;        // > 0: K principal components of posedirs replace the
+                                   // 9(K-1) corrective targets; weights = C f (C in the metadata)
   int shape_keys = 0;              // also export the first N shape directions
   int expression_keys = 0;         // also export the first N expression directions
   std::string uv_obj;              // optional OBJ with UVs in the model's vertex order

@@ -107,9 +107,18 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--correctives") {
     if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
     e.correctives = value == "all";
+  } else if (name == "--corrective-epsilon") {
+    Result<double> v = parseNumber(value, name);
+    if (!v || *v < 0 || *v > 0.01) return makeError("--corrective-epsilon: expected metres in [0, 0.01], got '" + value + "'");
+    s->writer_options.morph_epsilon = *v;
+  } else if (name == "--corrective-basis") {
+    return intInto(&e.corrective_basis);
   } else if (name == "--corrective-weights") {
     if (value != "signed" && value != "unit") return makeError("--corrective-weights: expected 'signed' or 'unit', got '" + value + "'");
     e.encoding = value == "unit" ? CorrectiveEncoding::Unit : CorrectiveEncoding::Signed;
+  } else if (name == "--fbx-version") {
+    if (value != "7400" && value != "7500") return makeError("--fbx-version: expected 7400 or 7500, got '" + value + "'");
+    s->writer_options.fbx_version = value == "7400" ? 7400 : 7500;
   } else if (name == "--fbx-units") {
     if (value != "m" && value != "cm") return makeError("--fbx-units: expected 'm' or 'cm', got '" + value + "'");
     s->writer_options.fbx_units = value;
@@ -139,11 +148,14 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   const bool fbx = endsWith(s.out, ".fbx");
   if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
     return makeError("--out " + s.out + ": unknown format (expected .glb, .gltf or .fbx)");
-  if (has("--fbx-units") && !fbx) return makeError("--fbx-units applies only to .fbx output");
+  for (const char* o : {"--fbx-units", "--fbx-version"})
+    if (has(o) && !fbx) return makeError(std::string(o) + " applies only to .fbx output");
+  for (const char* o : {"--corrective-epsilon", "--quantize-morphs", "--draco"})
+    if (has(o) && fbx) return makeError(std::string(o) + " applies only to glTF output");
   return Status();
 }
 
-const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion"};
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco"};
 
 }  // namespace
 
@@ -167,6 +179,8 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
     else if (arg == "--version") s.version = true;
     else if (arg == "--quiet" || arg == "-q") s.quiet = true;
     else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
+    else if (arg == "--quantize-morphs") s.writer_options.quantize_morphs = true;
+    else if (arg == "--draco") s.writer_options.draco = true;
     else if (Status st = applyOption(arg, value, &s); !st) return st.error();
   }
   s.betas_given = std::find(given.begin(), given.end(), "--betas") != given.end() ||
@@ -226,11 +240,17 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
                          unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1],
                          for engines/importers that clamp weights (default with --motion: Blender
                          clamps animated weights); the mapping is in the metadata
+  --corrective-basis K   replace the corrective targets by K principal components of posedirs
+                         (weights = C f; C in the metadata; runtime scripts apply it)
+  --corrective-epsilon M glTF: drop morph deltas up to M metres, write sparse accessors
+  --quantize-morphs      glTF: int16 morph deltas (KHR_mesh_quantization)
+  --draco                glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)
   --shape-keys N         also export the first N shape directions as morph targets shape_<i>
   --expression-keys N    also export the first N expression directions (SMPL-X) as expr_<i>
   --uv OBJ               UVs from an OBJ sharing the model's vertex order (seams split vertices)
   --name NAME            mesh name (default body)
   --fbx-units m|cm       FBX geometry units (default m)
+  --fbx-version 7400|7500  FBX binary version (default 7400)
 
 Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rotation matrices):
   --motion FILE          bake FILE as an animation (repeatable: one animation each)

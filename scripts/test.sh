@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh Debian machine: install dependencies,
-# build with AddressSanitizer + UBSan, run every CTest test (unit, CLI,
-# headless-Blender round trips, glTF validator, C#), then run each libFuzzer
-# target briefly. Exit status is non-zero if anything fails.
+# build with AddressSanitizer + UBSan, run each libFuzzer target briefly, then
+# every CTest test (unit, CLI, headless-Blender round trips, glTF validator,
+# C#); ctest's summary is the last thing printed. Exit status is non-zero if
+# anything fails.
 #   scripts/test.sh [--no-fuzz]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,8 +17,8 @@ cmake --build build-test -j"$jobs"
 # Blender embeds its own allocator; sanitizers stay in our binaries only.
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd build-test && ctest --output-on-failure -j"$jobs" --timeout 900)
 
 if [[ "${1:-}" != "--no-fuzz" ]]; then
   scripts/fuzz.sh 30
 fi
+(cd build-test && ctest --output-on-failure -j"$jobs" --timeout 900)
