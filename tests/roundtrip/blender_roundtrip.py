@@ -53,16 +53,28 @@ def parse_args():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--label", default="")
     ap.add_argument("--tol", type=float, default=1e-5)
+    ap.add_argument("--import-option", action="append", default=[],
+                    help="KEY=VALUE passed to Blender's importer (e.g. automatic_bone_orientation=True)")
     return ap.parse_args(argv)
 
 
-def import_asset(path):
+def import_options(pairs):
+    """["automatic_bone_orientation=True", "bone_heuristic=TEMPERANCE"] -> kwargs."""
+    out = {}
+    for pair in pairs:
+        key, value = pair.split("=", 1)
+        out[key] = {"True": True, "False": False}.get(value, value)
+    return out
+
+
+def import_asset(path, options=()):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     ext = os.path.splitext(path)[1].lower()
+    kwargs = import_options(options)
     if ext in (".glb", ".gltf"):
-        bpy.ops.import_scene.gltf(filepath=path)
+        bpy.ops.import_scene.gltf(filepath=path, **kwargs)
     elif ext == ".fbx":
-        bpy.ops.import_scene.fbx(filepath=path)
+        bpy.ops.import_scene.fbx(filepath=path, **kwargs)
     else:
         raise SystemExit("blender_roundtrip: unknown asset type: " + path)
     arms = [o for o in bpy.data.objects if o.type == "ARMATURE"]
@@ -317,7 +329,7 @@ def main():
     model, v_shaped, rest_joints, header, ref = load_truth(args)
     k = len(model["parents"])
     names, parents = model_math.joint_names(k), list(model["parents"])
-    arm, mesh_obj = import_asset(args.asset)
+    arm, mesh_obj = import_asset(args.asset, args.import_option)
     meta = check_metadata(args.asset, names, parents)
     m = int(meta.get("max_influences", header["max_influences"] if header else 4))
     check_skeleton(arm, names, parents)

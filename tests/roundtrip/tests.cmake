@@ -58,10 +58,15 @@ function(smpl_roundtrip_reference name model m betas)
     FIXTURES_SETUP roundtrip_ref_${name}_m${m} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
 endfunction()
 
-# smpl_roundtrip_case(<name> <format> <model> <M> <betas> [SUFFIX s] [EXPORT_ARGS ...]):
-# export, then Blender.
+# smpl_roundtrip_case(<name> <format> <model> <M> <betas> [SUFFIX s] [EXPORT_ARGS ...]
+#                     [IMPORT_ARGS key=value ...]): export, then Blender (IMPORT_ARGS
+# are passed to Blender's importer, e.g. automatic_bone_orientation=True).
 function(smpl_roundtrip_case name format model m betas)
-  cmake_parse_arguments(RT "" "SUFFIX" "EXPORT_ARGS" ${ARGN})
+  cmake_parse_arguments(RT "" "SUFFIX" "EXPORT_ARGS;IMPORT_ARGS" ${ARGN})
+  set(import_args)
+  foreach(option ${RT_IMPORT_ARGS})
+    list(APPEND import_args --import-option ${option})
+  endforeach()
   set(case ${name}_m${m}_${format}${RT_SUFFIX})
   set(asset ${SMPL_ROUNDTRIP_DIR}/${case}.${format})
   set(numpy_model)
@@ -75,7 +80,7 @@ function(smpl_roundtrip_case name format model m betas)
     COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_roundtrip.py --
             --asset ${asset} --addon-dir ${PROJECT_SOURCE_DIR}/blender
             --reference ${SMPL_ROUNDTRIP_DIR}/${name}_m${m}_ref
-            --betas=${betas} --label ${name} --tol 1e-5 ${numpy_model})
+            --betas=${betas} --label ${name} --tol 1e-5 ${numpy_model} ${import_args})
   set_tests_properties(roundtrip.export.${case} PROPERTIES
     FIXTURES_SETUP roundtrip_${case} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
   set_tests_properties(roundtrip.blender.${case} PROPERTIES
@@ -120,7 +125,16 @@ if(SMPL_ROUNDTRIP_FBX)
   # Centimetre FBX: the importer scales the armature object; C must not care.
   smpl_roundtrip_case(smpl_small fbx ${SMPL_FIXTURE_DIR}/models/smpl_small.npz 4
                       ${SMPL_RT_BETAS} SUFFIX _cm EXPORT_ARGS --fbx-units cm)
+  # Bones re-oriented on import: the runtime formula must not care.
+  foreach(name smpl_small smplx_small)
+    smpl_roundtrip_case(${name} fbx ${SMPL_FIXTURE_DIR}/models/${name}.npz 8 ${SMPL_RT_BETAS}
+                        SUFFIX _autobones IMPORT_ARGS automatic_bone_orientation=True)
+  endforeach()
 endif()
+foreach(heuristic TEMPERANCE FORTUNE)
+  smpl_roundtrip_case(smplx_small glb ${SMPL_FIXTURE_DIR}/models/smplx_small.npz 8 ${SMPL_RT_BETAS}
+                      SUFFIX _${heuristic} IMPORT_ARGS bone_heuristic=${heuristic})
+endforeach()
 
 # --- Khronos validator over every GLB the round trip writes (npm install is
 # done beforehand by the CI script in tests/validator).
