@@ -2,8 +2,12 @@
 
 #include <zlib.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <limits>
+#include <thread>
+#include <unordered_map>
 
 namespace smpl {
 namespace {
@@ -39,39 +43,69 @@ std::string encodeScalar(T v) {
   return s;
 }
 
-// Array payload: count, encoding (0 raw, 1 zlib), byte length, data.
+// Array payload: count, encoding (0 raw, 1 zlib), byte length, data. Large
+// arrays keep count + raw bytes and are deflated later by deflateAll().
 template <class T>
 FbxProperty encodeArray(char type, const std::vector<T>& values) {
-  std::string raw;
-  raw.reserve(values.size() * sizeof(T));
-  for (const T& v : values) putLE(raw, v);
   std::string payload;
+  payload.reserve(12 + values.size() * sizeof(T));
   putLE(payload, static_cast<uint32_t>(values.size()));
-  if (raw.size() <= kFbxCompressThreshold) {
+  const bool deflate = values.size() * sizeof(T) > kFbxCompressThreshold;
+  if (!deflate) {
     putLE(payload, uint32_t(0));
-    putLE(payload, static_cast<uint32_t>(raw.size()));
-    payload += raw;
-    return FbxProperty{type, std::move(payload)};
+    putLE(payload, static_cast<uint32_t>(values.size() * sizeof(T)));
   }
-  uLongf bound = compressBound(static_cast<uLong>(raw.size()));
+  for (const T& v : values) putLE(payload, v);
+  return FbxProperty{type, std::move(payload), deflate};
+}
+
+// count + raw -> count, encoding 1, compressed length, zlib stream (raw
+// storage if zlib fails, which it only does when out of memory).
+std::string deflatePayload(const std::string& pending) {
+  const Bytef* raw = reinterpret_cast<const Bytef*>(pending.data() + 4);
+  const uLong raw_size = static_cast<uLong>(pending.size() - 4);
+  uLongf bound = compressBound(raw_size);
+  std::string out = pending.substr(0, 4);
   std::string packed(bound, '\0');
-  int rc = compress2(reinterpret_cast<Bytef*>(&packed[0]), &bound,
-                     reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()),
-                     kFbxZlibLevel);
-  if (rc != Z_OK) {  // only on out-of-memory: fall back to raw storage
-    putLE(payload, uint32_t(0));
-    putLE(payload, static_cast<uint32_t>(raw.size()));
-    payload += raw;
-    return FbxProperty{type, std::move(payload)};
+  if (compress2(reinterpret_cast<Bytef*>(&packed[0]), &bound, raw, raw_size, kFbxZlibLevel) != Z_OK) {
+    putLE(out, uint32_t(0));
+    putLE(out, static_cast<uint32_t>(raw_size));
+    return out + pending.substr(4);
   }
   packed.resize(bound);
-  putLE(payload, uint32_t(1));
-  putLE(payload, static_cast<uint32_t>(packed.size()));
-  payload += packed;
-  return FbxProperty{type, std::move(payload)};
+  putLE(out, uint32_t(1));
+  putLE(out, static_cast<uint32_t>(packed.size()));
+  return out + packed;
+}
+
+void collectDeflates(const FbxNode& n, std::vector<const FbxProperty*>* pending) {
+  for (const FbxProperty& p : n.properties)
+    if (p.deflate) pending->push_back(&p);
+  for (const FbxNode& child : n.children) collectDeflates(child, pending);
+}
+
+// Compress every deferred array on all cores; the result is independent of
+// the thread count (each array is compressed on its own).
+std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector<FbxNode>& top) {
+  std::vector<const FbxProperty*> pending;
+  for (const FbxNode& n : top) collectDeflates(n, &pending);
+  std::vector<std::string> done(pending.size());
+  std::atomic<size_t> next{0};
+  auto work = [&] {
+    for (size_t i; (i = next++) < pending.size();) done[i] = deflatePayload(pending[i]->payload);
+  };
+  const size_t threads = std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size());
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  std::unordered_map<const FbxProperty*, std::string> out;
+  for (size_t i = 0; i < pending.size(); ++i) out.emplace(pending[i], std::move(done[i]));
+  return out;
 }
 
 struct Encoder {
+  const std::unordered_map<const FbxProperty*, std::string>* deflated = nullptr;
   bool wide = false;  // 64-bit record headers (7500+)
   std::string out;
   std::string error;
@@ -94,6 +128,8 @@ struct Encoder {
 
   void nullRecord() { out.append(headerSize() + 1, '\0'); }
 
+  const std::string& payloadOf(const FbxProperty& p) const { return p.deflate ? deflated->at(&p) : p.payload; }
+
   bool node(const FbxNode& n) {
     if (n.name.empty() || n.name.size() > 255) {
       error = "FBX node name '" + n.name.substr(0, 40) + "' must be 1..255 bytes";
@@ -101,7 +137,7 @@ struct Encoder {
     }
     size_t header_at = out.size();
     uint64_t prop_bytes = 0;
-    for (const FbxProperty& p : n.properties) prop_bytes += 1 + p.payload.size();
+    for (const FbxProperty& p : n.properties) prop_bytes += 1 + payloadOf(p).size();
     putHeaderField(0);  // end offset, patched below
     putHeaderField(n.properties.size());
     putHeaderField(prop_bytes);
@@ -109,7 +145,7 @@ struct Encoder {
     out += n.name;
     for (const FbxProperty& p : n.properties) {
       out.push_back(p.type);
-      out += p.payload;
+      out += payloadOf(p);
     }
     for (const FbxNode& child : n.children)
       if (!node(child)) return false;
@@ -199,7 +235,9 @@ Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version)
   if (version < 7000 || version >= 8000)
     return makeError("FBX: unsupported version " + std::to_string(version) +
                      "; expected 7400 or 7500");
+  const std::unordered_map<const FbxProperty*, std::string> deflated = deflateAll(top);
   Encoder enc;
+  enc.deflated = &deflated;
   enc.wide = version >= 7500;
   enc.out.append(kMagic, kMagicSize);
   putLE(enc.out, version);

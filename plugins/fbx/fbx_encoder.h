@@ -13,7 +13,9 @@
 //
 // Property payloads are encoded when added, so a node owns its bytes and the
 // encoder only lays them out. Arrays larger than 128 bytes are zlib
-// compressed at a fixed level (deterministic for a given zlib).
+// compressed at a fixed level (deterministic for a given zlib); that
+// compression is deferred to encodeFbx(), which runs it on all cores (it is
+// most of the time of a file with hundreds of blend shapes).
 //
 //   FbxNode root;
 //   FbxNode& n = root.add("Vertices");
@@ -30,8 +32,9 @@
 namespace smpl {
 
 struct FbxProperty {
-  char type = 0;        // C Y I L F D S R f d l i b
-  std::string payload;  // encoded bytes after the type code
+  char type = 0;         // C Y I L F D S R f d l i b
+  std::string payload;   // encoded bytes after the type code
+  bool deflate = false;  // payload is count + raw array bytes, compressed by encodeFbx()
 };
 
 struct FbxNode {

@@ -95,10 +95,20 @@ TEST(FbxEncoder, ScalarAndSmallArrayPayloads) {
 TEST(FbxEncoder, LargeArraysAreZlibCompressed) {
   std::vector<double> values(100);
   for (size_t i = 0; i < values.size(); ++i) values[i] = 0.5 * double(i);
-  FbxNode n("N");
-  n.addDoubleArray(values);
-  const std::string& p = n.properties[0].payload;
-  ASSERT_GE(p.size(), 12u);
+  std::vector<FbxNode> top(1, FbxNode("N"));
+  top[0].addDoubleArray(values);
+  // Compression happens in encodeFbx(): read the property back from the file.
+  // Layout: 27-byte header, then node "N" (3 x uint32 header fields, name
+  // length, name), then the type code 'd' and the payload.
+  Result<std::string> file = encodeFbx(top, 7400);
+  ASSERT_TRUE(file.ok()) << file.message();
+  const size_t at = 27 + 12 + 1 + 1;
+  ASSERT_EQ((*file)[at], 'd');
+  uint32_t end_offset, payload_length;
+  std::memcpy(&end_offset, file->data() + 27, 4);
+  std::memcpy(&payload_length, file->data() + at + 1 + 8, 4);
+  const std::string p = file->substr(at + 1, 12 + payload_length);
+  EXPECT_EQ(end_offset, at + 1 + p.size());  // the node ends right after its one property
   uint32_t count, encoding, length;
   std::memcpy(&count, p.data(), 4);
   std::memcpy(&encoding, p.data() + 4, 4);
