@@ -1,5 +1,5 @@
 // smpl-bench: prints the speed and size table of the product (issue "Speed and
-// size"). Full-size synthetic models (bench/synthetic_model.h) stand in for the
+// size"). --compact: only the compact glTF table. Full-size synthetic models (bench/synthetic_model.h) stand in for the
 // licensed ones. Usage: smpl-bench [--quick] [--anim-minutes M]
 #include <algorithm>
 #include <chrono>
@@ -10,11 +10,13 @@
 
 #include "bench/synthetic_model.h"
 #include "core/forward.h"
+#include "core/demo_body.h"
 #include "core/forward_batch.h"
 #include "core/motion.h"
 #include "core/pose_sampler.h"
 #include "exporter/animation.h"
 #include "exporter/pipeline.h"
+#include "plugins/gltf/morph_error.h"
 #include "plugins/writer.h"
 
 using namespace smpl;
@@ -56,6 +58,38 @@ void benchExport(const BodyModel& model, int repeats) {
       bytes = out.ok() ? out->size() : 0;
     });
     std::printf("| %-14s | write %-5s | %9.1f ms | %6.2f MB |\n", model.name.c_str(), ext + 1, ms, bytes / 1e6);
+  }
+}
+
+// Compact glTF encodings (README "Size"): size, write time and the max vertex
+// error each adds over 32 seeded poses (plugins/gltf/morph_error.h).
+void benchCompact(const BodyModel& model, int repeats) {
+  Result<Asset> asset = buildAsset(model, ExportOptions());
+  if (!asset) return (void)std::printf("| %-14s | %s |\n", model.name.c_str(), asset.message().c_str());
+  struct Encoding {
+    const char* name;
+    double epsilon;
+    bool quantize, draco;
+  };
+  const Encoding encodings[] = {{"float", 0, false, false},          {"sparse 1e-5", 1e-5, false, false},
+                                {"sparse 1e-4", 1e-4, false, false}, {"quantized", 0, true, false},
+                                {"sparse 1e-5+quant", 1e-5, true, false}, {"draco", 0, false, true},
+                                {"sparse 1e-5+quant+draco", 1e-5, true, true}};
+  const Writer* w = writerForPath("x.glb");
+  for (const Encoding& e : encodings) {
+    WriterOptions o;
+    o.morph_epsilon = e.epsilon;
+    o.quantize_morphs = e.quantize;
+    o.draco = e.draco;
+    std::string bytes;
+    const double ms = timeMs(repeats, [&] {
+      Result<std::string> out = w->serialize(*asset, o);
+      bytes = out.ok() ? *out : std::string();
+    });
+    Result<DecodedMorphs> decoded = decodeMorphs(bytes);
+    Result<double> err = decoded ? morphError(*decoded, *asset) : Result<double>(decoded.error());
+    std::printf("| %-14s | %-24s | %7.2f MB | %7.1f ms | %9.3g m |%s\n", model.name.c_str(), e.name,
+                bytes.size() / 1e6, ms, err ? *err : -1.0, err ? "" : err.message().c_str());
   }
 }
 
@@ -108,16 +142,25 @@ void benchAnimation(const BodyModel& model, double minutes) {
 int main(int argc, char** argv) {
   bool quick = false;
   double minutes = 10;
+  bool compact_only = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--compact")) compact_only = true;
     else if (!std::strcmp(argv[i], "--anim-minutes") && i + 1 < argc) minutes = std::atof(argv[++i]);
-    else return std::fprintf(stderr, "usage: smpl-bench [--quick] [--anim-minutes M]\n"), 1;
+    else return std::fprintf(stderr, "usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"), 1;
   }
   std::printf("smpl-bench: %u hardware threads%s\n\n", std::thread::hardware_concurrency(), quick ? " (quick)" : "");
   const BodyModel smpl = syntheticModel(ModelKind::Smpl, 6890, 10, 0, 1);
+  if (compact_only) {  // only the compact glTF table
+    std::printf("Compact glTF (write time median of 5; error: max added vertex error, 32 poses)\n");
+    for (const BodyModel* m : {&demoBody(), &smpl}) benchCompact(*m, 5);
+    return 0;
+  }
   const BodyModel smplx = syntheticModel(ModelKind::SmplX, 10475, 300, 100, 2);
   std::printf("Export (median of %d)\n", quick ? 1 : 5);
   for (const BodyModel* m : {&smpl, &smplx}) benchExport(*m, quick ? 1 : 5);
+  std::printf("\nCompact glTF (write time median of %d; error: max added vertex error, 32 poses)\n", quick ? 3 : 5);
+  for (const BodyModel* m : {&demoBody(), &smpl}) benchCompact(*m, quick ? 3 : 5);
   std::printf("\nForward pass\n");
   for (const BodyModel* m : {&smpl, &smplx}) benchForward(*m, quick ? 100 : 1000);
   std::printf("\nAnimation bake (SMPL-H motion on the SMPL-sized model)\n");

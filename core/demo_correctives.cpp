@@ -14,19 +14,11 @@
 
 #include "core/demo_body_internal.h"
 #include "core/forward.h"
+#include "core/pose_sampler.h"
 
 namespace smpl {
 namespace demo {
 namespace {
-
-uint64_t splitmix64(uint64_t* state) {
-  uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-double uniform(uint64_t* state) { return (splitmix64(state) >> 11) * (1.0 / 9007199254740992.0); }
 
 // Per-joint range of each axis-angle component (radians): wide at hips,
 // knees, shoulders and elbows, narrow along the spine and at the hands.
@@ -122,7 +114,7 @@ std::vector<Eigen::VectorXd> sampleDemoPoses(int count, uint64_t seed) {
   uint64_t state = seed;
   std::vector<Eigen::VectorXd> poses(count, Eigen::VectorXd(3 * kNumJoints));
   for (Eigen::VectorXd& pose : poses)
-    for (int i = 0; i < 3 * kNumJoints; ++i) pose[i] = (2.0 * uniform(&state) - 1.0) * kPoseRange[i / 3];
+    for (int i = 0; i < 3 * kNumJoints; ++i) pose[i] = (2.0 * uniform01(&state) - 1.0) * kPoseRange[i / 3];
   return poses;
 }
 

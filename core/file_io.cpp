@@ -115,4 +115,9 @@ std::string baseName(const std::string& path) {
   return path.substr(begin, end + 1 - begin);
 }
 
+bool hasSuffix(const std::string& path, const std::string& suffix) {
+  return path.size() >= suffix.size() &&
+         path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 }  // namespace smpl

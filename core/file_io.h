@@ -21,4 +21,8 @@ inline Status writeFileAtomic(const std::string& path, const std::string& bytes)
 // Last path component, used to name files in errors.
 std::string baseName(const std::string& path);
 
+// True if `path` ends with `suffix` (".json", ".npy", "/"), to tell file and
+// archive member kinds apart by name.
+bool hasSuffix(const std::string& path, const std::string& suffix);
+
 }  // namespace smpl

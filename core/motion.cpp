@@ -11,10 +11,6 @@
 namespace smpl {
 namespace {
 
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // Nested rectangular JSON number arrays -> Array (shape inferred, C order).
 Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
   if (j.is_number()) {
@@ -138,7 +134,7 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fall
 }  // namespace
 
 Result<Motion> loadMotion(const std::string& path, double fps_fallback) {
-  Result<ArrayDict> arrays = endsWith(path, ".json") ? readJsonArrays(path) : readNpzFile(path);
+  Result<ArrayDict> arrays = hasSuffix(path, ".json") ? readJsonArrays(path) : readNpzFile(path);
   if (!arrays) return arrays.error();
   const ArrayDict& d = *arrays;
   Motion m;

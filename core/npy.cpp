@@ -6,13 +6,13 @@
 // allocation: the element count must fit the bytes actually present.
 #include "core/npy.h"
 
-#include <cmath>
 #include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
 
 #include "core/file_io.h"
+#include "core/numpy_dtype.h"
 
 namespace smpl {
 namespace {
@@ -20,7 +20,6 @@ namespace {
 constexpr size_t kMagicBytes = 6;
 constexpr size_t kMaxHeaderBytes = 1 << 20;  // numpy itself refuses > 10000 by default
 constexpr size_t kMaxDims = 64;              // numpy's NPY_MAXDIMS (2.x); 1.x uses 32
-constexpr size_t kMaxStringChars = 1 << 26;  // characters per string element
 
 struct NpyHeader {
   std::string descr;
@@ -28,20 +27,6 @@ struct NpyHeader {
   std::vector<int64_t> shape;
   bool has_descr = false, has_order = false, has_shape = false;
 };
-
-// Element type decoded from a descr such as "<f8" or "|S6".
-struct DType {
-  char kind = 0;        // 'f', 'i', 'u', 'b', 'U', 'S'
-  size_t itemsize = 0;  // bytes per element
-  bool big_endian = false;
-};
-
-bool hostIsBigEndian() {
-  const uint16_t one = 1;
-  uint8_t first;
-  std::memcpy(&first, &one, 1);
-  return first == 0;
-}
 
 // ---- header dict: a Python literal with string keys ----------------------
 
@@ -167,7 +152,7 @@ Result<NpyHeader> parseHeaderDict(const std::string& text, const std::string& ct
   return h;
 }
 
-// ---- preamble and dtype ----------------------------------------------------
+// ---- preamble ----------------------------------------------------------------
 
 // Checks magic and version; returns the header text and sets `data_offset`.
 Result<std::string> readPreamble(const uint8_t* data, size_t size, const std::string& ctx,
@@ -192,203 +177,6 @@ Result<std::string> readPreamble(const uint8_t* data, size_t size, const std::st
   return std::string(reinterpret_cast<const char*>(data) + 8 + len_bytes, header_len);
 }
 
-Result<size_t> descrItemCount(const std::string& digits, const std::string& descr,
-                              const std::string& ctx) {
-  if (digits.empty() || digits.size() > 9 ||
-      digits.find_first_not_of("0123456789") != std::string::npos)
-    return makeError(ctx + ": unsupported dtype '" + descr + "'");
-  return static_cast<size_t>(std::stoll(digits));
-}
-
-bool validItemSize(char kind, size_t n) {
-  if (kind == 'f') return n == 2 || n == 4 || n == 8;
-  if (kind == 'i' || kind == 'u') return n == 1 || n == 2 || n == 4 || n == 8;
-  if (kind == 'b') return n == 1;
-  if (kind == 'S' || kind == 'U') return n >= 1 && n <= kMaxStringChars;
-  return false;
-}
-
-Result<DType> parseDescr(const std::string& descr, const std::string& ctx) {
-  if (descr.size() < 2 || std::string("<>|=").find(descr[0]) == std::string::npos)
-    return makeError(ctx + ": unsupported dtype '" + descr + "'");
-  const char order = descr[0], kind = descr[1];
-  if (kind == 'O')
-    return makeError(ctx + ": object arrays ('" + descr +
-                     "') are not supported; save a numeric array");
-  if (kind == 'V')
-    return makeError(ctx + ": structured/void dtype '" + descr + "' is not supported");
-  Result<size_t> n = descrItemCount(descr.substr(2), descr, ctx);
-  if (!n) return n.error();
-  // 'U' counts characters of 4-byte UTF-32 code units; all others count bytes.
-  DType t{kind, kind == 'U' ? *n * 4 : *n, order == '>' || (order == '=' && hostIsBigEndian())};
-  if (!validItemSize(kind, *n)) return makeError(ctx + ": unsupported dtype '" + descr + "'");
-  if (order == '|' && t.itemsize > 1 && kind != 'S')
-    return makeError(ctx + ": dtype '" + descr + "' needs a byte order");
-  return t;
-}
-
-// Product of the dimensions, or an error if it (or its byte size) overflows.
-// Dimensions are checked even when one of them is 0, so Array::size() of any
-// returned array cannot overflow either.
-Result<size_t> elementCount(const std::vector<int64_t>& shape, size_t itemsize,
-                            const std::string& ctx) {
-  const uint64_t limit = static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) / itemsize;
-  uint64_t nonzero = 1;
-  bool empty = false;
-  for (int64_t d : shape) {
-    if (d == 0)
-      empty = true;
-    else if (static_cast<uint64_t>(d) > limit / nonzero)
-      return makeError(ctx + ": shape " + shapeString(shape) + " is too large");
-    else
-      nonzero *= static_cast<uint64_t>(d);
-  }
-  if (nonzero > std::numeric_limits<size_t>::max() / itemsize)
-    return makeError(ctx + ": shape " + shapeString(shape) + " is too large");
-  return empty ? size_t{0} : static_cast<size_t>(nonzero);
-}
-
-// ---- element conversion ------------------------------------------------------
-
-uint64_t loadUnsigned(const uint8_t* p, size_t n, bool big) {
-  uint64_t v = 0;
-  for (size_t i = 0; i < n; ++i) v |= static_cast<uint64_t>(p[big ? n - 1 - i : i]) << (8 * i);
-  return v;
-}
-
-double halfToDouble(uint16_t h) {
-  const int sign = h >> 15, exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
-  double v;
-  if (exponent == 0)
-    v = std::ldexp(mantissa, -24);  // zero and subnormals
-  else if (exponent == 31)
-    v = mantissa ? std::numeric_limits<double>::quiet_NaN()
-                 : std::numeric_limits<double>::infinity();
-  else
-    v = std::ldexp(mantissa + 1024, exponent - 25);
-  return sign ? -v : v;
-}
-
-double loadNumber(const uint8_t* p, const DType& t) {
-  const uint64_t bits = loadUnsigned(p, t.itemsize, t.big_endian);
-  switch (t.kind) {
-    case 'b':
-      return bits != 0 ? 1.0 : 0.0;
-    case 'u':
-      return static_cast<double>(bits);
-    case 'i': {
-      const unsigned shift = 64 - 8 * static_cast<unsigned>(t.itemsize);
-      return static_cast<double>(static_cast<int64_t>(bits << shift) >> shift);  // sign-extend
-    }
-    default:
-      break;  // 'f'
-  }
-  if (t.itemsize == 2) return halfToDouble(static_cast<uint16_t>(bits));
-  if (t.itemsize == 4) {
-    const uint32_t b32 = static_cast<uint32_t>(bits);
-    float f;
-    std::memcpy(&f, &b32, 4);
-    return f;
-  }
-  double d;
-  std::memcpy(&d, &bits, 8);
-  return d;
-}
-
-std::vector<double> convertNumbers(const uint8_t* p, size_t count, const DType& t) {
-  std::vector<double> out(count);
-  for (size_t i = 0; i < count; ++i) out[i] = loadNumber(p + i * t.itemsize, t);
-  return out;
-}
-
-bool appendUtf8(uint32_t cp, std::string& out) {
-  if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return false;
-  if (cp < 0x80) {
-    out += static_cast<char>(cp);
-  } else if (cp < 0x800) {
-    out += static_cast<char>(0xC0 | (cp >> 6));
-    out += static_cast<char>(0x80 | (cp & 0x3F));
-  } else if (cp < 0x10000) {
-    out += static_cast<char>(0xE0 | (cp >> 12));
-    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (cp & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (cp >> 18));
-    out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (cp & 0x3F));
-  }
-  return true;
-}
-
-// numpy pads both 'S' and 'U' elements with NULs and strips them on access.
-Result<std::string> convertString(const uint8_t* p, const DType& t, const std::string& ctx) {
-  if (t.kind == 'S') {
-    size_t n = t.itemsize;
-    while (n > 0 && p[n - 1] == 0) --n;
-    return std::string(reinterpret_cast<const char*>(p), n);
-  }
-  size_t n = t.itemsize / 4;
-  while (n > 0 && loadUnsigned(p + 4 * (n - 1), 4, t.big_endian) == 0) --n;
-  std::string out;
-  for (size_t i = 0; i < n; ++i) {
-    const uint32_t cp = static_cast<uint32_t>(loadUnsigned(p + 4 * i, 4, t.big_endian));
-    if (!appendUtf8(cp, out))
-      return makeError(ctx + ": invalid unicode code point " + std::to_string(cp) + " in a string");
-  }
-  return out;
-}
-
-Result<std::vector<std::string>> convertStrings(const uint8_t* p, size_t count, const DType& t,
-                                                const std::string& ctx) {
-  std::vector<std::string> out;
-  out.reserve(count);
-  for (size_t i = 0; i < count; ++i) {
-    Result<std::string> s = convertString(p + i * t.itemsize, t, ctx);
-    if (!s) return s.error();
-    out.push_back(std::move(*s));
-  }
-  return out;
-}
-
-// Fortran (column-major) element order to C order: walk the C-order index
-// like an odometer and track the matching Fortran offset.
-template <class T>
-std::vector<T> fortranToC(std::vector<T> in, const std::vector<int64_t>& shape) {
-  if (shape.size() < 2 || in.empty()) return in;
-  const size_t nd = shape.size();
-  std::vector<size_t> stride(nd, 1), idx(nd, 0);
-  for (size_t k = 1; k < nd; ++k) stride[k] = stride[k - 1] * static_cast<size_t>(shape[k - 1]);
-  std::vector<T> out;
-  out.reserve(in.size());
-  size_t src = 0;
-  for (size_t i = 0; i < in.size(); ++i) {
-    out.push_back(std::move(in[src]));
-    for (size_t k = nd; k-- > 0;) {
-      if (++idx[k] < static_cast<size_t>(shape[k])) {
-        src += stride[k];
-        break;
-      }
-      src -= stride[k] * (idx[k] - 1);
-      idx[k] = 0;
-    }
-  }
-  return out;
-}
-
-Status fillElements(const uint8_t* p, size_t count, const DType& t, bool fortran, Array& a,
-                    const std::string& ctx) {
-  if (t.kind == 'S' || t.kind == 'U') {
-    Result<std::vector<std::string>> s = convertStrings(p, count, t, ctx);
-    if (!s) return s.error();
-    a.strings = fortran ? fortranToC(std::move(*s), a.shape) : std::move(*s);
-  } else {
-    std::vector<double> v = convertNumbers(p, count, t);
-    a.data = fortran ? fortranToC(std::move(v), a.shape) : std::move(v);
-  }
-  return Status();
-}
-
 }  // namespace
 
 Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& context) {
@@ -398,20 +186,16 @@ Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& cont
   if (!text) return text.error();
   Result<NpyHeader> h = parseHeaderDict(*text, context);
   if (!h) return h.error();
-  Result<DType> t = parseDescr(h->descr, context);
+  Result<NumpyDtype> t = parseNumpyDescr(h->descr, context);
   if (!t) return t.error();
-  Result<size_t> count = elementCount(h->shape, t->itemsize, context);
-  if (!count) return count.error();
-  const size_t need = *count * t->itemsize, have = size - offset;
-  if (have < need)
-    return makeError(context + ": truncated data: expected " + std::to_string(need) +
+  Result<size_t> need = numpyByteCount(*t, h->shape, context);
+  if (!need) return need.error();
+  const size_t have = size - offset;
+  if (have < *need)
+    return makeError(context + ": truncated data: expected " + std::to_string(*need) +
                      " bytes, found " + std::to_string(have));
-  Array a;
-  a.shape = h->shape;
-  a.dtype = h->descr;
-  if (Status st = fillElements(data + offset, *count, *t, h->fortran_order, a, context); !st)
-    return st.error();
-  return a;
+  // Like numpy.load, read the bytes the header promises and ignore any after them.
+  return decodeNumpyArray(data + offset, *need, *t, h->shape, h->fortran_order, context);
 }
 
 Result<Array> readNpyFile(const std::string& path) {

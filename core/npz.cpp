@@ -13,14 +13,9 @@
 namespace smpl {
 namespace {
 
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 // np.load's NpzFile drops ".npy" from member names to form the keys.
 std::string keyOf(const std::string& member) {
-  return endsWith(member, ".npy") ? member.substr(0, member.size() - 4) : member;
+  return hasSuffix(member, ".npy") ? member.substr(0, member.size() - 4) : member;
 }
 
 }  // namespace
@@ -30,7 +25,7 @@ Result<ArrayDict> parseNpz(const uint8_t* data, size_t size, const std::string& 
   if (!entries) return entries.error();
   ArrayDict arrays;
   for (ZipEntry& e : *entries) {
-    if (endsWith(e.name, "/") && e.data.empty()) continue;  // directory entry
+    if (hasSuffix(e.name, "/") && e.data.empty()) continue;  // directory entry
     const std::string key = keyOf(e.name);
     if (arrays.count(key))
       return makeError(context + "/" + e.name + ": duplicate member '" + key + "'");

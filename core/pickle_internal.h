@@ -78,9 +78,6 @@ class Heap {
   uint64_t limit_;
 };
 
-// Encode one code point as UTF-8 (surrogates kept, as Python's surrogatepass).
-void appendUtf8(std::string* out, uint32_t cp);
-
 // Name of an object's type for errors ("list", "numpy.ndarray", ...).
 std::string typeName(const Heap& heap, Ref r);
 

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "core/pickle_internal.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace pickle {

@@ -56,22 +56,30 @@ Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::s
   return Status();
 }
 
-// Morph target index of each corrective layout entry (by name: the layout is the contract).
+// Morph target index of each corrective layout entry, then of each basis
+// target (by name: the layout is the contract).
 std::vector<int> correctiveTargets(const Asset& asset) {
   std::map<std::string, int> index;
   for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i) index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
   std::vector<int> targets;
   for (const CorrectiveLayout& c : asset.metadata.correctives) targets.push_back(index.at(c.target));
+  for (const std::string& name : asset.metadata.corrective_basis.targets) targets.push_back(index.at(name));
   return targets;
 }
 
-// Weight of each morph target per frame: correctives get scale * f + offset; others stay 0.
+// Weight of each morph target per frame: correctives get scale * f + offset,
+// basis targets scale_k (C f)_k + offset_k; others stay 0.
 void fillMorphWeights(const Asset& asset, const std::vector<int>& targets, const Rotations& rotations,
                       Eigen::MatrixXf* weights, int frame) {
   const Eigen::VectorXd f = poseFeatures(rotations);
   const auto& correctives = asset.metadata.correctives;
   for (size_t i = 0; i < correctives.size(); ++i)
     (*weights)(frame, targets[i]) = static_cast<float>(correctives[i].scale * f[correctives[i].feature] + correctives[i].offset);
+  const CorrectiveBasis& basis = asset.metadata.corrective_basis;
+  if (basis.targets.empty()) return;
+  const Eigen::VectorXd w = basis.projection * f;
+  for (size_t k = 0; k < basis.targets.size(); ++k)
+    (*weights)(frame, targets[correctives.size() + k]) = static_cast<float>(basis.scale[k] * w[k] + basis.offset[k]);
 }
 
 }  // namespace

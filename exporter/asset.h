@@ -45,6 +45,15 @@ struct CorrectiveLayout {
   double offset = 0.0;
 };
 
+// --corrective-basis K (exporter/corrective_basis.h): K morph targets replace
+// the per-feature correctives; weight_k = scale_k * (projection f)_k + offset_k.
+struct CorrectiveBasis {
+  std::vector<std::string> targets;     // K morph target names pose_basis_<k>
+  Eigen::MatrixXd projection;           // K x P (C); 0 rows = no basis (per-feature layout)
+  std::vector<double> scale;            // K
+  std::vector<double> offset;           // K
+};
+
 struct AnimationClip {
   std::string name;
   double fps = 30.0;
@@ -60,10 +69,11 @@ struct AssetMetadata {
   std::string exporter_version;
   std::vector<double> betas;
   std::vector<double> expression;
-  std::vector<CorrectiveLayout> correctives;
+  std::vector<CorrectiveLayout> correctives;  // empty when corrective_basis is used
   int max_influences = 4;
   std::string units = "meters";
   std::string up_axis = "+Y";
+  CorrectiveBasis corrective_basis;     // last: keeps aggregate initialisers of the fields above valid
 };
 
 struct Asset {

@@ -9,6 +9,7 @@
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
+#include "plugins/gltf/morph_scales.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -95,6 +96,9 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   ExportReport report;
   if (Status st = bakeMotions(model, s, job, *motions, &*asset, &report); !st)
     return fail(failure, kExitExport, "exporting", job.out, st.message());
+  // Quantized targets carry their scale in the weight mapping: fold it here so
+  // the sidecar and the file agree.
+  if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
   Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
   if (!bytes) return fail(failure, kExitExport, "exporting", job.out, bytes.message());
   if (Status st = writeOutputs(job.out, *bytes, metadataJson(*asset)); !st)

@@ -1,6 +1,14 @@
 // The metadata object of DESIGN.md, serialised with nlohmann::ordered_json so
 // keys keep the documented order and doubles print as the shortest text that
 // reads back to the same value.
+//
+// With --corrective-basis K (corrective_basis.h) "correctives" is empty and
+//   "corrective_basis": {"targets": ["pose_basis_0", ...],   K morph target names
+//                        "features": P,                      pose features per row
+//                        "matrix": [...],                    C, K x P, row-major
+//                        "scale": [...], "offset": [...]}    K each
+// drives target k with weight_k = scale_k * sum_n matrix[k P + n] f[n] + offset_k
+// (f of DESIGN.md). The key is absent without a basis.
 #include "exporter/metadata_json.h"
 
 #include <nlohmann/json.hpp>
@@ -21,6 +29,19 @@ Json correctivesJson(const std::vector<CorrectiveLayout>& correctives) {
     list.push_back(std::move(entry));
   }
   return list;
+}
+
+Json basisJson(const CorrectiveBasis& basis) {
+  Json o = Json::object();
+  o["targets"] = basis.targets;
+  o["features"] = basis.projection.cols();
+  Json matrix = Json::array();
+  for (Eigen::Index k = 0; k < basis.projection.rows(); ++k)
+    for (Eigen::Index n = 0; n < basis.projection.cols(); ++n) matrix.push_back(basis.projection(k, n));
+  o["matrix"] = std::move(matrix);
+  o["scale"] = basis.scale;
+  o["offset"] = basis.offset;
+  return o;
 }
 
 Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
@@ -45,6 +66,7 @@ std::string metadataJson(const Asset& asset) {
   o["units"] = m.units;
   o["up_axis"] = m.up_axis;
   o["correctives"] = correctivesJson(m.correctives);
+  if (!m.corrective_basis.targets.empty()) o["corrective_basis"] = basisJson(m.corrective_basis);
   o["morph_targets"] = morphTargetNamesJson(asset.mesh.morph_targets);
   // Names come from model files: replace invalid UTF-8 instead of throwing
   // (nlohmann's default), so a hostile name cannot abort the export.

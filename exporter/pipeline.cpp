@@ -6,6 +6,7 @@
 
 #include "core/forward.h"
 #include "core/skin_weights.h"
+#include "exporter/corrective_basis.h"
 #include "exporter/uv_obj.h"
 
 namespace smpl {
@@ -30,6 +31,12 @@ Status checkOptions(const BodyModel& model, const ExportOptions& o) {
   if (o.expression_keys < 0 || o.expression_keys > model.numExpressions())
     return makeError("--expression-keys " + std::to_string(o.expression_keys) + ": the model has " +
                      std::to_string(model.numExpressions()) + " expression directions");
+  if (o.corrective_basis < 0 || o.corrective_basis > model.numPoseFeatures())
+    return makeError("--corrective-basis " + std::to_string(o.corrective_basis) + ": expected 1.." +
+                     std::to_string(model.numPoseFeatures()) + " (the model has " +
+                     std::to_string(model.numPoseFeatures()) + " pose correctives)");
+  if (o.corrective_basis > 0 && !o.correctives)
+    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)");
   return Status();
 }
 
@@ -80,6 +87,14 @@ CorrectiveLayout encodedLayout(const BodyModel& model, int n, CorrectiveEncoding
   return c;
 }
 
+// Removes sum (offset/scale) d from the stored base mesh: the targets' rest
+// weights (offsets) then add it back, so the rest pose is exactly v_shaped.
+void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
+  for (Eigen::Index i = 0; i < mesh->positions.rows(); ++i)
+    for (int c = 0; c < 3; ++c)
+      mesh->positions(i, c) = static_cast<float>(mesh->positions(i, c) - shift(3 * mesh->source_vertex[i] + c));
+}
+
 void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset) {
   SkinnedMesh& mesh = asset->mesh;
   Eigen::VectorXd shift = Eigen::VectorXd::Zero(model.posedirs.rows());  // sum (offset/scale) P_n, in double
@@ -93,20 +108,51 @@ void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset
     mesh.morph_targets.push_back(std::move(t));
     asset->metadata.correctives.push_back(c);
   }
-  if (o.encoding == CorrectiveEncoding::Unit)
-    for (Eigen::Index i = 0; i < mesh.positions.rows(); ++i)
-      for (int c = 0; c < 3; ++c)
-        mesh.positions(i, c) = static_cast<float>(mesh.positions(i, c) - shift(3 * mesh.source_vertex[i] + c));
+  if (o.encoding == CorrectiveEncoding::Unit) shiftBaseMesh(shift, &mesh);
 }
 
-void addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+// K principal components instead of P targets (corrective_basis.h): the
+// scale/offset of each keeps its weight in [-1, 1] (Signed) or [0, 1] (Unit)
+// for every pose.
+Status addCorrectiveBasis(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+  Result<CorrectiveBasisFit> fit = fitCorrectiveBasis(model.posedirs, o.corrective_basis);
+  if (!fit) return fit.error();
+  Eigen::VectorXd lo, hi;
+  weightRange(fit->projection, &lo, &hi);
+  CorrectiveBasis& basis = asset->metadata.corrective_basis;
+  basis.projection = fit->projection;
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(model.posedirs.rows());
+  for (Eigen::Index k = 0; k < fit->basis.cols(); ++k) {
+    const bool unit = o.encoding == CorrectiveEncoding::Unit;
+    const double range = unit ? hi(k) - lo(k) : std::max(-lo(k), hi(k));
+    const double scale = range > 1e-300 ? 1.0 / range : 1.0;
+    const double offset = unit ? -lo(k) * scale : 0.0;
+    basis.targets.push_back("pose_basis_" + std::to_string(k));
+    basis.scale.push_back(scale);
+    basis.offset.push_back(offset);
+    MorphTarget t = directionTarget(basis.targets.back(), fit->basis / scale, static_cast<int>(k),
+                                    asset->mesh.source_vertex);
+    t.rest_weight = static_cast<float>(offset);
+    shift += (offset / scale) * fit->basis.col(k);
+    asset->mesh.morph_targets.push_back(std::move(t));
+  }
+  shiftBaseMesh(shift, &asset->mesh);
+  return Status();
+}
+
+Status addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* asset) {
   std::vector<MorphTarget>& targets = asset->mesh.morph_targets;
   const std::vector<int>& src = asset->mesh.source_vertex;
-  if (o.correctives) addCorrectives(model, o, asset);
+  if (o.correctives && o.corrective_basis > 0) {
+    if (Status s = addCorrectiveBasis(model, o, asset); !s) return s;
+  } else if (o.correctives) {
+    addCorrectives(model, o, asset);
+  }
   for (int i = 0; i < o.shape_keys; ++i)
     targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
   for (int i = 0; i < o.expression_keys; ++i)
     targets.push_back(directionTarget("expr_" + std::to_string(i), model.exprdirs, i, src));
+  return Status();
 }
 
 // Per-asset-vertex geometry and skin from the model's vertices.
@@ -167,7 +213,7 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   meta.expression = o.expression;
   meta.expression.resize(model.numExpressions(), 0.0);
   meta.max_influences = m;
-  addMorphTargets(model, o, &asset);
+  if (Status s = addMorphTargets(model, o, &asset); !s) return s.error();
   return asset;
 }
 

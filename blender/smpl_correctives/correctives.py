@@ -8,7 +8,10 @@ with rotations taken in armature space (pose_bone.matrix vs bone.matrix_local):
     R_k = C^-1 L_k C                 back to model axes
     f[9(k-1) + 3r + c] = R_k[r][c] - delta_rc
 
-and shape key `pose_<joint>_<r><c>` gets scale * f + offset. Importers
+and shape key `pose_<joint>_<r><c>` gets scale * f + offset. An export with
+`--corrective-basis K` has K keys `pose_basis_<k>` instead, listed in the
+metadata's "corrective_basis" (targets, matrix C: K x P row-major over the
+whole f, scale, offset): key k gets scale_k * (C f)_k + offset_k. Importers
 re-orient bones (the glTF importer rolls them, FBX adds pre-rotations), which
 this cancels: only world-space rotation changes are read, never local ones.
 
@@ -56,6 +59,11 @@ class Binding:
         self.key_col = None      # (T,) c
         self.scale = None        # (T,)
         self.offset = None       # (T,)
+        self.basis_key_index = None  # (B,) index into key_blocks of each basis key
+        self.basis_slots = None      # (K-1,) slot of joint k = 1..K-1: f = features[slots]
+        self.basis_matrix = None     # (B, 9(K-1)) rows of C for the bound basis keys
+        self.basis_scale = None      # (B,)
+        self.basis_offset = None     # (B,)
         self.axes = None         # (3,3) C
         self.signature = None    # detects edits that invalidate the cache
 
@@ -113,6 +121,9 @@ def _checked(metadata):
         metadata = {k: v for k, v in metadata.items() if k not in ("joint_names", "parents")}
     if not isinstance(metadata.get("correctives", []), list):
         metadata = {k: v for k, v in metadata.items() if k != "correctives"}
+    if not isinstance(metadata.get("corrective_basis", {}), dict) or (
+            "corrective_basis" in metadata and "joint_names" not in metadata):
+        metadata = {k: v for k, v in metadata.items() if k != "corrective_basis"}
     return metadata
 
 
@@ -197,6 +208,40 @@ def _corrective_table(metadata):
     return table
 
 
+def _basis_table(metadata):
+    """The "corrective_basis" object validated (untrusted input): (targets,
+    matrix (K,P), scale (K,), offset (K,)) with P = 9 (joints - 1), else None."""
+    basis = (metadata or {}).get("corrective_basis")
+    names = (metadata or {}).get("joint_names")
+    if basis is None:
+        return None
+    try:
+        targets = [str(t) for t in basis["targets"]]
+        p = 9 * (len(names) - 1)
+        matrix = np.asarray(basis["matrix"], dtype=np.float64).reshape(len(targets), p)
+        scale = np.asarray(basis["scale"], dtype=np.float64).reshape(len(targets))
+        offset = np.asarray(basis["offset"], dtype=np.float64).reshape(len(targets))
+    except (KeyError, TypeError, ValueError, AttributeError):
+        print("smpl_correctives: malformed corrective_basis in the metadata; basis keys not driven")
+        return None
+    if not (np.isfinite(matrix).all() and np.isfinite(scale).all() and np.isfinite(offset).all()):
+        print("smpl_correctives: corrective_basis holds non-finite numbers; basis keys not driven")
+        return None
+    return targets, matrix, scale, offset
+
+
+def _find_basis_keys(blocks, targets):
+    """(key index, basis row) of every basis target present (importer prefixes 'Key|' allowed)."""
+    row = {t: i for i, t in enumerate(targets)}
+    found = []
+    for i, block in enumerate(blocks):
+        r = row.get(block.name, row.get(block.name.rsplit("|", 1)[-1]))
+        if r is not None:
+            found.append((i, r))
+            block.slider_min, block.slider_max = SLIDER_RANGE
+    return found
+
+
 def _model_parents(metadata, arm_data, joints):
     """Parent joint name per driven joint: metadata first, else the bone tree."""
     names = (metadata or {}).get("joint_names")
@@ -254,7 +299,7 @@ def bind(armature_obj, mesh_obj, source_path=None, metadata=None):
         armature_obj[PROP_AXES] = [float(x) for x in _resolve_axes(armature_obj, metadata, source_path).ravel()]
     binding = _build_binding(armature_obj, mesh_obj, metadata)
     _bindings[(armature_obj.name, mesh_obj.name)] = binding
-    return len(binding.key_index)
+    return len(binding.key_index) + len(binding.basis_key_index)
 
 
 def _build_binding(armature_obj, mesh_obj, metadata):
@@ -268,7 +313,13 @@ def _build_binding(armature_obj, mesh_obj, metadata):
         if hit:
             found.append((i, block, hit))
             block.slider_min, block.slider_max = SLIDER_RANGE
-    joints = sorted({hit[0] for _, _, hit in found})
+    basis = _basis_table(metadata)
+    basis_found = _find_basis_keys(blocks, basis[0]) if basis else []
+    basis_joints = list((metadata or {}).get("joint_names", []))[1:] if basis_found else []
+    if any(j not in bone_names for j in basis_joints):
+        print("smpl_correctives: a joint of the metadata has no bone; basis keys not driven")
+        basis_found, basis_joints = [], []
+    joints = sorted({hit[0] for _, _, hit in found} | set(basis_joints))
     parents = _model_parents(metadata, armature_obj.data, joints)
     driven = list(joints) + [p for p in parents if p and p not in joints]
     slot = {name: s for s, name in enumerate(driven)}
@@ -287,6 +338,12 @@ def _build_binding(armature_obj, mesh_obj, metadata):
                     for _, block, hit in found]
     b.scale = np.array([s for s, _ in scale_offset], dtype=np.float64)
     b.offset = np.array([o for _, o in scale_offset], dtype=np.float64)
+    rows = np.array([r for _, r in basis_found], dtype=np.int64)
+    b.basis_key_index = np.array([i for i, _ in basis_found], dtype=np.int64)
+    b.basis_slots = np.array([slot[j] for j in basis_joints], dtype=np.int64)
+    b.basis_matrix = basis[1][rows] if basis_found else np.zeros((0, 0))
+    b.basis_scale = basis[2][rows] if basis_found else np.zeros(0)
+    b.basis_offset = basis[3][rows] if basis_found else np.zeros(0)
     b.axes = np.array(armature_obj.get(PROP_AXES), dtype=np.float64).reshape(3, 3)
     b.signature = _signature(armature_obj, mesh_obj)
     return b
@@ -325,16 +382,19 @@ def apply(armature_obj, mesh_obj, depsgraph=None):
     Returns the key values written (numpy array, binding order).
     """
     binding = _binding(armature_obj, mesh_obj)
-    if binding.key_index.size == 0:
+    if binding.key_index.size == 0 and binding.basis_key_index.size == 0:
         return np.zeros(0)
     source = armature_obj.evaluated_get(depsgraph) if depsgraph is not None else None
     features = pose_features(armature_obj, binding, source)
     values = binding.scale * features[binding.key_joint, binding.key_row, binding.key_col] + binding.offset
+    if binding.basis_key_index.size:  # f in DESIGN.md order: joint k's R - I row-major
+        f = features[binding.basis_slots].reshape(-1)
+        values = np.concatenate([values, binding.basis_scale * (binding.basis_matrix @ f) + binding.basis_offset])
     key = mesh_obj.data.shape_keys
     current = np.empty(len(key.key_blocks), dtype=np.float32)
     key.key_blocks.foreach_get("value", current)
     new = current.copy()
-    new[binding.key_index] = values
+    new[np.concatenate([binding.key_index, binding.basis_key_index])] = values
     if not np.array_equal(new, current):  # writing tags a depsgraph update: only on change
         key.key_blocks.foreach_set("value", new)
         key.update_tag()

@@ -14,33 +14,40 @@
 #include <sstream>
 
 #include "exporter/metadata_json.h"
+#include "plugins/gltf/gltf_buffer.h"
+#include "plugins/gltf/gltf_draco.h"
+#include "plugins/gltf/gltf_morphs.h"
+#include "plugins/gltf/morph_scales.h"
 
 namespace smpl {
 namespace {
 
 // tinygltf 2.7 turns empty arrays inside extras into null and sorts object
-// keys, so asset.extras.smpl holds this placeholder string while tinygltf
-// writes, and the metadata text replaces it verbatim afterwards.
+// keys, so asset.extras.smpl and scenes[0].extras.smpl hold these placeholder
+// strings while tinygltf writes, and the metadata text replaces them verbatim
+// afterwards. The buffer's name placeholder marks where its length goes.
 const char kMetadataPlaceholder[] = "\"smpl-export:metadata:7c1e5a90\"";
+const char kScenePlaceholder[] = "\"smpl-export:scene-metadata:7c1e5a90\"";
+const char kBufferPlaceholder[] = "\"smpl-export:buffer:7c1e5a90\"";
+
+// The placeholder's string value (without its quotes).
+std::string placeholderText(const char* quoted) {
+  const std::string q(quoted);
+  return q.substr(1, q.size() - 2);
+}
+
+// Upper bound of the buffer size, reserved once so appending never reallocates.
+size_t estimatedBufferBytes(const Asset& a) {
+  const size_t v = size_t(a.mesh.positions.rows());
+  size_t n = v * (12 + 12 + 8 + size_t(a.mesh.joints.cols() + 3) / 4 * 24) +
+             size_t(a.mesh.triangles.size()) * 4 + a.skeleton.names.size() * 64 + 64 +
+             a.mesh.morph_targets.size() * (v * 16 + 8);
+  for (const AnimationClip& c : a.animations)
+    n += c.times.size() * (4 + 16 * c.rotations.size() + 12 + 4 * size_t(c.morph_weights.cols()) + 16);
+  return n;
+}
 
 constexpr size_t kMaxBufferBytes = 0xF0000000u;  // GLB lengths are uint32
-
-size_t align4(size_t n) { return (n + 3) & ~size_t(3); }
-
-// Appends raw bytes as a new bufferView starting on a 4-byte boundary.
-int addView(tinygltf::Model& model, const void* data, size_t size, int target) {
-  std::vector<unsigned char>& bytes = model.buffers[0].data;
-  bytes.resize(align4(bytes.size()), 0);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = bytes.size();
-  view.byteLength = size;
-  view.target = target;
-  const unsigned char* begin = static_cast<const unsigned char*>(data);
-  bytes.insert(bytes.end(), begin, begin + size);
-  model.bufferViews.push_back(view);
-  return int(model.bufferViews.size()) - 1;
-}
 
 int componentCount(int type) {
   switch (type) {
@@ -58,47 +65,31 @@ int componentCount(int type) {
 }
 
 // Float accessor; bounds (per-component min/max) where glTF requires them.
-int addFloats(tinygltf::Model& model, const std::vector<float>& values, int type, int target,
-              bool bounds) {
+int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int target, bool bounds) {
   const int n = componentCount(type);
-  tinygltf::Accessor accessor;
-  accessor.bufferView = addView(model, values.data(), values.size() * sizeof(float), target);
-  accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  accessor.type = type;
-  accessor.count = values.size() / size_t(n);
-  if (bounds && !values.empty()) {
-    accessor.minValues.assign(values.begin(), values.begin() + n);
-    accessor.maxValues = accessor.minValues;
-    for (size_t i = 0; i < values.size(); ++i) {
-      double v = values[i];
-      accessor.minValues[i % n] = std::min(accessor.minValues[i % n], v);
-      accessor.maxValues[i % n] = std::max(accessor.maxValues[i % n], v);
-    }
-  }
-  model.accessors.push_back(accessor);
-  return int(model.accessors.size()) - 1;
+  const size_t count = values.size() / size_t(n);
+  const int view = addView(b, values.data(), values.size() * sizeof(float), target);
+  const int accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
+  tinygltf::Accessor& a = b.model.accessors[size_t(accessor)];
+  if (bounds && count > 0) floatBounds(values.data(), count, n, &a.minValues, &a.maxValues);
+  return accessor;
 }
 
 template <class T>
-int addIntegers(tinygltf::Model& model, const std::vector<T>& values, int component_type, int type,
+int addIntegers(GltfBuild& b, const std::vector<T>& values, int component_type, int type,
                 int target) {
-  tinygltf::Accessor accessor;
-  accessor.bufferView = addView(model, values.data(), values.size() * sizeof(T), target);
-  accessor.componentType = component_type;
-  accessor.type = type;
-  accessor.count = values.size() / size_t(componentCount(type));
-  model.accessors.push_back(accessor);
-  return int(model.accessors.size()) - 1;
+  const int view = addView(b, values.data(), values.size() * sizeof(T), target);
+  return addAccessor(b, view, component_type, type, values.size() / size_t(componentCount(type)));
 }
 
 // JOINTS_n in the narrowest type that holds every joint index.
-int addJoints(tinygltf::Model& model, const std::vector<uint16_t>& joints, int num_joints) {
-  if (num_joints < 256) {
+int addJoints(GltfBuild& b, const std::vector<uint16_t>& joints, bool wide) {
+  if (!wide) {
     std::vector<uint8_t> narrow(joints.begin(), joints.end());
-    return addIntegers(model, narrow, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4,
+    return addIntegers(b, narrow, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_VEC4,
                        TINYGLTF_TARGET_ARRAY_BUFFER);
   }
-  return addIntegers(model, joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4,
+  return addIntegers(b, joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4,
                      TINYGLTF_TARGET_ARRAY_BUFFER);
 }
 
@@ -246,13 +237,13 @@ Status packVertexSkin(const SkinnedMesh& m, Eigen::Index v, int num_joints, int 
   return Status::success();
 }
 
-// JOINTS_n / WEIGHTS_n attributes, ceil(M/4) sets.
-Status addSkinAttributes(tinygltf::Model& model, tinygltf::Primitive& prim, const SkinnedMesh& m,
-                         int num_joints) {
+// JOINTS_n / WEIGHTS_n streams, ceil(M/4) sets.
+Status packSkin(const SkinnedMesh& m, int num_joints, MeshStreams* out) {
   const int sets = int((m.joints.cols() + 3) / 4);
   const size_t v_count = size_t(m.positions.rows());
-  std::vector<std::vector<uint16_t>> joints(size_t(sets), std::vector<uint16_t>(4 * v_count));
-  std::vector<std::vector<float>> weights(size_t(sets), std::vector<float>(4 * v_count));
+  out->joints.assign(size_t(sets), std::vector<uint16_t>(4 * v_count));
+  out->weights.assign(size_t(sets), std::vector<float>(4 * v_count));
+  out->wide_joints = num_joints >= 256;
   std::vector<uint16_t> vj;
   std::vector<float> vw;
   for (size_t v = 0; v < v_count; ++v) {
@@ -260,85 +251,158 @@ Status addSkinAttributes(tinygltf::Model& model, tinygltf::Primitive& prim, cons
     if (!st) return st;
     for (int s = 0; s < sets; ++s)
       for (int c = 0; c < 4; ++c) {
-        joints[size_t(s)][4 * v + size_t(c)] = vj[size_t(4 * s + c)];
-        weights[size_t(s)][4 * v + size_t(c)] = vw[size_t(4 * s + c)];
+        out->joints[size_t(s)][4 * v + size_t(c)] = vj[size_t(4 * s + c)];
+        out->weights[size_t(s)][4 * v + size_t(c)] = vw[size_t(4 * s + c)];
       }
-  }
-  for (int s = 0; s < sets; ++s) {
-    prim.attributes["JOINTS_" + std::to_string(s)] =
-        addJoints(model, joints[size_t(s)], num_joints);
-    prim.attributes["WEIGHTS_" + std::to_string(s)] = addFloats(
-        model, weights[size_t(s)], TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, false);
   }
   return Status::success();
 }
 
-int addIndices(tinygltf::Model& model, const Eigen::MatrixXi& triangles, Eigen::Index v_count) {
-  std::vector<uint32_t> indices;
-  indices.reserve(size_t(triangles.size()));
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
-    for (int c = 0; c < 3; ++c) indices.push_back(uint32_t(triangles(f, c)));
-  // 65535 is the primitive restart value of UNSIGNED_SHORT, so it must not occur.
-  if (v_count < 65535) {
-    std::vector<uint16_t> narrow(indices.begin(), indices.end());
-    return addIntegers(model, narrow, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR,
-                       TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-  }
-  return addIntegers(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                     TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+Result<MeshStreams> meshStreams(const SkinnedMesh& m, int num_joints) {
+  MeshStreams out;
+  out.vertices = size_t(m.positions.rows());
+  out.positions = rowMajor(m.positions);
+  out.normals = unitNormals(m.normals);
+  if (m.uvs.rows() > 0) out.uvs = flippedUvs(m.uvs);
+  Status st = packSkin(m, num_joints, &out);
+  if (!st) return st.error();
+  out.indices.reserve(size_t(m.triangles.size()));
+  for (Eigen::Index f = 0; f < m.triangles.rows(); ++f)
+    for (int c = 0; c < 3; ++c) out.indices.push_back(uint32_t(m.triangles(f, c)));
+  return out;
 }
 
-Status addMesh(tinygltf::Model& model, const Asset& asset) {
-  const SkinnedMesh& m = asset.mesh;
-  tinygltf::Primitive prim;
-  prim.mode = TINYGLTF_MODE_TRIANGLES;
-  prim.attributes["POSITION"] = addFloats(model, rowMajor(m.positions), TINYGLTF_TYPE_VEC3,
-                                          TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["NORMAL"] = addFloats(model, unitNormals(m.normals), TINYGLTF_TYPE_VEC3,
-                                        TINYGLTF_TARGET_ARRAY_BUFFER, false);
-  if (m.uvs.rows() > 0)
-    prim.attributes["TEXCOORD_0"] = addFloats(model, flippedUvs(m.uvs), TINYGLTF_TYPE_VEC2,
-                                              TINYGLTF_TARGET_ARRAY_BUFFER, false);
-  Status st = addSkinAttributes(model, prim, m, int(asset.skeleton.names.size()));
-  if (!st) return st;
-  prim.indices = addIndices(model, m.triangles, m.positions.rows());
+// 65535 is the primitive restart value of UNSIGNED_SHORT, so it must not occur.
+bool wideIndices(size_t v_count) { return v_count >= 65535; }
 
-  tinygltf::Mesh mesh;
-  mesh.name = asset.name;
+// The streams as ordinary accessors, one bufferView each.
+void addPlainAttributes(GltfBuild& b, const MeshStreams& s, tinygltf::Primitive& prim) {
+  prim.attributes["POSITION"] =
+      addFloats(b, s.positions, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["NORMAL"] =
+      addFloats(b, s.normals, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  if (!s.uvs.empty())
+    prim.attributes["TEXCOORD_0"] =
+        addFloats(b, s.uvs, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  for (size_t i = 0; i < s.joints.size(); ++i) {
+    prim.attributes["JOINTS_" + std::to_string(i)] = addJoints(b, s.joints[i], s.wide_joints);
+    prim.attributes["WEIGHTS_" + std::to_string(i)] =
+        addFloats(b, s.weights[i], TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  }
+  if (!wideIndices(s.vertices)) {
+    std::vector<uint16_t> narrow(s.indices.begin(), s.indices.end());
+    prim.indices = addIntegers(b, narrow, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                               TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  } else {
+    prim.indices = addIntegers(b, s.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                               TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  }
+}
+
+// KHR_draco_mesh_compression: the accessors keep count, type and bounds but
+// have no bufferView; the extension names the compressed view and the ids.
+Status addDracoAttributes(GltfBuild& b, const MeshStreams& s, tinygltf::Primitive& prim) {
+  Result<DracoBlob> blob = encodeDraco(s);
+  if (!blob) return blob.error();
+  const int view = addView(b, blob->bytes.data(), blob->bytes.size(), 0);
+  const size_t v = s.vertices;
+  const int pos = addAccessor(b, -1, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v);
+  tinygltf::Accessor& p = b.model.accessors[size_t(pos)];
+  floatBounds(s.positions.data(), v, 3, &p.minValues, &p.maxValues);
+  prim.attributes["POSITION"] = pos;
+  prim.attributes["NORMAL"] =
+      addAccessor(b, -1, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v);
+  if (!s.uvs.empty())
+    prim.attributes["TEXCOORD_0"] =
+        addAccessor(b, -1, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, v);
+  const int joint_type = s.wide_joints ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
+                                       : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+  for (size_t i = 0; i < s.joints.size(); ++i) {
+    prim.attributes["JOINTS_" + std::to_string(i)] =
+        addAccessor(b, -1, joint_type, TINYGLTF_TYPE_VEC4, v);
+    prim.attributes["WEIGHTS_" + std::to_string(i)] =
+        addAccessor(b, -1, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC4, v);
+  }
+  prim.indices = addAccessor(b, -1,
+                             wideIndices(v) ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT
+                                            : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                             TINYGLTF_TYPE_SCALAR, s.indices.size());
+  tinygltf::Value::Object ids;
+  for (const auto& a : blob->attributes) ids[a.first] = tinygltf::Value(a.second);
+  tinygltf::Value::Object ext{{"bufferView", tinygltf::Value(view)},
+                              {"attributes", tinygltf::Value(ids)}};
+  prim.extensions["KHR_draco_mesh_compression"] = tinygltf::Value(ext);
+  return Status::success();
+}
+
+void requireExtension(tinygltf::Model& model, const char* name) {
+  for (const std::string& e : model.extensionsUsed)
+    if (e == name) return;
+  model.extensionsUsed.push_back(name);
+  model.extensionsRequired.push_back(name);
+}
+
+// Morph targets in the encoding of `options`; `scales` as in morph_scales.h.
+void addMorphTargets(GltfBuild& b, const SkinnedMesh& m, const WriterOptions& options,
+                     const std::vector<bool>& quantized, const std::vector<double>& scales,
+                     tinygltf::Primitive& prim, tinygltf::Mesh& mesh) {
   tinygltf::Value::Array names;
-  for (const MorphTarget& t : m.morph_targets) {
-    int accessor = addFloats(model, rowMajor(t.deltas), TINYGLTF_TYPE_VEC3,
-                             TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    prim.targets.push_back({{"POSITION", accessor}});
-    mesh.weights.push_back(t.rest_weight);  // non-zero only for the unit corrective encoding
+  for (size_t n = 0; n < m.morph_targets.size(); ++n) {
+    const MorphTarget& t = m.morph_targets[n];
+    MorphEncoding e;
+    e.epsilon = options.morph_epsilon;
+    e.quantized = options.quantize_morphs && quantized[n];
+    e.scale = scales[n];
+    if (e.quantized) requireExtension(b.model, "KHR_mesh_quantization");
+    prim.targets.push_back({{"POSITION", addMorphTarget(b, t.deltas, e)}});
+    // Non-zero only for the unit corrective encoding; times s_n when quantized.
+    mesh.weights.push_back(double(float(t.rest_weight * scales[n])));
     names.emplace_back(t.name);
   }
   // An empty targetNames would serialise as null (tinygltf), so omit it.
   if (!names.empty())
     mesh.extras = tinygltf::Value(tinygltf::Value::Object{{"targetNames", tinygltf::Value(names)}});
+}
+
+Status addMesh(GltfBuild& b, const Asset& asset, const WriterOptions& options,
+               const std::vector<bool>& quantized, const std::vector<double>& scales) {
+  Result<MeshStreams> streams = meshStreams(asset.mesh, int(asset.skeleton.names.size()));
+  if (!streams) return streams.error();
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  if (options.draco) {
+    Status st = addDracoAttributes(b, *streams, prim);
+    if (!st) return st;
+    requireExtension(b.model, "KHR_draco_mesh_compression");
+  } else {
+    addPlainAttributes(b, *streams, prim);
+  }
+  tinygltf::Mesh mesh;
+  mesh.name = asset.name;
+  addMorphTargets(b, asset.mesh, options, quantized, scales, prim, mesh);
   mesh.primitives.push_back(prim);
-  model.meshes.push_back(mesh);
+  b.model.meshes.push_back(mesh);
   return Status::success();
 }
 
 // Joint nodes 0..K-1 in model order, then the mesh node K (a scene root, as
 // the validator requires of skinned meshes), then the skin.
-void addNodesAndSkin(tinygltf::Model& model, const Asset& asset) {
+void addNodesAndSkin(GltfBuild& b, const Asset& asset) {
   const Skeleton& s = asset.skeleton;
   const int k_count = int(s.names.size());
   for (int k = 0; k < k_count; ++k) {
     tinygltf::Node node;
     node.name = s.names[size_t(k)];
     node.translation = {s.rest_local(k, 0), s.rest_local(k, 1), s.rest_local(k, 2)};
-    model.nodes.push_back(node);
+    b.model.nodes.push_back(node);
   }
-  for (int k = 1; k < k_count; ++k) model.nodes[size_t(s.parents[size_t(k)])].children.push_back(k);
+  for (int k = 1; k < k_count; ++k) b.model.nodes[size_t(s.parents[size_t(k)])].children.push_back(k);
 
   tinygltf::Node mesh_node;
   mesh_node.name = asset.name;
   mesh_node.mesh = 0;
   mesh_node.skin = 0;
-  model.nodes.push_back(mesh_node);
+  b.model.nodes.push_back(mesh_node);
 
   std::vector<float> ibm;
   tinygltf::Skin skin;
@@ -350,14 +414,16 @@ void addNodesAndSkin(tinygltf::Model& model, const Asset& asset) {
     skin.joints.push_back(k);
   }
   skin.skeleton = 0;
-  skin.inverseBindMatrices = addFloats(model, ibm, TINYGLTF_TYPE_MAT4, 0, false);
-  model.skins.push_back(skin);
+  skin.inverseBindMatrices = addFloats(b, ibm, TINYGLTF_TYPE_MAT4, 0, false);
+  b.model.skins.push_back(skin);
 
   tinygltf::Scene scene;
   scene.name = asset.name;
   scene.nodes = {0, k_count};
-  model.scenes.push_back(scene);
-  model.defaultScene = 0;
+  // Blender's importer drops asset.extras but keeps scene extras (custom properties).
+  scene.extras = tinygltf::Value(tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholderText(kScenePlaceholder))}});
+  b.model.scenes.push_back(scene);
+  b.model.defaultScene = 0;
 }
 
 Status checkClip(const AnimationClip& clip, const Asset& asset) {
@@ -405,11 +471,12 @@ void addChannel(tinygltf::Animation& anim, int input, int output, int node, cons
   anim.channels.push_back(channel);
 }
 
-Status addAnimation(tinygltf::Model& model, const AnimationClip& clip, int mesh_node) {
+Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node,
+                    const std::vector<double>& scales) {
   tinygltf::Animation anim;
   anim.name = clip.name;
   const std::vector<float> times(clip.times.begin(), clip.times.end());
-  const int input = addFloats(model, times, TINYGLTF_TYPE_SCALAR, 0, true);
+  const int input = addFloats(b, times, TINYGLTF_TYPE_SCALAR, 0, true);
   for (size_t k = 0; k < clip.rotations.size(); ++k) {
     std::vector<float> xyzw;
     for (const Eigen::Quaterniond& q : clip.rotations[k]) {
@@ -420,62 +487,73 @@ Status addAnimation(tinygltf::Model& model, const AnimationClip& clip, int mesh_
       xyzw.insert(xyzw.end(),
                   {float(q.x() / n), float(q.y() / n), float(q.z() / n), float(q.w() / n)});
     }
-    addChannel(anim, input, addFloats(model, xyzw, TINYGLTF_TYPE_VEC4, 0, false), int(k),
+    addChannel(anim, input, addFloats(b, xyzw, TINYGLTF_TYPE_VEC4, 0, false), int(k),
                "rotation");
   }
   if (!clip.root_translation.empty()) {
     std::vector<float> xyz;
     for (const Eigen::Vector3d& p : clip.root_translation)
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
-    addChannel(anim, input, addFloats(model, xyz, TINYGLTF_TYPE_VEC3, 0, false), 0, "translation");
+    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), 0, "translation");
   }
-  if (clip.morph_weights.rows() > 0)
-    addChannel(anim, input,
-               addFloats(model, rowMajor(clip.morph_weights), TINYGLTF_TYPE_SCALAR, 0, false),
-               mesh_node, "weights");
-  model.animations.push_back(anim);
+  if (clip.morph_weights.rows() > 0) {
+    std::vector<float> w = rowMajor(clip.morph_weights);
+    for (size_t i = 0; i < w.size(); ++i)  // quantized targets: weights times s_n
+      if (scales[i % scales.size()] != 1.0) w[i] = float(w[i] * scales[i % scales.size()]);
+    addChannel(anim, input, addFloats(b, w, TINYGLTF_TYPE_SCALAR, 0, false), mesh_node, "weights");
+  }
+  b.model.animations.push_back(anim);
   return Status::success();
 }
 
-Result<tinygltf::Model> buildModel(const Asset& asset) {
+Status buildModel(const Asset& asset, const WriterOptions& options,
+                  const std::vector<bool>& quantized, const std::vector<double>& scales,
+                  GltfBuild& b) {
   Status st = checkSkeleton(asset.skeleton);
   if (st) st = checkMesh(asset.mesh);
   for (const AnimationClip& clip : asset.animations)
     if (st) st = checkClip(clip, asset);
-  if (!st) return st.error();
+  if (!st) return st;
 
-  tinygltf::Model model;
-  model.buffers.resize(1);
+  tinygltf::Model& model = b.model;
+  b.bin.reserve(estimatedBufferBytes(asset));
   model.asset.version = "2.0";
   const std::string version = asset.metadata.exporter_version.empty()
                                   ? SMPL_EXPORT_VERSION
                                   : asset.metadata.exporter_version;
   model.asset.generator = "smpl-export " + version;
-  const std::string placeholder(kMetadataPlaceholder + 1, sizeof(kMetadataPlaceholder) - 3);
-  model.asset.extras =
-      tinygltf::Value(tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholder)}});
+  model.asset.extras = tinygltf::Value(
+      tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholderText(kMetadataPlaceholder))}});
 
-  addNodesAndSkin(model, asset);
-  st = addMesh(model, asset);
+  addNodesAndSkin(b, asset);
+  st = addMesh(b, asset, options, quantized, scales);
   for (const AnimationClip& clip : asset.animations)
-    if (st) st = addAnimation(model, clip, int(asset.skeleton.names.size()));
-  if (!st) return st.error();
-  std::vector<unsigned char>& bytes = model.buffers[0].data;
-  bytes.resize(align4(bytes.size()), 0);
-  if (bytes.size() > kMaxBufferBytes)
-    return makeError("glTF writer: buffer of " + std::to_string(bytes.size()) +
+    if (st) st = addAnimation(b, clip, int(asset.skeleton.names.size()), scales);
+  if (!st) return st;
+  b.bin.resize(align4(b.bin.size()), '\0');
+  if (b.bin.size() > kMaxBufferBytes)
+    return makeError("glTF writer: buffer of " + std::to_string(b.bin.size()) +
                      " bytes exceeds the GLB limit of 4 GiB");
-  return model;
+  // The bytes stay in b.bin; tinygltf writes this buffer's JSON with a length
+  // of 0 and a placeholder name, replaced by the real length afterwards.
+  model.buffers.resize(1);
+  model.buffers[0].name = placeholderText(kBufferPlaceholder);
+  return Status::success();
 }
 
-// Replaces the placeholder (which must occur exactly once) by the metadata text.
-Result<std::string> spliceMetadata(std::string json, const std::string& metadata) {
-  const size_t at = json.find(kMetadataPlaceholder);
-  const size_t len = sizeof(kMetadataPlaceholder) - 1;
-  if (at == std::string::npos || json.find(kMetadataPlaceholder, at + 1) != std::string::npos)
-    return makeError("glTF writer: a name in the asset collides with the metadata placeholder");
-  json.replace(at, len, metadata);
-  return json;
+// Replaces `placeholder` (which must occur exactly once) by `text`.
+Status splice(std::string& json, const std::string& placeholder, const std::string& text) {
+  const size_t at = json.find(placeholder);
+  if (at == std::string::npos || json.find(placeholder, at + 1) != std::string::npos)
+    return makeError("glTF writer: a name in the asset collides with a placeholder");
+  json.replace(at, placeholder.size(), text);
+  return Status::success();
+}
+
+Status spliceMetadata(std::string& json, const std::string& metadata) {
+  Status st = splice(json, kMetadataPlaceholder, metadata);
+  if (st) st = splice(json, kScenePlaceholder, metadata);
+  return st;
 }
 
 void putU32(std::string& out, uint32_t v) {
@@ -488,25 +566,59 @@ uint32_t getU32(const std::string& in, size_t at) {
   return v;
 }
 
-// GLB from tinygltf: splice the JSON chunk, keep the BIN chunk byte for byte.
-Result<std::string> spliceGlb(const std::string& glb, const std::string& metadata) {
+// The JSON chunk of tinygltf's GLB (whose buffer is empty).
+Result<std::string> jsonChunk(const std::string& glb) {
   if (glb.size() < 20 || glb.compare(0, 4, "glTF") != 0 || getU32(glb, 16) != 0x4E4F534Au ||
       20 + size_t(getU32(glb, 12)) > glb.size())
     return makeError("glTF writer: tinygltf produced an unexpected GLB layout");
-  const size_t json_len = getU32(glb, 12);
-  Result<std::string> json = spliceMetadata(glb.substr(20, json_len), metadata);
-  if (!json) return json;
-  std::string chunk = std::move(*json);
-  chunk.resize(align4(chunk.size()), ' ');
-  const std::string bin = glb.substr(20 + json_len);
-  std::string out = "glTF";
+  return glb.substr(20, getU32(glb, 12));
+}
+
+// GLB: header, JSON chunk (space-padded), BIN chunk written once from b.bin.
+std::string assembleGlb(std::string json, const std::string& bin) {
+  json.resize(align4(json.size()), ' ');
+  std::string out;
+  out.reserve(28 + json.size() + bin.size());
+  out += "glTF";
   putU32(out, 2);
-  putU32(out, uint32_t(12 + 8 + chunk.size() + bin.size()));
-  putU32(out, uint32_t(chunk.size()));
+  putU32(out, uint32_t(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size())));
+  putU32(out, uint32_t(json.size()));
   putU32(out, 0x4E4F534Au);
-  out += chunk;
-  out += bin;
+  out += json;
+  if (!bin.empty()) {
+    putU32(out, uint32_t(bin.size()));
+    putU32(out, 0x004E4942u);
+    out += bin;
+  }
   return out;
+}
+
+Result<std::string> serializeJson(tinygltf::Model& model, bool binary) {
+  std::ostringstream stream;
+  try {
+    tinygltf::TinyGLTF gltf;
+    // .gltf is for reading: indent it; GLB stays compact.
+    if (!gltf.WriteGltfSceneToStream(&model, stream, !binary, binary))
+      return makeError("glTF writer: tinygltf failed to serialise the model");
+  } catch (const std::exception& e) {
+    return makeError(std::string("glTF writer: cannot serialise: ") + e.what());
+  }
+  if (binary) return jsonChunk(stream.str());
+  return stream.str();
+}
+
+// The metadata as written: correctives' scale/offset times s_n (morph_scales.h).
+std::string writtenMetadata(const Asset& asset, const std::vector<double>& scales) {
+  Asset names;  // metadataJson reads the skeleton, the metadata and target names only
+  names.skeleton.names = asset.skeleton.names;
+  names.skeleton.parents = asset.skeleton.parents;
+  names.metadata = asset.metadata;
+  for (const MorphTarget& t : asset.mesh.morph_targets) {
+    names.mesh.morph_targets.emplace_back();
+    names.mesh.morph_targets.back().name = t.name;
+  }
+  foldScalesIntoMetadata(scales, asset.mesh, &names.metadata);
+  return metadataJson(names);
 }
 
 class GltfWriter : public Writer {
@@ -514,20 +626,29 @@ class GltfWriter : public Writer {
   const char* name() const override { return "glTF"; }
 
   Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
-    Result<tinygltf::Model> model = buildModel(asset);
-    if (!model) return model.error();
-    std::ostringstream stream;
-    try {
-      tinygltf::TinyGLTF gltf;
-      // .gltf is for reading: indent it; GLB stays compact.
-      if (!gltf.WriteGltfSceneToStream(&*model, stream, !options.binary, options.binary))
-        return makeError("glTF writer: tinygltf failed to serialise the model");
-    } catch (const std::exception& e) {
-      return makeError(std::string("glTF writer: cannot serialise: ") + e.what());
+    std::vector<bool> quantized(asset.mesh.morph_targets.size(), false);
+    std::vector<double> scales(asset.mesh.morph_targets.size(), 1.0);
+    if (options.quantize_morphs) {
+      quantized = quantizedTargets(asset);
+      scales = morphWeightScales(asset);
     }
-    const std::string metadata = metadataJson(asset);
-    if (options.binary) return spliceGlb(stream.str(), metadata);
-    return spliceMetadata(stream.str(), metadata);
+    GltfBuild b;
+    Status st = buildModel(asset, options, quantized, scales, b);
+    if (!st) return st.error();
+    const std::string byte_length = "\"byteLength\":" + std::to_string(b.bin.size());
+    if (!options.binary) {  // .gltf: tinygltf embeds the buffer as a data URI
+      b.model.buffers[0].name.clear();
+      b.model.buffers[0].data.assign(b.bin.begin(), b.bin.end());
+      std::string().swap(b.bin);
+    }
+    Result<std::string> json = serializeJson(b.model, options.binary);
+    if (!json) return json;
+    st = spliceMetadata(*json, writtenMetadata(asset, scales));
+    if (st && options.binary)
+      st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder), byte_length);
+    if (!st) return st.error();
+    if (!options.binary) return json;
+    return assembleGlb(std::move(*json), b.bin);
   }
 };
 

@@ -53,6 +53,8 @@ def parse_args():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--label", default="")
     ap.add_argument("--tol", type=float, default=1e-5)
+    ap.add_argument("--delta-tol", type=float, default=1e-6,
+                    help="max |decoded morph delta - posedirs| (compact encodings add error)")
     ap.add_argument("--import-option", action="append", default=[],
                     help="KEY=VALUE passed to Blender's importer (e.g. automatic_bone_orientation=True)")
     return ap.parse_args(argv)
@@ -221,7 +223,9 @@ def key_lookup(mesh_obj):
     return table
 
 
-def check_morph_targets(mesh_obj, names, posedirs, index):
+def check_morph_targets(mesh_obj, names, posedirs, index, scale, tol):
+    """Every pose_* key's delta, decoded with the file's weight mapping
+    (delta * scale: weight = scale * f + offset), equals its posedirs column."""
     keys = key_lookup(mesh_obj)
     n = len(mesh_obj.data.vertices)
     basis = np.empty(n * 3, dtype=np.float32)
@@ -236,9 +240,10 @@ def check_morph_targets(mesh_obj, names, posedirs, index):
             continue
         kb.data.foreach_get("co", co)
         delta = world_to_model((co.astype(np.float64) - basis).reshape(n, 3) @ linear.T)
-        worst = max(worst, np.abs(delta - posedirs[index, :, f]).max())
+        worst = max(worst, np.abs(scale[f] * delta - posedirs[index, :, f]).max())
     check(not missing, "%d morph targets missing, e.g. %s" % (len(missing), missing[:3]))
-    check(worst <= 1e-6, "morph target deltas differ from posedirs by %.3g" % worst)
+    print("morph_delta_err_m %.3e" % worst)
+    check(worst <= tol, "morph target deltas differ from posedirs by %.3g" % worst)
 
 
 def check_axes(arm, correctives):
@@ -333,10 +338,13 @@ def main():
     meta = check_metadata(args.asset, names, parents)
     m = int(meta.get("max_influences", header["max_influences"] if header else 4))
     check_skeleton(arm, names, parents)
-    index, _ = vertex_map(mesh_obj, v_shaped)
+    targets = model_math.target_names(names)
+    scale, offset = corrective_encoding(args.asset, len(targets))
+    rest = rest_positions(mesh_obj, dict(zip(targets, offset))) if offset.any() else None
+    index, _ = vertex_map(mesh_obj, v_shaped, rest)
     pruned = model_math.prune(model["weights"], m)
     check_weights(mesh_obj, names, index, pruned)
-    check_morph_targets(mesh_obj, names, model["posedirs"], index)
+    check_morph_targets(mesh_obj, names, model["posedirs"], index, scale, args.delta_tol)
     correctives.bind(arm, mesh_obj, source_path=args.asset)
     check_axes(arm, correctives)
 

@@ -58,11 +58,18 @@ function(smpl_roundtrip_reference name model m betas)
     FIXTURES_SETUP roundtrip_ref_${name}_m${m} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
 endfunction()
 
-# smpl_roundtrip_case(<name> <format> <model> <M> <betas> [SUFFIX s] [EXPORT_ARGS ...]
-#                     [IMPORT_ARGS key=value ...]): export, then Blender (IMPORT_ARGS
-# are passed to Blender's importer, e.g. automatic_bone_orientation=True).
+# smpl_roundtrip_case(<name> <format> <model> <M> <betas> [SUFFIX s] [TOL m] [DELTA_TOL m]
+#                     [EXPORT_ARGS ...] [IMPORT_ARGS key=value ...]): export, then Blender
+# (IMPORT_ARGS go to Blender's importer, e.g. automatic_bone_orientation=True; TOL is the
+# posed vertex tolerance, DELTA_TOL the decoded morph delta tolerance).
 function(smpl_roundtrip_case name format model m betas)
-  cmake_parse_arguments(RT "" "SUFFIX" "EXPORT_ARGS;IMPORT_ARGS" ${ARGN})
+  cmake_parse_arguments(RT "" "SUFFIX;TOL;DELTA_TOL" "EXPORT_ARGS;IMPORT_ARGS" ${ARGN})
+  if(NOT RT_TOL)
+    set(RT_TOL 1e-5)
+  endif()
+  if(NOT RT_DELTA_TOL)
+    set(RT_DELTA_TOL 1e-6)
+  endif()
   set(import_args)
   foreach(option ${RT_IMPORT_ARGS})
     list(APPEND import_args --import-option ${option})
@@ -80,7 +87,8 @@ function(smpl_roundtrip_case name format model m betas)
     COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_roundtrip.py --
             --asset ${asset} --addon-dir ${PROJECT_SOURCE_DIR}/blender
             --reference ${SMPL_ROUNDTRIP_DIR}/${name}_m${m}_ref
-            --betas=${betas} --label ${name} --tol 1e-5 ${numpy_model} ${import_args})
+            --betas=${betas} --label ${name} --tol ${RT_TOL} --delta-tol ${RT_DELTA_TOL}
+            ${numpy_model} ${import_args})
   set_tests_properties(roundtrip.export.${case} PROPERTIES
     FIXTURES_SETUP roundtrip_${case} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
   set_tests_properties(roundtrip.blender.${case} PROPERTIES
@@ -174,3 +182,5 @@ add_dependencies(smpl-reference blender_addon)  # the install test needs the zip
 
 # Baked animation (motions) through Blender and the validator; batch CLI.
 include(${CMAKE_CURRENT_LIST_DIR}/anim_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/compact_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/basis_tests.cmake)

@@ -9,6 +9,9 @@
 //                  importers produce: world rotation M G_k M B_k, rest B_k.
 // G_k = G_p(k) R_k are the model's world rotations (rest: identity).
 // Quaternions are written in Unity's order (x, y, z, w).
+// Also, per model, the metadata of a --corrective-basis 16 (unit weights)
+// export ("basis_sidecar", the exporter's own serialiser) and per pose the
+// weights it defines, scale_k (C f)_k + offset_k ("basis_weights").
 //
 // usage: smpl-csharp-reference OUT.json MODEL...
 #include <Eigen/Geometry>
@@ -19,6 +22,8 @@
 #include "core/forward.h"
 #include "core/model_loader.h"
 #include "core/pose_sampler.h"
+#include "exporter/metadata_json.h"
+#include "exporter/pipeline.h"
 
 namespace {
 
@@ -67,7 +72,7 @@ Rotations engineRotations(const Rotations& world, const Rotations& bind) {
 }
 
 void writePose(std::FILE* out, const smpl::BodyModel& model, const Eigen::VectorXd& axis_angle,
-               const Rotations& bind) {
+               const Rotations& bind, const smpl::CorrectiveBasis& basis) {
   const Rotations local = smpl::rotationsFromAxisAngle(axis_angle);
   const Eigen::VectorXd features = smpl::poseFeatures(local);
   const Rotations world = worldRotations(model.parents, local);
@@ -86,6 +91,10 @@ void writePose(std::FILE* out, const smpl::BodyModel& model, const Eigen::Vector
   writeQuaternions(out, engineRotations(world, identity));
   std::fprintf(out, ",\"bind_rest_world\":");
   writeQuaternions(out, engineRotations(world, bind));
+  Eigen::VectorXd weights = basis.projection * features;
+  for (Eigen::Index k = 0; k < weights.size(); ++k) weights(k) = basis.scale[k] * weights(k) + basis.offset[k];
+  std::fprintf(out, ",\"basis_weights\":");
+  writeNumbers(out, weights.data(), weights.size());
   std::fprintf(out, "}");
 }
 
@@ -105,6 +114,14 @@ bool writeModel(std::FILE* out, const std::string& path, uint64_t seed) {
   std::vector<Eigen::VectorXd> poses = smpl::samplePoses(k, 6, seed, 0.6);
   for (const Eigen::VectorXd& p : smpl::samplePoses(k, 2, seed + 1, 2.5)) poses.push_back(p);
   const Rotations bind = smpl::rotationsFromAxisAngle(smpl::samplePoses(k, 1, seed + 2, 3.0)[0]);
+  smpl::ExportOptions options;
+  options.corrective_basis = 16;
+  options.encoding = smpl::CorrectiveEncoding::Unit;
+  smpl::Result<smpl::Asset> asset = smpl::buildAsset(*model, options);
+  if (!asset) {
+    std::fprintf(stderr, "Error exporting %s: %s\n", path.c_str(), asset.message().c_str());
+    return false;
+  }
 
   std::fprintf(out, "{\"name\":");
   writeString(out, path.substr(path.find_last_of('/') + 1));
@@ -126,10 +143,12 @@ bool writeModel(std::FILE* out, const std::string& path, uint64_t seed) {
   writeNumbers(out, axis.data(), 9);
   std::fprintf(out, ",\"bind_rest\":");
   writeQuaternions(out, bind);
+  std::fprintf(out, ",\"basis_sidecar\":");
+  writeString(out, smpl::metadataJson(*asset));
   std::fprintf(out, ",\"poses\":[");
   for (size_t i = 0; i < poses.size(); ++i) {
     if (i) std::fputc(',', out);
-    writePose(out, *model, poses[i], bind);
+    writePose(out, *model, poses[i], bind, asset->metadata.corrective_basis);
   }
   std::fprintf(out, "]}");
   return true;

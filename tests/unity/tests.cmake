@@ -4,7 +4,7 @@
 # as Unity reports them. Included from tests/CMakeLists.txt.
 
 add_executable(smpl-csharp-reference ${CMAKE_CURRENT_LIST_DIR}/csharp_reference.cpp)
-target_link_libraries(smpl-csharp-reference PRIVATE smpl_core)
+target_link_libraries(smpl-csharp-reference PRIVATE smpl_exporter smpl_core)
 
 find_program(SMPL_MCS mcs)
 find_program(SMPL_MONO mono)

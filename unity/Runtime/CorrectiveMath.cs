@@ -259,6 +259,23 @@ namespace SmplExport.Correctives
             }
         }
 
+        /// <summary>
+        /// Weights of basis blend shapes (--corrective-basis): for each i,
+        /// weights[i] = scale[rows[i]] * (matrix row rows[i] . features) + offset[rows[i]],
+        /// matrix row-major with FeatureCount columns. No allocation.
+        /// </summary>
+        public static void ProjectBasis(CorrectiveBasisLayout basis, int[] rows, double[] features, double[] weights)
+        {
+            int p = basis.FeatureCount;
+            for (int i = 0; i < rows.Length; ++i)
+            {
+                int r = rows[i], start = r * p;
+                double sum = 0;
+                for (int n = 0; n < p; ++n) sum += basis.Matrix[start + n] * features[n];
+                weights[i] = basis.Scale[r] * sum + basis.Offset[r];
+            }
+        }
+
         static Quat Multiply(Quat a, Quat b)
         {
             return new Quat(

@@ -3,6 +3,9 @@
 // carries which feature with what scale/offset. Read from the sidecar
 // <asset>.smpl.json, or from a glTF file's asset.extras.smpl; without either,
 // the SMPL body layout with the exporter's default names is used.
+// An export with --corrective-basis K carries "corrective_basis" instead of
+// per-feature entries: blend shape Targets[k] gets
+// Scale[k] * sum_n Matrix[k * FeatureCount + n] f[n] + Offset[k].
 using System;
 using System.Collections.Generic;
 
@@ -16,11 +19,20 @@ namespace SmplExport.Correctives
         public double Offset = 0.0;
     }
 
+    public sealed class CorrectiveBasisLayout
+    {
+        public string[] Targets;
+        public int FeatureCount;    // P = 9 (K - 1)
+        public double[] Matrix;     // Targets.Length x FeatureCount, row-major
+        public double[] Scale, Offset;
+    }
+
     public sealed class SidecarLayout
     {
         public string[] JointNames;
         public int[] Parents;
         public CorrectiveBinding[] Correctives;
+        public CorrectiveBasisLayout Basis;   // null: no basis
 
         static readonly string[] SmplNames = {
             "pelvis", "left_hip", "right_hip", "spine1", "left_knee", "right_knee", "spine2",
@@ -111,7 +123,44 @@ namespace SmplExport.Correctives
             object correctives;
             if (!meta.TryGetValue("correctives", out correctives) || !(correctives is List<object>))
                 return "missing 'correctives' array";
-            return ReadCorrectives((List<object>)correctives, 9 * (JointNames.Length - 1));
+            string error = ReadCorrectives((List<object>)correctives, 9 * (JointNames.Length - 1));
+            object basis;
+            if (error == null && meta.TryGetValue("corrective_basis", out basis))
+                error = ReadBasis(basis as Dictionary<string, object>, 9 * (JointNames.Length - 1));
+            return error;
+        }
+
+        string ReadBasis(Dictionary<string, object> o, int featureCount)
+        {
+            if (o == null) return "'corrective_basis' is not an object";
+            object v;
+            var targets = o.TryGetValue("targets", out v) ? v as List<object> : null;
+            if (targets == null) return "'corrective_basis'.targets must be an array";
+            var b = new CorrectiveBasisLayout { FeatureCount = featureCount, Targets = new string[targets.Count] };
+            for (int k = 0; k < targets.Count; ++k)
+                if ((b.Targets[k] = targets[k] as string) == null) return "'corrective_basis'.targets[" + k + "] is not a string";
+            int features;
+            if (!o.TryGetValue("features", out v) || !ReadInt(v, out features) || features != featureCount)
+                return "'corrective_basis'.features must be " + featureCount + " (9 per non-root joint)";
+            string error = ReadNumbers(o, "matrix", targets.Count * featureCount, out b.Matrix);
+            if (error == null) error = ReadNumbers(o, "scale", targets.Count, out b.Scale);
+            if (error == null) error = ReadNumbers(o, "offset", targets.Count, out b.Offset);
+            if (error != null) return error;
+            Basis = b;
+            return null;
+        }
+
+        static string ReadNumbers(Dictionary<string, object> o, string key, int count, out double[] values)
+        {
+            values = null;
+            object v;
+            var list = o.TryGetValue(key, out v) ? v as List<object> : null;
+            if (list == null || list.Count != count)
+                return "'corrective_basis'." + key + " must be an array of " + count + " numbers";
+            values = new double[count];
+            for (int i = 0; i < count; ++i)
+                if (!ReadDouble(list[i], out values[i])) return "'corrective_basis'." + key + "[" + i + "] is not a number";
+            return null;
         }
 
         string ReadCorrectives(List<object> list, int featureCount)

@@ -49,6 +49,8 @@ namespace SmplExport.Correctives
         double[] features;
         int[] shapeIndex, shapeFeature;
         double[] shapeScale, shapeOffset;
+        int[] basisShapeIndex, basisRow;   // --corrective-basis blend shapes and their rows of C
+        double[] basisWeights;
 
         /// <summary>Features of the last evaluation, 9(K-1) values in model order.</summary>
         public double[] Features { get { return features; } }
@@ -103,6 +105,10 @@ namespace SmplExport.Correctives
                 double f = features[shapeFeature[i]];
                 skin.SetBlendShapeWeight(shapeIndex[i], (float)(100.0 * (shapeScale[i] * f + shapeOffset[i])));
             }
+            if (basisRow.Length == 0) return;
+            CorrectiveMath.ProjectBasis(layout.Basis, basisRow, features, basisWeights);
+            for (int i = 0; i < basisRow.Length; ++i)
+                skin.SetBlendShapeWeight(basisShapeIndex[i], (float)(100.0 * basisWeights[i]));
         }
 
         bool Fail(string message)
@@ -215,6 +221,29 @@ namespace SmplExport.Correctives
             if (found < match.Length)
                 Messages.Add(name + ": mesh '" + mesh.name + "' lacks " + (match.Length - found) + " of " + match.Length +
                              " corrective blend shapes (first missing: " + FirstMissing(match) + ")");
+            BindBasisShapes(shapeNames);
+        }
+
+        void BindBasisShapes(List<string> shapeNames)
+        {
+            var index = new List<int>();
+            var rows = new List<int>();
+            if (layout.Basis != null)
+            {
+                int[] match = NameMatch.Assign(layout.Basis.Targets, shapeNames);
+                for (int r = 0; r < match.Length; ++r)
+                    if (match[r] >= 0)
+                    {
+                        index.Add(match[r]);
+                        rows.Add(r);
+                    }
+                if (rows.Count < match.Length)
+                    Messages.Add(name + ": mesh '" + skin.sharedMesh.name + "' lacks " + (match.Length - rows.Count) + " of " +
+                                 match.Length + " corrective basis blend shapes");
+            }
+            basisShapeIndex = index.ToArray();
+            basisRow = rows.ToArray();
+            basisWeights = new double[rows.Count];
         }
 
         string FirstMissing(int[] match)

@@ -1,8 +1,8 @@
 // SmplCorrectives (the MonoBehaviour) on stubbed UnityEngine objects, with
 // Unity's float types: importer-decorated bone and blend shape names, a
 // rotated character, rest from bind poses (in centimetres) or from Start, a
-// sidecar with scale/offset, a missing bone, and a wrong axis convention
-// that must be detected.
+// sidecar with scale/offset, a missing bone, a wrong axis convention
+// that must be detected, and a --corrective-basis sidecar.
 #if SMPL_EXPORT_MONO_TESTS
 using System;
 using System.Collections.Generic;
@@ -102,6 +102,41 @@ namespace SmplExport.Correctives.Tests
             BindPosesWithSidecar(model);
             WrongAxisConventionIsDetected(model);
             MissingBone(model);
+            BasisSidecar(model);
+        }
+
+        // The exporter's --corrective-basis metadata (K = 16, unit weights):
+        // basis blend shapes get scale (C f) + offset, as the C++ computes it.
+        static void BasisSidecar(ReferenceModel model)
+        {
+            var rig = new TestRig(model, "Armature|", "");
+            string error;
+            SidecarLayout layout = SidecarLayout.Parse(model.BasisSidecar, "basis.glb.smpl.json", out error);
+            CorrectivesTests.Check(layout != null && layout.Basis != null && layout.Basis.Targets.Length == 16 &&
+                                   layout.Correctives.Length == 0, model.Name + ": basis sidecar parsed: " + error);
+            if (layout == null || layout.Basis == null) return;
+            var basisIndex = new int[layout.Basis.Targets.Length];
+            for (int k = layout.Basis.Targets.Length - 1; k >= 0; --k)  // reverse order: lookup goes by name
+            {
+                basisIndex[k] = rig.Skin.sharedMesh.blendShapeCount;
+                rig.Skin.sharedMesh.blendShapeNames.Add(model.Name + "." + layout.Basis.Targets[k]);
+            }
+            rig.Driver.sidecar = new TextAsset { name = "basis.glb.smpl.json", text = model.BasisSidecar };
+            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
+            rig.Pose(Identities(model.JointCount));
+            bool ready = rig.Driver.Initialize();
+            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
+                                   model.Name + ": basis setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            if (!ready) return;
+            double worst = 0;
+            foreach (ReferencePose pose in model.Poses)
+            {
+                rig.Pose(pose.IdentityRestWorld);
+                rig.Driver.Evaluate();
+                for (int k = 0; k < basisIndex.Length; ++k)
+                    worst = Math.Max(worst, Math.Abs(rig.Skin.GetBlendShapeWeight(basisIndex[k]) / 100.0 - pose.BasisWeights[k]));
+            }
+            CorrectivesTests.CheckClose(worst, CorrectivesTests.FloatTolerance, model.Name + ": basis blend shape weights / 100");
         }
 
         // Identity-rest bones with Mixamo-style names, rest taken at Start.

@@ -77,6 +77,7 @@ namespace SmplExport.Correctives.Tests
     public sealed class ReferencePose
     {
         public double[] Features;
+        public double[] BasisWeights;   // scale_k (C f)_k + offset_k of BasisSidecar
         public Quat[] IdentityRestWorld, BindRestWorld;
     }
 
@@ -87,6 +88,7 @@ namespace SmplExport.Correctives.Tests
         public int[] Parents;
         public double[] AxisMap;
         public Quat[] BindRest;
+        public string BasisSidecar;     // the exporter's metadata with --corrective-basis 16
         public List<ReferencePose> Poses = new List<ReferencePose>();
 
         public ReferenceModel(Dictionary<string, object> o)
@@ -97,11 +99,13 @@ namespace SmplExport.Correctives.Tests
             Parents = Array.ConvertAll(Numbers(o["parents"]), x => (int)x);
             AxisMap = Numbers(o["axis_map"]);
             BindRest = Quats(o["bind_rest"]);
+            BasisSidecar = (string)o["basis_sidecar"];
             foreach (object p in (List<object>)o["poses"])
             {
                 var d = (Dictionary<string, object>)p;
                 Poses.Add(new ReferencePose {
                     Features = Numbers(d["features"]),
+                    BasisWeights = Numbers(d["basis_weights"]),
                     IdentityRestWorld = Quats(d["identity_rest_world"]),
                     BindRestWorld = Quats(d["bind_rest_world"]) });
             }

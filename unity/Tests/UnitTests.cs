@@ -14,6 +14,7 @@ namespace SmplExport.Correctives.Tests
         {
             NameMatching();
             SidecarParsing();
+            BasisParsing();
             HostileJson();
             AxisMapValidation();
             RotationFromScaledMatrix();
@@ -57,6 +58,28 @@ namespace SmplExport.Correctives.Tests
             layout = SidecarLayout.Parse(bad, "x.smpl.json", out error);
             CorrectiveMath math = layout == null ? null : CorrectiveMath.Create(layout.Parents, CorrectiveMath.MirrorX, out error);
             Check(math == null && error != null && error.Contains("joint 1 has parent 1"), "bad parents rejected: " + error);
+        }
+
+        static void BasisParsing()
+        {
+            string ok = "{\"joint_names\":[\"root\",\"a\"],\"parents\":[-1,0],\"correctives\":[]," +
+                        "\"corrective_basis\":{\"targets\":[\"pose_basis_0\"],\"features\":9," +
+                        "\"matrix\":[1,0,0,0,2,0,0,0,3],\"scale\":[0.25],\"offset\":[0.5]}}";
+            string error;
+            SidecarLayout layout = SidecarLayout.Parse(ok, "x.smpl.json", out error);
+            Check(layout != null && layout.Basis != null && layout.Basis.Targets[0] == "pose_basis_0" &&
+                  layout.Basis.Matrix[4] == 2.0 && layout.Basis.Offset[0] == 0.5, "basis parsed: " + error);
+            if (layout != null && layout.Basis != null)
+            {
+                var f = new double[] { 0.1, 9, 9, 9, -0.2, 9, 9, 9, 0.3 };
+                var w = new double[1];
+                CorrectiveMath.ProjectBasis(layout.Basis, new[] { 0 }, f, w);
+                Check(Math.Abs(w[0] - (0.25 * (0.1 - 0.4 + 0.9) + 0.5)) < 1e-15, "basis weight = scale (C f) + offset: " + w[0]);
+            }
+            ExpectError(ok.Replace("[1,0,0,0,2,0,0,0,3]", "[1,0,0,0,2,0,0,0]"), "matrix must be an array of 9 numbers");
+            ExpectError(ok.Replace("\"features\":9", "\"features\":8"), "features must be 9");
+            ExpectError(ok.Replace("[0.25]", "[\"x\"]"), "scale[0] is not a number");
+            ExpectError(ok.Replace("[\"pose_basis_0\"]", "[3]"), "targets[0] is not a string");
         }
 
         static void ExpectError(string json, string expected)

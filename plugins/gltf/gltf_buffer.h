@@ -1,0 +1,33 @@
+// Internal to the glTF writer: the model under construction and its one binary
+// buffer. The bytes live in `bin`, outside tinygltf, so the GLB's BIN chunk is
+// written once from here instead of being copied through tinygltf's buffer,
+// its output stream and the GLB splice (the writer's main cost before).
+#pragma once
+
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace smpl {
+
+struct GltfBuild {
+  tinygltf::Model model;
+  std::string bin;  // buffer 0; every bufferView starts 4-byte aligned
+};
+
+inline size_t align4(size_t n) { return (n + 3) & ~size_t(3); }
+
+// Appends `size` raw bytes as a new bufferView (target 0: none; stride 0: tight).
+int addView(GltfBuild& b, const void* data, size_t size, int target, int stride = 0);
+
+// A new accessor over `view` (-1: none, e.g. Draco or all-zero sparse base).
+int addAccessor(GltfBuild& b, int view, int component_type, int type, size_t count,
+                bool normalized = false);
+
+// Per-component min/max of `count` float tuples of `n` components.
+void floatBounds(const float* values, size_t count, int n, std::vector<double>* min,
+                 std::vector<double>* max);
+
+}  // namespace smpl

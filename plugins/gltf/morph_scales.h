@@ -1,0 +1,40 @@
+// Per-target scales for quantized morph targets (WriterOptions::quantize_morphs).
+//
+// KHR_mesh_quantization stores morph deltas as normalised SHORT, i.e. values in
+// [-1, 1] with a step of 1/32767. glTF has no per-accessor dequantisation
+// scale, and the spec's shared transform (folded into the skin's inverse bind
+// matrices) would give every target the grid of the largest one and put a
+// scale into the bind pose, which the runtime formula of DESIGN.md assumes is
+// pure rotation/translation. Instead each corrective target n is stored as
+// d_n / s_n, s_n = max |component of d_n|, and s_n is folded into its weight:
+// the metadata mapping becomes weight = (s_n scale) f + (s_n offset), so
+// weight * stored delta is unchanged and the runtime formula
+// weight = scale * f + offset still holds with the file's own numbers. Rest
+// weights and animated weights are multiplied by s_n as well. The quantisation
+// error of target n is then at most s_n / 65534 per component instead of
+// 1 / 65534 m. Targets without a corrective entry (shape_<i>, expr_<i>) keep
+// FLOAT deltas and weight scale 1. Folding twice is the identity (after one
+// fold every scale is exactly 1), so the export job can fold the asset before
+// writing both the file and its sidecar, and the writer folds again harmlessly.
+#pragma once
+
+#include <vector>
+
+#include "exporter/asset.h"
+
+namespace smpl {
+
+// Quantized targets: correctives with some non-zero delta.
+std::vector<bool> quantizedTargets(const Asset& asset);
+
+// s_n per morph target: max |delta component| for quantized targets, else 1.
+std::vector<double> morphWeightScales(const Asset& asset);
+
+// Multiplies the metadata mapping of every corrective naming target n by s[n].
+void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mesh,
+                            AssetMetadata* metadata);
+
+// The whole fold on an asset: deltas / s_n, metadata, rest and animated weights * s_n.
+void foldMorphScales(Asset* asset);
+
+}  // namespace smpl
