@@ -65,14 +65,15 @@ Eigen::MatrixXf vertexNormals(const Eigen::MatrixXd& v, const Eigen::MatrixXi& f
   return n.cast<float>();
 }
 
-// Column `col` of a 3N-row direction matrix as asset-vertex deltas.
+// Column `col` of a 3N-row direction matrix, divided by `scale` (in double,
+// before rounding to float), as asset-vertex deltas.
 MorphTarget directionTarget(std::string name, const Eigen::MatrixXd& dirs, int col,
-                            const std::vector<int>& source_vertex) {
+                            const std::vector<int>& source_vertex, double scale = 1.0) {
   MorphTarget t;
   t.name = std::move(name);
   t.deltas.resize(static_cast<Eigen::Index>(source_vertex.size()), 3);
   for (size_t i = 0; i < source_vertex.size(); ++i)
-    for (int c = 0; c < 3; ++c) t.deltas(i, c) = static_cast<float>(dirs(3 * source_vertex[i] + c, col));
+    for (int c = 0; c < 3; ++c) t.deltas(i, c) = static_cast<float>(dirs(3 * source_vertex[i] + c, col) / scale);
   return t;
 }
 
@@ -102,7 +103,7 @@ void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset
     const CorrectiveLayout c = encodedLayout(model, n, o.encoding);
     // weight * delta must equal f * P: delta = P / scale; the offset's
     // contribution at every pose is removed from the stored base mesh.
-    MorphTarget t = directionTarget(c.target, model.posedirs / c.scale, n, mesh.source_vertex);
+    MorphTarget t = directionTarget(c.target, model.posedirs, n, mesh.source_vertex, c.scale);
     t.rest_weight = static_cast<float>(c.offset);
     if (c.offset != 0.0) shift += (c.offset / c.scale) * model.posedirs.col(n);
     mesh.morph_targets.push_back(std::move(t));
@@ -130,8 +131,8 @@ Status addCorrectiveBasis(const BodyModel& model, const ExportOptions& o, Asset*
     basis.targets.push_back("pose_basis_" + std::to_string(k));
     basis.scale.push_back(scale);
     basis.offset.push_back(offset);
-    MorphTarget t = directionTarget(basis.targets.back(), fit->basis / scale, static_cast<int>(k),
-                                    asset->mesh.source_vertex);
+    MorphTarget t = directionTarget(basis.targets.back(), fit->basis, static_cast<int>(k),
+                                    asset->mesh.source_vertex, scale);
     t.rest_weight = static_cast<float>(offset);
     shift += (offset / scale) * fit->basis.col(k);
     asset->mesh.morph_targets.push_back(std::move(t));
