@@ -133,6 +133,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   if (s.model.empty()) return makeError("missing --model PATH (use --model builtin for the demo body)");
   if (has("--betas") && has("--betas-file")) return makeError("--betas and --betas-file conflict: give one");
   if (has("--betas-from-motion") && s.betas_given) return makeError("--betas-from-motion conflicts with --betas/--betas-file");
+  if (has("--corrective-basis") && !s.export_options.correctives)
+    return makeError("--corrective-basis conflicts with --correctives none");
   const bool batch = !s.motion_dir.empty() || !s.out_dir.empty();
   const bool animated = !s.motions.empty() || batch;
   for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion"})

@@ -41,6 +41,9 @@ TEST(Settings, RejectsBeforeWork) {
       {{"--model", "builtin", "--out", "a.glb", "--max-influences", "2.5"}, "is not an integer"},
       {{"--model", "builtin", "--out", "a.glb", "--out", "b.glb"}, "given twice"},
       {{"--model", "builtin", "--out"}, "needs a value"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--correctives", "none"}, "conflicts with --correctives none"},
+      {{"--model", "builtin", "--out", "a.fbx", "--draco"}, "applies only to glTF"},
+      {{"--model", "builtin", "--out", "a.glb", "--frames", "0:10"}, "needs --motion"},
   };
   for (const Bad& c : cases) {
     Result<Settings> s = parse(c.args);
