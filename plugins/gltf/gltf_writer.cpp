@@ -1,8 +1,11 @@
 // glTF 2.0 / GLB writer. Translates an Asset into a tinygltf::Model (one
-// buffer, one 4-byte aligned bufferView per accessor) and lets tinygltf write
-// the JSON and the GLB container. Computes nothing about the body: it only
-// converts layouts (row-major floats, glTF's v = 1 - v, 4-slot skin sets) and
-// tidies float rounding so the Khronos validator reports no warnings.
+// buffer, one 4-byte aligned bufferView per accessor); tinygltf writes the
+// JSON, and the GLB container and binary chunk are laid out here
+// (gltf_buffer.h) so the buffer is copied once. Morph targets may be sparse or
+// quantized (gltf_morphs.h, morph_scales.h) and the base mesh Draco-compressed
+// (gltf_draco.h). Computes nothing about the body: it only converts layouts
+// (row-major floats, glTF's v = 1 - v, 4-slot skin sets) and tidies float
+// rounding so the Khronos validator reports no warnings.
 #include "plugins/gltf/gltf_writer.h"
 
 #include <tiny_gltf.h>
