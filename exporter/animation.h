@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/motion.h"
+#include "core/load/motion.h"
 #include "core/result.h"
 #include "exporter/asset.h"
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <string>
 
-#include "core/forward.h"
-#include "core/pose_sampler.h"
+#include "core/math/forward.h"
+#include "core/math/pose_sampler.h"
 
 namespace smpl {
 namespace {

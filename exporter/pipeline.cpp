@@ -4,10 +4,10 @@
 #include <numeric>
 #include <optional>
 
-#include "core/forward.h"
-#include "core/skin_weights.h"
+#include "core/math/forward.h"
+#include "core/math/skin_weights.h"
 #include "exporter/corrective_basis.h"
-#include "exporter/uv_obj.h"
+#include "core/load/uv_obj.h"
 
 namespace smpl {
 namespace {

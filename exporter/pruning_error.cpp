@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "core/forward.h"
-#include "core/pose_sampler.h"
-#include "core/skin_weights.h"
+#include "core/math/forward.h"
+#include "core/math/pose_sampler.h"
+#include "core/math/skin_weights.h"
 
 namespace smpl {
 

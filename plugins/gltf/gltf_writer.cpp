@@ -20,7 +20,7 @@
 #include "plugins/gltf/gltf_buffer.h"
 #include "plugins/gltf/gltf_draco.h"
 #include "plugins/gltf/gltf_morphs.h"
-#include "plugins/gltf/morph_scales.h"
+#include "exporter/morph_scales.h"
 
 namespace smpl {
 namespace {

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/npy.h"
+#include "core/io/npy.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   smpl::Result<smpl::Array> r = smpl::parseNpy(data, size, "fuzz.npy");

@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/npz.h"
+#include "core/io/npz.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   smpl::Result<smpl::ArrayDict> r = smpl::parseNpz(data, size, "fuzz.npz");

@@ -25,21 +25,11 @@ if(NOT SMPL_NODE)
 endif()
 option(SMPL_ROUNDTRIP_FBX "Also round-trip FBX output through Blender" ON)
 
-# --- the Blender add-on as an installable zip: <build>/smpl_correctives.zip
-set(SMPL_ADDON_FILES smpl_correctives/__init__.py smpl_correctives/correctives.py)
-set(SMPL_ADDON_ZIP ${CMAKE_BINARY_DIR}/smpl_correctives.zip)
-add_custom_command(OUTPUT ${SMPL_ADDON_ZIP}
-  COMMAND ${CMAKE_COMMAND} -E tar cf ${SMPL_ADDON_ZIP} --format=zip "--mtime=2000-01-01 00:00:00 UTC"
-          ${SMPL_ADDON_FILES}
-  WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}/blender
-  DEPENDS ${PROJECT_SOURCE_DIR}/blender/smpl_correctives/__init__.py
-          ${PROJECT_SOURCE_DIR}/blender/smpl_correctives/correctives.py
-  COMMENT "Packaging the Blender add-on: smpl_correctives.zip")
-add_custom_target(blender_addon ALL DEPENDS ${SMPL_ADDON_ZIP})
+# The Blender add-on zip (blender_addon, <build>/smpl_correctives.zip) is
+# built by blender/CMakeLists.txt.
 
-# --- smpl-reference: the C++ forward pass for seeded random poses
-add_executable(smpl-reference ${PROJECT_SOURCE_DIR}/tests/tools/reference_tool.cpp)
-target_link_libraries(smpl-reference PRIVATE smpl_core)
+# smpl-reference (the C++ forward pass for seeded random poses) is built by
+# tools/CMakeLists.txt.
 
 set(SMPL_BLENDER_RUN ${SMPL_BLENDER} -b --factory-startup --python-exit-code 1 --python)
 

@@ -1,4 +1,4 @@
-#include "core/demo_body.h"
+#include "core/demo/demo_body.h"
 
 #include <gtest/gtest.h>
 
@@ -11,11 +11,11 @@
 #include <numeric>
 #include <utility>
 
-#include "core/demo_body_internal.h"
-#include "core/forward.h"
+#include "core/demo/demo_body_internal.h"
+#include "core/math/forward.h"
 #include "core/joint_names.h"
-#include "core/model_loader.h"
-#include "core/pose_sampler.h"
+#include "core/load/model_loader.h"
+#include "core/math/pose_sampler.h"
 
 namespace smpl {
 namespace {

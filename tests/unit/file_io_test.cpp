@@ -1,6 +1,6 @@
 // Tests for whole-file reads, atomic writes and baseName. Each test works in
 // its own scratch directory so leftover temporary files can be detected.
-#include "core/file_io.h"
+#include "core/io/file_io.h"
 
 #include <dirent.h>
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
-#include "core/forward_batch.h"
+#include "core/math/forward_batch.h"
 
 #include <gtest/gtest.h>
 
-#include "core/model_loader.h"
-#include "core/pose_sampler.h"
-#include "core/skin_weights.h"
+#include "core/load/model_loader.h"
+#include "core/math/pose_sampler.h"
+#include "core/math/skin_weights.h"
 
 namespace smpl {
 namespace {

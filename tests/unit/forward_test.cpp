@@ -1,11 +1,11 @@
 // The C++ forward pass against the independent numpy implementation in
 // tests/fixtures/make_models.py, for every layout and container: 1e-9 m.
-#include "core/forward.h"
+#include "core/math/forward.h"
 
 #include <gtest/gtest.h>
 
-#include "core/model_loader.h"
-#include "core/npz.h"
+#include "core/load/model_loader.h"
+#include "core/io/npz.h"
 
 namespace smpl {
 namespace {

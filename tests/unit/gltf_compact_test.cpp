@@ -8,8 +8,8 @@
 #include <random>
 
 #include "plugins/gltf/gltf_writer.h"
-#include "plugins/gltf/morph_error.h"
-#include "plugins/gltf/morph_scales.h"
+#include "tools/morph_error.h"
+#include "exporter/morph_scales.h"
 
 namespace smpl {
 namespace {

@@ -1,11 +1,11 @@
 // Model validation: every bad array gives one line naming the file and the problem.
-#include "core/model_loader.h"
+#include "core/load/model_loader.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/npz.h"
+#include "core/io/npz.h"
 
 namespace smpl {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/motion.h"
+#include "core/load/motion.h"
 
 #include <gtest/gtest.h>
 

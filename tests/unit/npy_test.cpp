@@ -1,7 +1,7 @@
 // Tests for the .npy reader. Good inputs are written by numpy
 // (tests/fixtures/make_npy_cases.py) and compared with the values numpy
 // itself reports; bad inputs are built here by editing headers and bytes.
-#include "core/npy.h"
+#include "core/io/npy.h"
 
 #include <gtest/gtest.h>
 

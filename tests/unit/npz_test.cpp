@@ -1,7 +1,7 @@
 // Tests for the .npz reader: archives written by np.savez,
 // np.savez_compressed and Python's zipfile (tests/fixtures/make_npy_cases.py)
 // against the values np.load returned; errors must name archive and member.
-#include "core/npz.h"
+#include "core/io/npz.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "core/pickle.h"
+#include "core/io/pickle/pickle.h"
 
 namespace smpl {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <fstream>
 
-#include "core/forward.h"
-#include "core/model_loader.h"
+#include "core/math/forward.h"
+#include "core/load/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/skin_weights.h"
+#include "core/math/skin_weights.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Tests for the zip reader. Archives written by numpy / Python's zipfile come
 // from tests/fixtures/make_npy_cases.py; hostile ones are assembled here with
 // a tiny writer and then patched field by field (offsets per APPNOTE.TXT).
-#include "core/zip.h"
+#include "core/io/zip.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>

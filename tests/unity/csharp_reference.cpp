@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "core/forward.h"
-#include "core/model_loader.h"
-#include "core/pose_sampler.h"
+#include "core/math/forward.h"
+#include "core/load/model_loader.h"
+#include "core/math/pose_sampler.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
 

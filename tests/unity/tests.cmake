@@ -1,10 +1,10 @@
 # Unity runtime (unity/Runtime/*.cs) tested without Unity: compiled by mono's
 # mcs against a hand-written stub of the UnityEngine types it uses, and checked
-# against features from the C++ reference (core/forward.h) for world rotations
+# against features from the C++ reference (core/math/forward.h) for world rotations
 # as Unity reports them. Included from tests/CMakeLists.txt.
 
 add_executable(smpl-csharp-reference ${CMAKE_CURRENT_LIST_DIR}/csharp_reference.cpp)
-target_link_libraries(smpl-csharp-reference PRIVATE smpl_exporter smpl_core)
+target_link_libraries(smpl-csharp-reference PRIVATE smpl_exporter smpl_load)
 
 find_program(SMPL_MCS mcs)
 find_program(SMPL_MONO mono)

@@ -1,0 +1,116 @@
+#include "cli/export_job.h"
+
+#include <chrono>
+#include <cstdio>
+#include <unistd.h>
+
+#include "core/io/file_io.h"
+#include "core/load/motion.h"
+#include "exporter/animation.h"
+#include "exporter/metadata_json.h"
+#include "exporter/pipeline.h"
+#include "exporter/morph_scales.h"
+#include "plugins/writer.h"
+
+namespace smpl {
+namespace {
+
+Error fail(JobFailure* failure, ExitCode code, const std::string& verb, const std::string& path,
+           const std::string& message) {
+  failure->code = code;
+  failure->message = errorLine(verb, path, message);
+  return makeError(failure->message);
+}
+
+void drawProgress(const std::string& name, double fraction) {
+  const int width = 30, filled = static_cast<int>(fraction * width);
+  std::fprintf(stderr, "\r%-24.24s [%s%s] %3d%%", name.c_str(), std::string(filled, '#').c_str(),
+               std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100));
+  if (fraction >= 1.0) std::fprintf(stderr, "\n");
+}
+
+Result<std::vector<Motion>> loadMotions(const ExportJob& job, JobFailure* failure) {
+  std::vector<Motion> motions;
+  for (const std::string& path : job.motions) {
+    Result<Motion> m = loadMotion(path);
+    if (!m) return fail(failure, kExitLoad, "loading", path, m.message());
+    motions.push_back(std::move(*m));
+  }
+  return motions;
+}
+
+// Betas from the first motion when the user gave none (--betas-from-motion).
+void betasFromMotion(const BodyModel& model, const std::vector<Motion>& motions, ExportOptions* o) {
+  if (motions.empty() || motions[0].betas.empty()) return;
+  const size_t n = std::min(motions[0].betas.size(), static_cast<size_t>(model.numBetas()));
+  o->betas.assign(motions[0].betas.begin(), motions[0].betas.begin() + n);
+}
+
+Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
+                   Asset* asset, ExportReport* report) {
+  for (size_t i = 0; i < motions.size(); ++i) {
+    const Motion& m = motions[i];
+    Progress progress;
+    if (job.progress) progress = [&](double f) { drawProgress(m.name, f); };
+    Result<AnimationClip> clip = bakeAnimation(model, *asset, m, s.animation, job.motions[i], progress);
+    if (!clip) return clip.error();
+    Result<MotionMapping> mapping = mapMotion(model, m, job.motions[i]);
+    if (mapping && !mapping->dropped.empty())
+      report->notes.push_back(m.name + ": " + std::to_string(mapping->dropped.size()) + " " +
+                              modelKindName(m.layout) + " joints not in the model were dropped (" +
+                              mapping->dropped.front() + ", ...)");
+    report->frames += static_cast<int>(clip->times.size());
+    asset->animations.push_back(std::move(*clip));
+  }
+  return Status();
+}
+
+Status writeOutputs(const std::string& out, const std::string& bytes, const std::string& metadata) {
+  if (Status st = writeFileAtomic(out, bytes); !st) return st;
+  if (Status st = writeFileAtomic(out + ".smpl.json", metadata); !st) {
+    std::remove(out.c_str());  // the file and its metadata go together
+    return st;
+  }
+  return Status();
+}
+
+}  // namespace
+
+std::string errorLine(const std::string& verb, const std::string& path, const std::string& message) {
+  if (message.compare(0, path.size() + 1, path + ":") == 0) return "Error " + verb + " " + message;
+  return "Error " + verb + " " + path + ": " + message;
+}
+
+Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job, JobFailure* failure) {
+  const auto start = std::chrono::steady_clock::now();
+  const Writer* writer = writerForPath(job.out);
+  if (!writer) return fail(failure, kExitUsage, "in", "arguments", "no writer for " + job.out);
+  Result<std::vector<Motion>> motions = loadMotions(job, failure);
+  if (!motions) return motions.error();
+  ExportOptions options = s.export_options;
+  if (!s.betas_given) betasFromMotion(model, *motions, &options);
+  if (options.encoding == CorrectiveEncoding::Auto)  // baked weights must survive importers that clamp
+    options.encoding = motions->empty() ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
+  Result<Asset> asset = buildAsset(model, options);
+  if (!asset) return fail(failure, kExitExport, "exporting", job.out, asset.message());
+  ExportReport report;
+  if (Status st = bakeMotions(model, s, job, *motions, &*asset, &report); !st)
+    return fail(failure, kExitExport, "exporting", job.out, st.message());
+  // Quantized targets carry their scale in the weight mapping: fold it here so
+  // the sidecar and the file agree.
+  if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
+  Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
+  if (!bytes) return fail(failure, kExitExport, "exporting", job.out, bytes.message());
+  if (Status st = writeOutputs(job.out, *bytes, metadataJson(*asset)); !st)
+    return fail(failure, kExitSave, "saving", job.out, st.message());
+  report.options = options;
+  report.bytes = bytes->size();
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.vertices = static_cast<int>(asset->mesh.positions.rows());
+  report.joints = static_cast<int>(asset->skeleton.names.size());
+  report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
+  report.max_influences = asset->metadata.max_influences;
+  return report;
+}
+
+}  // namespace smpl

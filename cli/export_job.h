@@ -1,0 +1,44 @@
+// One export: model + settings + motions -> one output file and its sidecar,
+// written atomically. Shared by the single-file CLI and the batch runner.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/body_model.h"
+#include "core/result.h"
+#include "cli/settings.h"
+
+namespace smpl {
+
+enum ExitCode { kExitOk = 0, kExitUsage = 1, kExitLoad = 2, kExitExport = 3, kExitSave = 4 };
+
+struct ExportJob {
+  std::string out;
+  std::vector<std::string> motions;
+  bool progress = false;  // draw a progress bar on stderr while baking
+};
+
+struct ExportReport {
+  size_t bytes = 0;
+  double seconds = 0.0;
+  int vertices = 0, joints = 0, morph_targets = 0, max_influences = 0;
+  int frames = 0;  // total animation frames written
+  std::vector<std::string> notes;  // e.g. motion joints dropped by the mapping
+  ExportOptions options;           // as used (betas may come from the motion)
+};
+
+struct JobFailure {
+  ExitCode code;
+  std::string message;  // "Error loading walk.npz: ..."
+};
+
+// "Error <verb> <path>: <reason>", without repeating the path when the reason
+// already starts with it (core errors name their file).
+std::string errorLine(const std::string& verb, const std::string& path, const std::string& message);
+
+// Returns the report, or fills `failure` and returns an Error.
+Result<ExportReport> runExport(const BodyModel& model, const Settings& settings, const ExportJob& job,
+                               JobFailure* failure);
+
+}  // namespace smpl

@@ -1,0 +1,58 @@
+// smpl-export: a thin main. Parse and check every option, load the model,
+// then run one export (or a batch); print a summary.
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
+
+#include "core/demo/demo_body.h"
+#include "core/load/model_loader.h"
+#include "cli/batch.h"
+#include "cli/export_job.h"
+#include "exporter/pruning_error.h"
+#include "cli/settings.h"
+
+using namespace smpl;
+
+namespace {
+
+void printSummary(const std::string& out, const ExportReport& r, const PruningError& err) {
+  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n", out.c_str(), r.vertices, r.joints,
+              r.morph_targets, r.bytes / 1e6, r.seconds * 1e3);
+  if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
+  for (const std::string& note : r.notes) std::printf("note: %s\n", note.c_str());
+  std::printf("skinning error of %d influences vs all (%d random poses): mean %.3f mm, max %.3f mm\n",
+              r.max_influences, err.poses, err.mean_m * 1e3, err.max_m * 1e3);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Result<Settings> parsed = parseSettings(argc, argv);
+  if (!parsed) return std::fprintf(stderr, "Error in arguments: %s\n", parsed.message().c_str()), kExitUsage;
+  Settings& s = *parsed;
+  if (s.help) return std::printf("%s", usageText().c_str()), kExitOk;
+  if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
+
+  if (!s.betas_file.empty()) {
+    Result<std::vector<double>> betas = readBetasFile(s.betas_file);
+    if (!betas) return std::fprintf(stderr, "%s\n", errorLine("loading", s.betas_file, betas.message()).c_str()), kExitLoad;
+    s.export_options.betas = *betas;
+  }
+  Result<BodyModel> loaded = s.model == "builtin" ? Result<BodyModel>(demoBody()) : loadModel(s.model);
+  if (!loaded) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, loaded.message()).c_str()), kExitLoad;
+
+  if (!s.motion_dir.empty()) {
+    BatchSummary summary = runBatch(*loaded, s);
+    return summary.failed > 0 ? kExitExport : kExitOk;
+  }
+  JobFailure failure{kExitOk, ""};
+  Result<ExportReport> report = runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet}, &failure);
+  if (!report) return std::fprintf(stderr, "%s\n", failure.message.c_str()), failure.code;
+  if (!s.quiet) {
+    Result<PruningError> err = measurePruningError(*loaded, report->options, s.error_poses);
+    if (!err) return std::fprintf(stderr, "Error measuring %s: %s\n", s.out.c_str(), err.message().c_str()), kExitExport;
+    printSummary(s.out, *report, *err);
+  }
+  return kExitOk;
+}

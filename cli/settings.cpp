@@ -1,0 +1,276 @@
+#include "cli/settings.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/io/npy.h"
+#include "core/io/npz.h"
+
+namespace smpl {
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Result<double> parseNumber(const std::string& text, const std::string& option) {
+  errno = 0;
+  char* end = nullptr;
+  double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v))
+    return makeError(option + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+Result<int> parseInt(const std::string& text, const std::string& option) {
+  Result<double> v = parseNumber(text, option);
+  if (!v || *v != std::floor(*v) || std::abs(*v) > 1e6) return makeError(option + ": '" + text + "' is not an integer");
+  return static_cast<int>(*v);
+}
+
+Result<std::vector<double>> parseList(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    Result<double> v = parseNumber(item, option);
+    if (!v) return v.error();
+    values.push_back(*v);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
+
+// "A:B" (B exclusive, either may be empty) -> frame range.
+Status parseFrames(const std::string& value, AnimationOptions* a) {
+  size_t colon = value.find(':');
+  if (colon == std::string::npos) return makeError("--frames: expected A:B, got '" + value + "'");
+  const std::string first = value.substr(0, colon), end = value.substr(colon + 1);
+  if (!first.empty()) {
+    Result<int> v = parseInt(first, "--frames");
+    if (!v || *v < 0) return makeError("--frames: bad start '" + first + "'");
+    a->first_frame = *v;
+  }
+  if (!end.empty()) {
+    Result<int> v = parseInt(end, "--frames");
+    if (!v || *v <= a->first_frame) return makeError("--frames: end must be after start in '" + value + "'");
+    a->end_frame = *v;
+  }
+  return Status();
+}
+
+// One option with its value; returns an error for unknown names.
+Status applyOption(const std::string& name, const std::string& value, Settings* s) {
+  ExportOptions& e = s->export_options;
+  auto intInto = [&](int* target) -> Status {
+    Result<int> v = parseInt(value, name);
+    if (!v) return v.error();
+    *target = *v;
+    return Status();
+  };
+  if (name == "--motion") s->motions.push_back(value);
+  else if (name == "--motion-dir") s->motion_dir = value;
+  else if (name == "--out-dir") s->out_dir = value;
+  else if (name == "--threads") return intInto(&s->threads);
+  else if (name == "--format") {
+    if (value != "glb" && value != "gltf" && value != "fbx") return makeError("--format: expected glb, gltf or fbx, got '" + value + "'");
+    s->format = value;
+  } else if (name == "--fps") {
+    Result<double> v = parseNumber(value, name);
+    if (!v || *v <= 0 || *v > 1000) return makeError("--fps: expected a rate in (0, 1000], got '" + value + "'");
+    s->animation.fps = *v;
+  } else if (name == "--frames") {
+    return parseFrames(value, &s->animation);
+  } else if (name == "--up") {
+    if (value != "y" && value != "z") return makeError("--up: expected 'y' or 'z', got '" + value + "'");
+    s->animation.up = value == "y" ? UpAxis::Y : UpAxis::Z;
+  } else if (name == "--root-motion") {
+    if (value != "keep" && value != "in-place") return makeError("--root-motion: expected 'keep' or 'in-place', got '" + value + "'");
+    s->animation.in_place = value == "in-place";
+  } else if (name == "--model") s->model = value;
+  else if (name == "--out") s->out = value;
+  else if (name == "--betas-file") s->betas_file = value;
+  else if (name == "--uv") e.uv_obj = value;
+  else if (name == "--name") e.name = value;
+  else if (name == "--max-influences") return intInto(&e.max_influences);
+  else if (name == "--shape-keys") return intInto(&e.shape_keys);
+  else if (name == "--expression-keys") return intInto(&e.expression_keys);
+  else if (name == "--betas" || name == "--expression") {
+    Result<std::vector<double>> v = parseList(value, name);
+    if (!v) return v.error();
+    (name == "--betas" ? e.betas : e.expression) = *v;
+  } else if (name == "--correctives") {
+    if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
+    e.correctives = value == "all";
+  } else if (name == "--corrective-epsilon") {
+    Result<double> v = parseNumber(value, name);
+    if (!v || *v < 0 || *v > 0.01) return makeError("--corrective-epsilon: expected metres in [0, 0.01], got '" + value + "'");
+    s->writer_options.morph_epsilon = *v;
+  } else if (name == "--corrective-basis") {
+    return intInto(&e.corrective_basis);
+  } else if (name == "--corrective-weights") {
+    if (value != "signed" && value != "unit") return makeError("--corrective-weights: expected 'signed' or 'unit', got '" + value + "'");
+    e.encoding = value == "unit" ? CorrectiveEncoding::Unit : CorrectiveEncoding::Signed;
+  } else if (name == "--fbx-version") {
+    if (value != "7400" && value != "7500") return makeError("--fbx-version: expected 7400 or 7500, got '" + value + "'");
+    s->writer_options.fbx_version = value == "7400" ? 7400 : 7500;
+  } else if (name == "--fbx-units") {
+    if (value != "m" && value != "cm") return makeError("--fbx-units: expected 'm' or 'cm', got '" + value + "'");
+    s->writer_options.fbx_units = value;
+  } else {
+    return makeError("unknown option '" + name + "' (see --help)");
+  }
+  return Status();
+}
+
+Status checkConflicts(const Settings& s, const std::vector<std::string>& given) {
+  auto has = [&](const char* o) { return std::find(given.begin(), given.end(), o) != given.end(); };
+  if (s.model.empty()) return makeError("missing --model PATH (use --model builtin for the demo body)");
+  if (has("--betas") && has("--betas-file")) return makeError("--betas and --betas-file conflict: give one");
+  if (has("--betas-from-motion") && s.betas_given) return makeError("--betas-from-motion conflicts with --betas/--betas-file");
+  if (has("--corrective-basis") && !s.export_options.correctives)
+    return makeError("--corrective-basis conflicts with --correctives none");
+  const bool batch = !s.motion_dir.empty() || !s.out_dir.empty();
+  const bool animated = !s.motions.empty() || batch;
+  for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion"})
+    if (has(o) && !animated) return makeError(std::string(o) + " needs --motion or --motion-dir");
+  if (batch) {
+    if (s.motion_dir.empty() || s.out_dir.empty()) return makeError("batch mode needs both --motion-dir and --out-dir");
+    if (!s.out.empty() || !s.motions.empty()) return makeError("--motion-dir/--out-dir conflict with --out/--motion");
+    if (has("--fbx-units") && s.format != "fbx") return makeError("--fbx-units applies only to --format fbx");
+    return Status();
+  }
+  if (has("--format") || has("--threads")) return makeError("--format and --threads apply only to batch mode (--motion-dir)");
+  if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
+  const bool fbx = endsWith(s.out, ".fbx");
+  if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
+    return makeError("--out " + s.out + ": unknown format (expected .glb, .gltf or .fbx)");
+  for (const char* o : {"--fbx-units", "--fbx-version"})
+    if (has(o) && !fbx) return makeError(std::string(o) + " applies only to .fbx output");
+  for (const char* o : {"--corrective-epsilon", "--quantize-morphs", "--draco"})
+    if (has(o) && fbx) return makeError(std::string(o) + " applies only to glTF output");
+  return Status();
+}
+
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco"};
+
+}  // namespace
+
+Result<Settings> parseSettings(int argc, const char* const* argv) {
+  Settings s;
+  std::vector<std::string> given;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    std::string value;
+    if (size_t eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+    } else if (std::find(std::begin(kFlags), std::end(kFlags), arg) == std::end(kFlags)) {
+      if (i + 1 >= argc) return makeError("option " + arg + " needs a value");
+      value = argv[++i];
+    }
+    if (arg != "--motion" && std::find(given.begin(), given.end(), arg) != given.end())
+      return makeError("option " + arg + " given twice");
+    given.push_back(arg);
+    if (arg == "--help" || arg == "-h") s.help = true;
+    else if (arg == "--version") s.version = true;
+    else if (arg == "--quiet" || arg == "-q") s.quiet = true;
+    else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
+    else if (arg == "--quantize-morphs") s.writer_options.quantize_morphs = true;
+    else if (arg == "--draco") s.writer_options.draco = true;
+    else if (Status st = applyOption(arg, value, &s); !st) return st.error();
+  }
+  s.betas_given = std::find(given.begin(), given.end(), "--betas") != given.end() ||
+                  std::find(given.begin(), given.end(), "--betas-file") != given.end();
+  s.writer_options.binary = !endsWith(s.out, ".gltf") && s.format != "gltf";
+  if (s.help || s.version) return s;
+  if (Status st = checkConflicts(s, given); !st) return st.error();
+  return s;
+}
+
+Result<std::vector<double>> readBetasFile(const std::string& path) {
+  if (endsWith(path, ".npy") || endsWith(path, ".npz")) {
+    Array a;
+    if (endsWith(path, ".npy")) {
+      Result<Array> r = readNpyFile(path);
+      if (!r) return r.error();
+      a = std::move(*r);
+    } else {
+      Result<ArrayDict> d = readNpzFile(path);
+      if (!d) return d.error();
+      auto it = d->find("betas");
+      if (it == d->end()) return makeError(path + ": missing key 'betas'");
+      a = it->second;
+    }
+    if (a.isString() || a.shape.size() > 2 || (a.shape.size() == 2 && a.shape[0] != 1))
+      return makeError(path + ": 'betas' has shape " + shapeString(a.shape) + "; expected (B,) or (1,B)");
+    return a.data;
+  }
+  std::ifstream in(path);
+  if (!in) return makeError(path + ": cannot open");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) return makeError(path + ": not valid JSON");
+  if (j.is_object() && j.contains("betas")) j = j["betas"];
+  if (!j.is_array()) return makeError(path + ": expected a JSON array of numbers or {\"betas\": [...]}");
+  std::vector<double> betas;
+  for (const auto& v : j) {
+    if (!v.is_number() || !std::isfinite(v.get<double>())) return makeError(path + ": 'betas' holds a non-number");
+    betas.push_back(v.get<double>());
+  }
+  return betas;
+}
+
+std::string usageText() {
+  return R"(smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose correctives
+
+Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
+
+  --model PATH|builtin   model file (.npz or .pkl from the model's authors), or the built-in demo body
+  --out FILE             output; format from the extension. Also writes FILE.smpl.json (metadata)
+  --betas v,v,...        shape coefficients (fewer than the model has are zero-padded)
+  --betas-file FILE      betas from .npy, .npz (key 'betas') or .json
+  --expression v,v,...   SMPL-X expression coefficients
+  --max-influences N     skin influences per vertex, 1..8 (default 4; >4 writes JOINTS_1/WEIGHTS_1)
+  --correctives all|none pose-corrective morph targets (default all)
+  --corrective-weights signed|unit
+                         signed: weight = pose feature f, in [-2, 1] (default without --motion);
+                         unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1],
+                         for engines/importers that clamp weights (default with --motion: Blender
+                         clamps animated weights); the mapping is in the metadata
+  --corrective-basis K   replace the corrective targets by K principal components of posedirs
+                         (weights = C f; C in the metadata; runtime scripts apply it)
+  --corrective-epsilon M glTF: drop morph deltas up to M metres, write sparse accessors
+  --quantize-morphs      glTF: int16 morph deltas (KHR_mesh_quantization)
+  --draco                glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)
+  --shape-keys N         also export the first N shape directions as morph targets shape_<i>
+  --expression-keys N    also export the first N expression directions (SMPL-X) as expr_<i>
+  --uv OBJ               UVs from an OBJ sharing the model's vertex order (seams split vertices)
+  --name NAME            mesh name (default body)
+  --fbx-units m|cm       FBX geometry units (default m)
+  --fbx-version 7400|7500  FBX binary version (default 7400)
+
+Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rotation matrices):
+  --motion FILE          bake FILE as an animation (repeatable: one animation each)
+  --fps F                resample to F frames per second (slerp/lerp; default: the motion's rate)
+  --frames A:B           source frames A (inclusive) to B (exclusive); either may be empty
+  --betas-from-motion    use the motion's betas (the default when no --betas/--betas-file)
+  --up y|z               up axis of the motion's world (default: z for AMASS files, else y);
+                         output is always Y-up
+  --root-motion keep|in-place   keep or drop horizontal root motion (default keep)
+  --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json in DIR, in parallel, skipping
+                         outputs newer than their inputs; per-file errors do not stop the batch
+  --format glb|gltf|fbx  batch output format (default glb)
+  --threads N            batch workers (default: all cores)
+  --quiet, -q            no summary
+  --version, --help
+
+Exit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write output.
+)";
+}
+
+}  // namespace smpl

@@ -1,0 +1,123 @@
+// Whole-file reads and atomic writes on POSIX file descriptors, so that every
+// failure can be reported with strerror and a failed write leaves no file.
+#include "core/io/file_io.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+namespace smpl {
+namespace {
+
+Error ioError(const std::string& path, const char* what, int err) {
+  return makeError(path + ": " + what + ": " + std::strerror(err));
+}
+
+// Closes the descriptor on every return path.
+struct Fd {
+  int fd = -1;
+  explicit Fd(int f) : fd(f) {}
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+};
+
+// Reads until EOF; works for regular files, pipes and /dev/stdin alike.
+// `hint` (the file size when known) sizes the buffer so a regular file is read
+// without regrowing: the +1 leaves room for the read that returns EOF.
+Status readAll(int fd, const std::string& path, size_t hint, std::vector<uint8_t>& out) {
+  size_t used = 0;
+  out.resize(std::max<size_t>(hint + 1, 65536));
+  for (;;) {
+    if (used == out.size()) out.resize(out.size() * 2);
+    ssize_t n = ::read(fd, out.data() + used, out.size() - used);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return ioError(path, "cannot read", errno);
+    if (n == 0) break;
+    used += static_cast<size_t>(n);
+  }
+  out.resize(used);
+  return Status();
+}
+
+Status writeAll(int fd, const std::string& path, const uint8_t* p, size_t size) {
+  while (size > 0) {
+    ssize_t n = ::write(fd, p, std::min<size_t>(size, 1u << 30));
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return ioError(path, "cannot write", errno);
+    p += n;
+    size -= static_cast<size_t>(n);
+  }
+  return Status();
+}
+
+std::string dirName(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+// Makes the rename itself durable; best effort, a failure here loses nothing.
+void syncDirectory(const std::string& path) {
+  Fd dir(::open(dirName(path).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (dir.fd >= 0) ::fsync(dir.fd);
+}
+
+Status writeTemp(const std::string& tmp, const std::string& path, const void* data, size_t size) {
+  Fd fd(::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666));
+  if (fd.fd < 0) return ioError(path, "cannot create temporary file", errno);
+  if (Status st = writeAll(fd.fd, path, static_cast<const uint8_t*>(data), size); !st) return st;
+  if (::fsync(fd.fd) != 0) return ioError(path, "cannot write (fsync)", errno);
+  int f = fd.fd;
+  fd.fd = -1;
+  if (::close(f) != 0) return ioError(path, "cannot write (close)", errno);
+  return Status();
+}
+
+}  // namespace
+
+Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
+  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (fd.fd < 0) return ioError(path, "cannot open", errno);
+  std::vector<uint8_t> bytes;
+  struct stat st;
+  size_t hint = 0;
+  if (::fstat(fd.fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
+    hint = static_cast<size_t>(st.st_size);
+  if (Status s = readAll(fd.fd, path, hint, bytes); !s) return s.error();
+  return bytes;
+}
+
+Status writeFileAtomic(const std::string& path, const void* data, size_t size) {
+  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
+  Status st = writeTemp(tmp, path, data, size);
+  if (st && ::rename(tmp.c_str(), path.c_str()) != 0)
+    st = ioError(path, "cannot rename temporary file into place", errno);
+  if (!st) {
+    ::unlink(tmp.c_str());
+    return st;
+  }
+  syncDirectory(path);
+  return Status();
+}
+
+std::string baseName(const std::string& path) {
+  size_t end = path.find_last_not_of('/');
+  if (end == std::string::npos) return path;  // "" or "/"
+  size_t slash = path.find_last_of('/', end);
+  size_t begin = slash == std::string::npos ? 0 : slash + 1;
+  return path.substr(begin, end + 1 - begin);
+}
+
+bool hasSuffix(const std::string& path, const std::string& suffix) {
+  return path.size() >= suffix.size() &&
+         path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace smpl

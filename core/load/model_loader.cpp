@@ -1,0 +1,188 @@
+#include "core/load/model_loader.h"
+
+#include <cmath>
+#include <cstring>
+
+#include "core/io/file_io.h"
+#include "core/joint_names.h"
+#include "core/io/npz.h"
+#include "core/io/pickle/pickle.h"
+
+namespace smpl {
+namespace {
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// Shapes in errors use the numbers we expect where known, -1 where free.
+std::string expectedString(const std::vector<int64_t>& shape) {
+  std::string s = "(";
+  for (size_t i = 0; i < shape.size(); ++i) s += (i ? "," : "") + (shape[i] < 0 ? std::string("*") : std::to_string(shape[i]));
+  return s + (shape.size() == 1 ? ",)" : ")");
+}
+
+bool shapeMatches(const Array& a, const std::vector<int64_t>& expected) {
+  if (a.shape.size() != expected.size()) return false;
+  for (size_t i = 0; i < expected.size(); ++i)
+    if (expected[i] >= 0 && a.shape[i] != expected[i]) return false;
+  return true;
+}
+
+struct Arrays {
+  const ArrayDict& dict;
+  std::string context;
+
+  const Array* find(const std::string& key) const {
+    auto it = dict.find(key);
+    return it == dict.end() ? nullptr : &it->second;
+  }
+  Result<const Array*> require(const std::string& key) const {
+    const Array* a = find(key);
+    if (!a) return makeError(context + ": missing key '" + key + "'");
+    if (a->isString()) return makeError(context + ": '" + key + "' holds text, expected numbers");
+    return a;
+  }
+  Status checkShape(const std::string& key, const Array& a, const std::vector<int64_t>& expected) const {
+    if (!shapeMatches(a, expected))
+      return makeError(context + ": '" + key + "' has shape " + shapeString(a.shape) + "; expected " +
+                       expectedString(expected));
+    for (double v : a.data)
+      if (!std::isfinite(v)) return makeError(context + ": '" + key + "' contains NaN or infinite values");
+    return Status();
+  }
+  // Fetch key and check its shape in one step.
+  Result<const Array*> get(const std::string& key, const std::vector<int64_t>& expected) const {
+    Result<const Array*> a = require(key);
+    if (!a) return a;
+    if (Status s = checkShape(key, **a, expected); !s) return s.error();
+    return a;
+  }
+};
+
+// (rows*cols) C-order values -> matrix.
+Eigen::MatrixXd toMatrix(const Array& a, Eigen::Index rows, Eigen::Index cols) {
+  return Eigen::Map<const RowMajor>(a.data.data(), rows, cols);
+}
+
+Result<std::vector<int>> parentsFromKintree(const Array& kintree, const std::string& context) {
+  const int64_t k = kintree.shape[1];
+  std::vector<int> parents(k);
+  for (int64_t j = 0; j < k; ++j) {
+    double p = kintree.data[j];
+    if (j == 0) {
+      parents[0] = -1;  // stored as 2^32-1 (uint32 -1) or -1
+      continue;
+    }
+    if (p < 0 || p >= j || p != std::floor(p))
+      return makeError(context + ": 'kintree_table' gives joint " + std::to_string(j) + " the parent " +
+                       std::to_string(static_cast<long long>(p)) + "; parents must precede their children");
+    parents[j] = static_cast<int>(p);
+  }
+  return parents;
+}
+
+// SMPL-X packs shape then expression columns in one shapedirs (DESIGN.md).
+void splitShapedirs(ModelKind kind, const Eigen::MatrixXd& all, BodyModel* m) {
+  Eigen::Index shape_cols = all.cols();
+  if (kind == ModelKind::SmplX) {
+    if (all.cols() > 300) shape_cols = 300;            // v1.1: 300 shape + 100 expression
+    else if (all.cols() == 20) shape_cols = 10;        // v1.0: 10 shape + 10 expression
+  }
+  m->shapedirs = all.leftCols(shape_cols);
+  m->exprdirs = all.rightCols(all.cols() - shape_cols);
+}
+
+Status loadHands(const Arrays& in, BodyModel* m) {
+  struct Key { const char* components; const char* mean; Eigen::MatrixXd* c; Eigen::VectorXd* mu; };
+  const Key keys[] = {{"hands_componentsl", "hands_meanl", &m->hands_components_l, &m->hands_mean_l},
+                      {"hands_componentsr", "hands_meanr", &m->hands_components_r, &m->hands_mean_r},
+                      {"hands_components", "hands_mean", &m->hands_components_l, &m->hands_mean_l}};
+  for (const Key& key : keys) {
+    const Array* c = in.find(key.components);
+    if (!c) continue;
+    if (Status s = in.checkShape(key.components, *c, {-1, 45}); !s) return s;
+    Result<const Array*> mu = in.get(key.mean, {45});
+    if (!mu) return mu.error();
+    *key.c = toMatrix(*c, c->shape[0], 45);
+    *key.mu = Eigen::Map<const Eigen::VectorXd>((*mu)->data.data(), 45);
+  }
+  return Status();
+}
+
+Result<BodyModel> buildCore(const Arrays& in) {
+  Result<const Array*> vt = in.get("v_template", {-1, 3});
+  if (!vt) return vt.error();
+  const int64_t n = (*vt)->shape[0];
+  Result<const Array*> w = in.get("weights", {n, -1});
+  if (!w) return w.error();
+  const int64_t k = (*w)->shape[1];
+  BodyModel m;
+  if (!modelKindFromJointCount(static_cast<int>(k), &m.kind))
+    return makeError(in.context + ": 'weights' has " + std::to_string(k) +
+                     " joints; expected 24 (SMPL), 52 (SMPL-H), 55 (SMPL-X) or 16 (MANO)");
+  Result<const Array*> kt = in.get("kintree_table", {2, k});
+  Result<const Array*> sd = in.get("shapedirs", {n, 3, -1});
+  Result<const Array*> pd = in.get("posedirs", {n, 3, 9 * (k - 1)});
+  Result<const Array*> jr = in.get("J_regressor", {k, n});
+  Result<const Array*> f = in.get("f", {-1, 3});
+  for (const auto* r : {&kt, &sd, &pd, &jr, &f})
+    if (!*r) return r->error();
+  Result<std::vector<int>> parents = parentsFromKintree(**kt, in.context);
+  if (!parents) return parents.error();
+  m.parents = std::move(*parents);
+  m.joint_names = canonicalJointNames(m.kind);
+  m.v_template = toMatrix(**vt, n, 3);
+  m.weights = toMatrix(**w, n, k);
+  splitShapedirs(m.kind, toMatrix(**sd, 3 * n, (*sd)->shape[2]), &m);
+  m.posedirs = toMatrix(**pd, 3 * n, 9 * (k - 1));
+  m.j_regressor = toMatrix(**jr, k, n).sparseView();
+  m.faces = toMatrix(**f, (*f)->shape[0], 3).cast<int>();
+  if (Status s = loadHands(in, &m); !s) return s.error();
+  return m;
+}
+
+}  // namespace
+
+Result<BodyModel> buildModel(const ArrayDict& arrays, const std::string& context) {
+  Result<BodyModel> m = buildCore(Arrays{arrays, context});
+  if (!m) return m;
+  m->name = baseName(context);
+  if (Status s = validateModel(*m, context); !s) return s.error();
+  return m;
+}
+
+Status validateModel(const BodyModel& m, const std::string& context) {
+  const int n = m.numVertices(), k = m.numJoints();
+  if (n == 0) return makeError(context + ": the model has no vertices");
+  if (static_cast<int>(m.joint_names.size()) != k) return makeError(context + ": joint names do not match the joint count");
+  if (m.parents.empty() || m.parents[0] != -1) return makeError(context + ": joint 0 must be the root");
+  for (int j = 1; j < k; ++j)
+    if (m.parents[j] < 0 || m.parents[j] >= j) return makeError(context + ": joint " + std::to_string(j) + " has an invalid parent");
+  if (m.weights.rows() != n || m.weights.cols() != k || m.j_regressor.rows() != k || m.j_regressor.cols() != n ||
+      m.shapedirs.rows() != 3 * n || m.exprdirs.rows() != 3 * n || m.posedirs.rows() != 3 * n ||
+      m.posedirs.cols() != 9 * (k - 1) || m.faces.cols() != 3)
+    return makeError(context + ": model arrays disagree in size");
+  if (m.faces.size() > 0 && (m.faces.minCoeff() < 0 || m.faces.maxCoeff() >= n))
+    return makeError(context + ": 'f' indexes vertex " + std::to_string(m.faces.maxCoeff()) + " of " + std::to_string(n));
+  for (int i = 0; i < n; ++i) {
+    const double sum = m.weights.row(i).sum();
+    if (m.weights.row(i).minCoeff() < -1e-6 || std::abs(sum - 1.0) > 1e-3)
+      return makeError(context + ": 'weights' row " + std::to_string(i) + " sums to " + std::to_string(sum) +
+                       "; skin weights must be non-negative and sum to 1");
+  }
+  return Status();
+}
+
+Result<BodyModel> loadModel(const std::string& path) {
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+  if (!bytes) return bytes.error();
+  const std::vector<uint8_t>& b = *bytes;
+  Result<ArrayDict> arrays = makeError(path + ": not a model file (expected .npz or .pkl contents)");
+  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0)
+    arrays = parseNpz(b.data(), b.size(), path);
+  else if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']'))
+    arrays = parsePickle(b.data(), b.size(), path);
+  if (!arrays) return arrays.error();
+  return buildModel(*arrays, path);
+}
+
+}  // namespace smpl

@@ -1,0 +1,159 @@
+#include "core/load/motion.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/io/file_io.h"
+#include "core/joint_names.h"
+#include "core/io/npz.h"
+
+namespace smpl {
+namespace {
+
+// Nested rectangular JSON number arrays -> Array (shape inferred, C order).
+Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
+  if (j.is_number()) {
+    if (depth == 0) out->shape.clear();
+    out->data.push_back(j.get<double>());
+    return Status();
+  }
+  if (!j.is_array() || depth > 4) return makeError("expected nested arrays of numbers");
+  const int64_t n = static_cast<int64_t>(j.size());
+  if (out->shape.size() == depth) out->shape.push_back(n);
+  else if (out->shape[depth] != n) return makeError("ragged array");
+  for (const auto& item : j)
+    if (Status s = jsonToArray(item, out, depth + 1); !s) return s;
+  return Status();
+}
+
+Result<ArrayDict> readJsonArrays(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return makeError(path + ": cannot open");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
+  ArrayDict arrays;
+  for (const auto& [key, value] : j.items()) {
+    Array a;
+    if (value.is_string()) {
+      a.dtype = "<U";
+      a.strings = {value.get<std::string>()};
+    } else if (Status s = jsonToArray(value, &a); !s) {
+      return makeError(path + ": '" + key + "': " + s.message());
+    } else if (a.size() != static_cast<int64_t>(a.data.size())) {
+      return makeError(path + ": '" + key + "': ragged array");
+    }
+    arrays[key] = std::move(a);
+  }
+  return arrays;
+}
+
+const Array* find(const ArrayDict& d, const char* key) {
+  auto it = d.find(key);
+  return it == d.end() ? nullptr : &it->second;
+}
+
+// Concatenate SMPL-X AMASS split keys into one (T,165) pose array.
+Result<Array> joinSplitPoses(const ArrayDict& d, const std::string& path) {
+  const char* keys[] = {"root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand"};
+  const int64_t widths[] = {3, 63, 3, 6, 90};
+  const Array* root = find(d, "root_orient");
+  const int64_t t = root->shape.empty() ? 0 : root->shape[0];
+  Array joined;
+  joined.shape = {t, 165};
+  joined.data.assign(t * 165, 0.0);
+  int64_t column = 0;
+  for (int i = 0; i < 5; ++i) {
+    const Array* a = find(d, keys[i]);
+    if (a && (a->shape.size() != 2 || a->shape[0] != t || a->shape[1] != widths[i]))
+      return makeError(path + ": '" + keys[i] + "' has shape " + shapeString(a->shape) + "; expected (" +
+                       std::to_string(t) + "," + std::to_string(widths[i]) + ")");
+    for (int64_t f = 0; a && f < t; ++f)
+      for (int64_t c = 0; c < widths[i]; ++c) joined.data[f * 165 + column + c] = a->data[f * widths[i] + c];
+    column += widths[i];
+  }
+  return joined;
+}
+
+// poses -> per-frame rotations; accepts (T,3J), (T,J,3) and (T,J,3,3).
+Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
+  const auto& s = poses.shape;
+  const bool matrices = s.size() == 4 && s[2] == 3 && s[3] == 3;
+  const bool triples = (s.size() == 2 && s[1] % 3 == 0) || (s.size() == 3 && s[2] == 3);
+  if (!matrices && !triples)
+    return makeError(path + ": 'poses' has shape " + shapeString(s) + "; expected (T,3J), (T,J,3) or (T,J,3,3)");
+  const int64_t t = s[0], j = matrices || s.size() == 3 ? s[1] : s[1] / 3;
+  if (t == 0) return makeError(path + ": 'poses' has no frames");
+  if (!modelKindFromJointCount(static_cast<int>(j), &m->layout))
+    return makeError(path + ": 'poses' has " + std::to_string(j) +
+                     " joints; expected 24 (SMPL), 52 (SMPL-H), 55 (SMPL-X) or 16 (MANO)");
+  for (double v : poses.data)
+    if (!std::isfinite(v)) return makeError(path + ": 'poses' contains NaN or infinite values");
+  m->frames.resize(t);
+  const int64_t stride = matrices ? 9 * j : 3 * j;
+  for (int64_t f = 0; f < t; ++f) {
+    const double* p = poses.data.data() + f * stride;
+    if (!matrices) {
+      m->frames[f] = rotationsFromAxisAngle(Eigen::Map<const Eigen::VectorXd>(p, 3 * j));
+      continue;
+    }
+    m->frames[f].resize(j);
+    for (int64_t k = 0; k < j; ++k)
+      m->frames[f][k] = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p + 9 * k);
+  }
+  return Status();
+}
+
+Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fallback, Motion* m) {
+  const size_t t = m->frames.size();
+  m->translation.assign(t, Eigen::Vector3d::Zero());
+  if (const Array* trans = find(d, "trans")) {
+    if (trans->shape.size() != 2 || trans->shape[0] != static_cast<int64_t>(t) || trans->shape[1] != 3)
+      return makeError(path + ": 'trans' has shape " + shapeString(trans->shape) + "; expected (" +
+                       std::to_string(t) + ",3) to match 'poses'");
+    for (size_t f = 0; f < t; ++f) m->translation[f] = Eigen::Map<const Eigen::Vector3d>(trans->data.data() + 3 * f);
+    for (double v : trans->data)
+      if (!std::isfinite(v)) return makeError(path + ": 'trans' contains NaN or infinite values");
+  }
+  if (const Array* betas = find(d, "betas"); betas && !betas->isString()) m->betas = betas->data;
+  if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty()) m->gender = gender->strings[0];
+  m->fps = fps_fallback;
+  for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
+    const Array* rate = find(d, key);
+    if (!rate || rate->isString() || rate->data.size() != 1) continue;
+    if (!(rate->data[0] > 0 && rate->data[0] < 10000))
+      return makeError(path + ": '" + key + "' is not a usable frame rate");
+    m->fps = rate->data[0];
+    m->amass = m->amass || std::string(key) != "fps";
+    break;
+  }
+  m->amass = m->amass || find(d, "gender") || find(d, "root_orient");
+  return Status();
+}
+
+}  // namespace
+
+Result<Motion> loadMotion(const std::string& path, double fps_fallback) {
+  Result<ArrayDict> arrays = hasSuffix(path, ".json") ? readJsonArrays(path) : readNpzFile(path);
+  if (!arrays) return arrays.error();
+  const ArrayDict& d = *arrays;
+  Motion m;
+  m.name = baseName(path);
+  m.name = m.name.substr(0, m.name.rfind('.'));
+  Array poses;
+  if (const Array* p = find(d, "poses")) {
+    poses = *p;
+  } else if (find(d, "root_orient")) {
+    Result<Array> joined = joinSplitPoses(d, path);
+    if (!joined) return joined.error();
+    poses = std::move(*joined);
+  } else {
+    return makeError(path + ": missing key 'poses' (or AMASS 'root_orient'/'pose_body')");
+  }
+  if (poses.isString()) return makeError(path + ": 'poses' holds text, expected numbers");
+  if (Status s = decodeRotations(poses, path, &m); !s) return s.error();
+  if (Status s = decodeExtras(d, path, fps_fallback, &m); !s) return s.error();
+  return m;
+}
+
+}  // namespace smpl

@@ -1,0 +1,95 @@
+#include "core/load/uv_obj.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <utility>
+
+namespace smpl {
+namespace {
+
+struct ObjData {
+  int positions = 0;
+  std::vector<Eigen::Vector2f> uvs;
+  std::vector<std::vector<std::pair<int, int>>> faces;  // (v, vt), 0-based
+};
+
+// "12/5/7" or "12/5" -> (v, vt); negative indices count from the end (OBJ spec).
+bool parseCorner(const std::string& token, const ObjData& obj, std::pair<int, int>* corner) {
+  size_t slash = token.find('/');
+  if (slash == std::string::npos) return false;
+  char* end = nullptr;
+  long v = std::strtol(token.c_str(), &end, 10);
+  long vt = std::strtol(token.c_str() + slash + 1, &end, 10);
+  if (v == 0 || vt == 0) return false;
+  corner->first = static_cast<int>(v > 0 ? v - 1 : obj.positions + v);
+  corner->second = static_cast<int>(vt > 0 ? vt - 1 : static_cast<long>(obj.uvs.size()) + vt);
+  return true;
+}
+
+Result<ObjData> parseObj(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return makeError(path + ": cannot open");
+  ObjData obj;
+  std::string line, tag;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    std::istringstream ls(line);
+    if (!(ls >> tag)) continue;
+    if (tag == "v") {
+      ++obj.positions;
+    } else if (tag == "vt") {
+      Eigen::Vector2f uv;
+      if (!(ls >> uv.x() >> uv.y())) return makeError(path + ":" + std::to_string(line_no) + ": malformed 'vt' line");
+      obj.uvs.push_back(uv);
+    } else if (tag == "f") {
+      std::vector<std::pair<int, int>> face;
+      for (std::string token; ls >> token;) {
+        std::pair<int, int> corner;
+        if (!parseCorner(token, obj, &corner))
+          return makeError(path + ":" + std::to_string(line_no) + ": face corner '" + token + "' has no texture coordinate");
+        face.push_back(corner);
+      }
+      if (face.size() < 3) return makeError(path + ":" + std::to_string(line_no) + ": face with fewer than 3 corners");
+      obj.faces.push_back(std::move(face));
+    }
+  }
+  return obj;
+}
+
+}  // namespace
+
+Result<UvLayout> loadUvLayout(const std::string& path, const BodyModel& model) {
+  Result<ObjData> obj = parseObj(path);
+  if (!obj) return obj.error();
+  const int n = model.numVertices();
+  if (obj->positions != 0 && obj->positions != n)
+    return makeError(path + ": has " + std::to_string(obj->positions) + " vertices; the model has " + std::to_string(n) +
+                     " (the UV mesh must share the model's vertex order)");
+  if (obj->faces.empty()) return makeError(path + ": no faces with texture coordinates");
+  UvLayout layout;
+  std::map<std::pair<int, int>, int> index;  // (v, vt) -> asset vertex; ordered map keeps output deterministic
+  std::vector<Eigen::Vector2f> uvs;
+  std::vector<Eigen::Vector3i> triangles;
+  for (const auto& face : obj->faces) {
+    std::vector<int> ids;
+    for (const auto& [v, vt] : face) {
+      if (v < 0 || v >= n || vt < 0 || vt >= static_cast<int>(obj->uvs.size()))
+        return makeError(path + ": face index out of range (vertex " + std::to_string(v + 1) + ", uv " + std::to_string(vt + 1) + ")");
+      auto [it, added] = index.emplace(std::make_pair(v, vt), static_cast<int>(layout.source_vertex.size()));
+      if (added) {
+        layout.source_vertex.push_back(v);
+        uvs.push_back(obj->uvs[vt]);
+      }
+      ids.push_back(it->second);
+    }
+    for (size_t i = 1; i + 1 < ids.size(); ++i) triangles.emplace_back(ids[0], ids[i], ids[i + 1]);
+  }
+  layout.uvs.resize(static_cast<Eigen::Index>(uvs.size()), 2);
+  for (size_t i = 0; i < uvs.size(); ++i) layout.uvs.row(i) = uvs[i].transpose();
+  layout.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (size_t i = 0; i < triangles.size(); ++i) layout.triangles.row(i) = triangles[i].transpose();
+  return layout;
+}
+
+}  // namespace smpl

@@ -1,0 +1,74 @@
+#include "core/math/forward_batch.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace smpl {
+namespace {
+
+// Top 3x4 rows of A_k = G_k [I | -J_k], one row of 12 per joint.
+Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, const Rotations& rot,
+                                                       const Eigen::MatrixXd& joints) {
+  const int k = model.numJoints();
+  std::vector<Eigen::Matrix<double, 3, 4>> world(k);
+  Eigen::Matrix<double, Eigen::Dynamic, 12> a(k, 12);
+  for (int j = 0; j < k; ++j) {
+    const int p = model.parents[j];
+    Eigen::Vector3d offset = joints.row(j).transpose() - (p >= 0 ? Eigen::Vector3d(joints.row(p).transpose()) : Eigen::Vector3d::Zero());
+    if (p < 0) {
+      world[j] << rot[j], offset;
+    } else {
+      world[j].leftCols<3>() = world[p].leftCols<3>() * rot[j];
+      world[j].col(3) = world[p].leftCols<3>() * offset + world[p].col(3);
+    }
+    Eigen::Matrix<double, 3, 4> aj;
+    aj << world[j].leftCols<3>(), world[j].col(3) - world[j].leftCols<3>() * joints.row(j).transpose();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) a(j, 4 * r + c) = aj(r, c);
+  }
+  return a;
+}
+
+void runBlock(const BodyModel& model, const Eigen::MatrixXf& posedirs, const BatchInput& in,
+              const Eigen::MatrixXd& weights, int first, int count, Eigen::MatrixXd* out) {
+  const Eigen::Index n = model.numVertices(), p = model.numPoseFeatures();
+  Eigen::MatrixXf features(p, count);
+  for (int t = 0; t < count; ++t) features.col(t) = poseFeatures((*in.frames)[first + t]).cast<float>();
+  Eigen::MatrixXf v_posed(3 * n, count);
+  v_posed.noalias() = posedirs * features;  // 3N x count, the one big product
+  Eigen::Matrix<double, Eigen::Dynamic, 12> blended(n, 12);
+  for (int t = 0; t < count; ++t) {
+    blended.noalias() = weights * restRelative(model, (*in.frames)[first + t], in.body->joints);
+    double* dst = out->col(first + t).data();
+    const float* corr = v_posed.col(t).data();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double x = in.body->v_shaped(i, 0) + corr[3 * i], y = in.body->v_shaped(i, 1) + corr[3 * i + 1],
+                   z = in.body->v_shaped(i, 2) + corr[3 * i + 2];
+      for (int r = 0; r < 3; ++r)
+        dst[3 * i + r] = blended(i, 4 * r) * x + blended(i, 4 * r + 1) * y + blended(i, 4 * r + 2) * z + blended(i, 4 * r + 3);
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
+  const int frames = static_cast<int>(in.frames->size());
+  Eigen::MatrixXd out(3 * model.numVertices(), frames);
+  const Eigen::MatrixXd& weights = in.weights ? *in.weights : model.weights;
+  const Eigen::MatrixXf posedirs = model.posedirs.cast<float>();
+  const int block = std::max(1, in.block);
+  const int blocks = (frames + block - 1) / block;
+  auto work = [&](int worker, int workers) {
+    for (int b = worker; b < blocks; b += workers)
+      runBlock(model, posedirs, in, weights, b * block, std::min(block, frames - b * block), &out);
+  };
+  const int workers = std::max(1, std::min(in.threads, blocks));
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) pool.emplace_back(work, w, workers);
+  work(0, workers);
+  for (std::thread& t : pool) t.join();
+  return out;
+}
+
+}  // namespace smpl

@@ -1,0 +1,28 @@
+// The forward pass for many poses of one subject at once, as matrix products:
+// the pose correctives of a block of frames are one (3N x P)(P x T) GEMM and
+// the skinning one (N x K)(K x 12) product per frame. Same math as forward()
+// (tests compare them); for benchmarks and bulk evaluation. The corrective
+// GEMM runs in single precision (twice the SIMD width, half the memory
+// traffic of posedirs): it adds ~1e-7 m, below float32 file precision.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/body_model.h"
+#include "core/math/forward.h"
+
+namespace smpl {
+
+struct BatchInput {
+  const ShapedBody* body = nullptr;         // from shapeBody()
+  const std::vector<Rotations>* frames = nullptr;
+  const Eigen::MatrixXd* weights = nullptr; // N x K override; null = model's
+  int threads = 1;                          // worker threads over blocks of frames
+  int block = 256;                          // frames per GEMM
+};
+
+// Returns 3N x T: column t holds frame t's vertices (x0 y0 z0 x1 ...).
+Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& input);
+
+}  // namespace smpl

@@ -1,0 +1,55 @@
+#include "exporter/morph_scales.h"
+
+#include <set>
+#include <string>
+
+namespace smpl {
+
+namespace {
+float peak(const MorphTarget& t) { return t.deltas.size() ? t.deltas.cwiseAbs().maxCoeff() : 0.f; }
+}  // namespace
+
+std::vector<bool> quantizedTargets(const Asset& asset) {
+  std::set<std::string> correctives;
+  for (const CorrectiveLayout& c : asset.metadata.correctives) correctives.insert(c.target);
+  std::vector<bool> q;
+  q.reserve(asset.mesh.morph_targets.size());
+  for (const MorphTarget& t : asset.mesh.morph_targets)
+    q.push_back(correctives.count(t.name) && peak(t) > 0);
+  return q;
+}
+
+std::vector<double> morphWeightScales(const Asset& asset) {
+  const std::vector<bool> q = quantizedTargets(asset);
+  std::vector<double> s(q.size(), 1.0);
+  for (size_t n = 0; n < q.size(); ++n)
+    if (q[n]) s[n] = double(peak(asset.mesh.morph_targets[n]));
+  return s;
+}
+
+void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mesh,
+                            AssetMetadata* metadata) {
+  for (CorrectiveLayout& c : metadata->correctives)
+    for (size_t n = 0; n < mesh.morph_targets.size() && n < s.size(); ++n)
+      if (mesh.morph_targets[n].name == c.target) {
+        c.scale *= s[n];
+        c.offset *= s[n];
+        break;
+      }
+}
+
+void foldMorphScales(Asset* asset) {
+  const std::vector<double> s = morphWeightScales(*asset);
+  foldScalesIntoMetadata(s, asset->mesh, &asset->metadata);
+  for (size_t n = 0; n < s.size(); ++n) {
+    if (s[n] == 1.0) continue;
+    MorphTarget& t = asset->mesh.morph_targets[n];
+    t.deltas /= float(s[n]);
+    t.rest_weight = float(t.rest_weight * s[n]);
+    for (AnimationClip& clip : asset->animations)
+      if (clip.morph_weights.cols() == Eigen::Index(s.size()))
+        clip.morph_weights.col(Eigen::Index(n)) *= float(s[n]);
+  }
+}
+
+}  // namespace smpl

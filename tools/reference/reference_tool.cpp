@@ -1,0 +1,171 @@
+// smpl-reference: the C++ reference forward pass (core/forward.h) for a set of
+// seeded random poses, written for the round-trip tests to compare an engine's
+// output against. With pruned weights (what the exported asset carries) and
+// with the model's own weights.
+//
+//   smpl-reference --model PATH|builtin --out PREFIX [--betas v,v,..]
+//                  [--max-influences M] [--poses P] [--seed S] [--dump-model]
+//
+// Output: PREFIX.json, a header
+//   {"model_kind","joint_names","parents","max_influences","num_vertices",
+//    "num_joints","arrays":{name:{"shape":[..],"offset":o}}}
+// and PREFIX.bin, the arrays as little-endian float64, C order, `offset`
+// counted in doubles. Arrays: poses (P,K,3) axis-angle, features (P,9(K-1)),
+// joints (P,K,3) posed, vertices_pruned (P,N,3), vertices_full (P,N,3),
+// v_shaped (N,3), rest_joints (K,3); with --dump-model also posedirs
+// (N,3,9(K-1)) and weights (N,K), for models that have no file (builtin).
+#include <Eigen/Core>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/demo/demo_body.h"
+#include "core/math/forward.h"
+#include "core/load/model_loader.h"
+#include "core/math/pose_sampler.h"
+#include "core/math/skin_weights.h"
+
+namespace {
+
+struct Options {
+  std::string model, out;
+  std::vector<double> betas;
+  int max_influences = 4, poses = 20;
+  uint64_t seed = 1;
+  bool dump_model = false;
+};
+
+struct Output {
+  std::ostringstream arrays;  // the "arrays" object's members
+  std::vector<double> data;
+  void add(const std::string& name, const std::vector<int64_t>& shape, const double* values) {
+    int64_t count = 1;
+    arrays << (data.empty() ? "" : ",") << "\"" << name << "\":{\"shape\":[";
+    for (size_t i = 0; i < shape.size(); ++i) {
+      arrays << (i ? "," : "") << shape[i];
+      count *= shape[i];
+    }
+    arrays << "],\"offset\":" << data.size() << "}";
+    data.insert(data.end(), values, values + count);
+  }
+  // Eigen matrix as C order (rows of the printed matrix).
+  void addMatrix(const std::string& name, const std::vector<int64_t>& shape, const Eigen::MatrixXd& m) {
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row = m;
+    add(name, shape, row.data());
+  }
+};
+
+bool parseList(const char* text, std::vector<double>* out) {
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    char* end = nullptr;
+    double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0') return false;
+    out->push_back(v);
+  }
+  return true;
+}
+
+bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
+    bool needs = a != "--dump-model";
+    if (needs && !v) return *error = a + ": missing value", false;
+    if (a == "--model") o->model = v;
+    else if (a == "--out") o->out = v;
+    else if (a == "--betas") { if (!parseList(v, &o->betas)) return *error = "--betas: bad list", false; }
+    else if (a == "--max-influences") o->max_influences = std::atoi(v);
+    else if (a == "--poses") o->poses = std::atoi(v);
+    else if (a == "--seed") o->seed = std::strtoull(v, nullptr, 10);
+    else if (a == "--dump-model") o->dump_model = true;
+    else return *error = "unknown option " + a, false;
+    if (needs) ++i;
+  }
+  if (o->model.empty() || o->out.empty()) return *error = "--model and --out are required", false;
+  if (o->max_influences < 1 || o->poses < 1) return *error = "--max-influences and --poses must be >= 1", false;
+  return true;
+}
+
+std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+
+bool writeFiles(const Options& o, const smpl::BodyModel& model, const Output& out) {
+  std::ofstream bin(o.out + ".bin", std::ios::binary);
+  // x86/ARM are little-endian, which the header promises; raw doubles are exact.
+  bin.write(reinterpret_cast<const char*>(out.data.data()), static_cast<std::streamsize>(out.data.size() * 8));
+  std::ofstream json(o.out + ".json");
+  json << "{\"model_kind\":" << quoted(smpl::modelKindName(model.kind)) << ",\"joint_names\":[";
+  for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << quoted(model.joint_names[k]);
+  json << "],\"parents\":[";
+  for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << model.parents[k];
+  json << "],\"max_influences\":" << o.max_influences << ",\"num_vertices\":" << model.numVertices()
+       << ",\"num_joints\":" << model.numJoints() << ",\"arrays\":{" << out.arrays.str() << "}}\n";
+  return bin.good() && json.good();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  std::string error;
+  if (!parseArgs(argc, argv, &o, &error)) {
+    std::fprintf(stderr, "smpl-reference: %s\n", error.c_str());
+    return 2;
+  }
+  smpl::Result<smpl::BodyModel> model = o.model == "builtin" ? smpl::Result<smpl::BodyModel>(smpl::demoBody())
+                                                             : smpl::loadModel(o.model);
+  if (!model) {
+    std::fprintf(stderr, "smpl-reference: %s\n", model.message().c_str());
+    return 3;
+  }
+  const int n = model->numVertices(), k = model->numJoints(), p = o.poses;
+  const Eigen::MatrixXd pruned = smpl::denseWeights(smpl::pruneWeights(model->weights, o.max_influences), k);
+  const std::vector<Eigen::VectorXd> poses = smpl::samplePoses(k, p, o.seed, 0.6);
+  Eigen::MatrixXd pose_rows(p, 3 * k), features(p, 9 * (k - 1)), joints(p, 3 * k);
+  Eigen::MatrixXd v_pruned(p, 3 * n), v_full(p, 3 * n), v_shaped, rest_joints;
+  for (int i = 0; i < p; ++i) {
+    smpl::ForwardInput in;
+    in.betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(), static_cast<Eigen::Index>(o.betas.size()));
+    in.rotations = smpl::rotationsFromAxisAngle(poses[i]);
+    in.weights = &pruned;
+    smpl::Result<smpl::ForwardResult> a = smpl::forward(*model, in);
+    in.weights = nullptr;
+    smpl::Result<smpl::ForwardResult> b = smpl::forward(*model, in);
+    if (!a || !b) {
+      std::fprintf(stderr, "smpl-reference: %s\n", (a ? b : a).message().c_str());
+      return 3;
+    }
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    pose_rows.row(i) = poses[i].transpose();
+    features.row(i) = a->pose_features.transpose();
+    joints.row(i) = Eigen::Map<const Eigen::RowVectorXd>(RowMajor(a->joints).data(), 3 * k);
+    v_pruned.row(i) = Eigen::Map<const Eigen::RowVectorXd>(RowMajor(a->vertices).data(), 3 * n);
+    v_full.row(i) = Eigen::Map<const Eigen::RowVectorXd>(RowMajor(b->vertices).data(), 3 * n);
+    v_shaped = a->v_shaped;
+    rest_joints = a->rest_joints;
+  }
+  Output out;
+  out.addMatrix("poses", {p, k, 3}, pose_rows);
+  out.addMatrix("features", {p, 9 * (k - 1)}, features);
+  out.addMatrix("joints", {p, k, 3}, joints);
+  out.addMatrix("vertices_pruned", {p, n, 3}, v_pruned);
+  out.addMatrix("vertices_full", {p, n, 3}, v_full);
+  out.addMatrix("v_shaped", {n, 3}, v_shaped);
+  out.addMatrix("rest_joints", {k, 3}, rest_joints);
+  if (o.dump_model) {
+    // posedirs is 3N x F with row 3i+c; C order (N,3,F) is exactly those rows.
+    out.addMatrix("posedirs", {n, 3, 9 * (k - 1)}, model->posedirs);
+    out.addMatrix("weights", {n, k}, model->weights);
+  }
+  if (!writeFiles(o, *model, out)) {
+    std::fprintf(stderr, "smpl-reference: %s: cannot write output\n", o.out.c_str());
+    return 4;
+  }
+  return 0;
+}
