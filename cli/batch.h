@@ -1,7 +1,11 @@
-// Batch conversion (--motion-dir DIR --out-dir DIR): every .npz/.json motion
-// in DIR becomes <out-dir>/<stem>.<format>, on all cores. Outputs newer than
-// their motion and model are skipped; a failing file is reported and the
-// batch goes on.
+// Batch conversion (--motion-dir DIR --out-dir DIR): every .npz/.json/.smpl/
+// .pkl motion in DIR becomes <out-dir>/<stem>.<format>, on all cores. Outputs
+// newer than their motion and model are skipped (up to date); files without
+// pose keys (AMASS shape.npz, *_stagei.npz: hasPoseData() is false, decided
+// from the keys, not the name) are skipped with a note naming them and do not
+// count as failed; a failing file (it has pose keys but is broken) is
+// reported and the batch goes on. --shard I/N keeps a deterministic share
+// (cli/batch_shard.h); --manifest writes cli/manifest.h's JSON lines.
 #pragma once
 
 #include "core/body_model.h"
@@ -10,7 +14,9 @@
 namespace smpl {
 
 struct BatchSummary {
-  int converted = 0, skipped = 0, failed = 0;
+  int converted = 0, skipped = 0, failed = 0;  // skipped: up to date
+  int no_poses = 0;                             // skipped: no pose data
+  bool manifest_failed = false;                 // --manifest could not be written
 };
 
 BatchSummary runBatch(const BodyModel& model, const Settings& settings);

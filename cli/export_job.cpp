@@ -6,6 +6,7 @@
 
 #include "core/io/file_io.h"
 #include "core/load/motion.h"
+#include "core/load/motion_fit.h"
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
@@ -29,11 +30,17 @@ void drawProgress(const std::string& name, double fraction) {
   if (fraction >= 1.0) std::fprintf(stderr, "\n");
 }
 
-Result<std::vector<Motion>> loadMotions(const ExportJob& job, JobFailure* failure) {
+Result<std::vector<Motion>> loadMotions(const BodyModel& model, const Settings& s, const ExportJob& job,
+                                        JobFailure* failure) {
   std::vector<Motion> motions;
+  MotionOptions options;
+  options.source_fps = s.source_fps;
   for (const std::string& path : job.motions) {
-    Result<Motion> m = loadMotion(path);
+    Result<Motion> m = loadMotion(path, options);
     if (!m) return fail(failure, kExitLoad, "loading", path, m.message());
+    // Fit hands need the model's PCA basis and mean.
+    if (Status st = resolveFitHands(model, s.flat_hand_mean, path, &*m); !st)
+      return fail(failure, kExitLoad, "loading", path, st.message());
     motions.push_back(std::move(*m));
   }
   return motions;
@@ -50,6 +57,7 @@ Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& j
                    Asset* asset, ExportReport* report) {
   for (size_t i = 0; i < motions.size(); ++i) {
     const Motion& m = motions[i];
+    for (const std::string& note : m.notes) report->notes.push_back(m.name + ": " + note);
     Progress progress;
     if (job.progress) progress = [&](double f) { drawProgress(m.name, f); };
     Result<AnimationClip> clip = bakeAnimation(model, *asset, m, s.animation, job.motions[i], progress);
@@ -85,7 +93,7 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(failure, kExitUsage, "in", "arguments", "no writer for " + job.out);
-  Result<std::vector<Motion>> motions = loadMotions(job, failure);
+  Result<std::vector<Motion>> motions = loadMotions(model, s, job, failure);
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
   if (!s.betas_given) betasFromMotion(model, *motions, &options);

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
 
   if (!s.motion_dir.empty()) {
     BatchSummary summary = runBatch(*loaded, s);
+    if (summary.manifest_failed) return kExitSave;
     return summary.failed > 0 ? kExitExport : kExitOk;
   }
   JobFailure failure{kExitOk, ""};

@@ -64,6 +64,18 @@ Status parseFrames(const std::string& value, AnimationOptions* a) {
   return Status();
 }
 
+// "I/N", 0 <= I < N: this run's share of a batch (cli/batch_shard.h).
+Status parseShard(const std::string& value, Settings* s) {
+  const size_t slash = value.find('/');
+  Result<int> i = parseInt(value.substr(0, slash), "--shard");
+  Result<int> n = parseInt(slash == std::string::npos ? "" : value.substr(slash + 1), "--shard");
+  if (!i || !n || *n < 1 || *i < 0 || *i >= *n)
+    return makeError("--shard: expected I/N with 0 <= I < N (e.g. 0/8), got '" + value + "'");
+  s->shard_index = *i;
+  s->shard_count = *n;
+  return Status();
+}
+
 // One option with its value; returns an error for unknown names.
 Status applyOption(const std::string& name, const std::string& value, Settings* s) {
   ExportOptions& e = s->export_options;
@@ -84,6 +96,14 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
     Result<double> v = parseNumber(value, name);
     if (!v || *v <= 0 || *v > 1000) return makeError("--fps: expected a rate in (0, 1000], got '" + value + "'");
     s->animation.fps = *v;
+  } else if (name == "--source-fps") {
+    Result<double> v = parseNumber(value, name);
+    if (!v || *v <= 0 || *v > 1000) return makeError("--source-fps: expected a rate in (0, 1000], got '" + value + "'");
+    s->source_fps = *v;
+  } else if (name == "--shard") {
+    return parseShard(value, s);
+  } else if (name == "--manifest") {
+    s->manifest = value;
   } else if (name == "--frames") {
     return parseFrames(value, &s->animation);
   } else if (name == "--up") {
@@ -137,7 +157,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
     return makeError("--corrective-basis conflicts with --correctives none");
   const bool batch = !s.motion_dir.empty() || !s.out_dir.empty();
   const bool animated = !s.motions.empty() || batch;
-  for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion"})
+  for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion", "--source-fps",
+                        "--flat-hand-mean"})
     if (has(o) && !animated) return makeError(std::string(o) + " needs --motion or --motion-dir");
   if (batch) {
     if (s.motion_dir.empty() || s.out_dir.empty()) return makeError("batch mode needs both --motion-dir and --out-dir");
@@ -145,7 +166,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
     if (has("--fbx-units") && s.format != "fbx") return makeError("--fbx-units applies only to --format fbx");
     return Status();
   }
-  if (has("--format") || has("--threads")) return makeError("--format and --threads apply only to batch mode (--motion-dir)");
+  if (has("--format") || has("--threads") || has("--shard") || has("--manifest"))
+    return makeError("--format, --threads, --shard and --manifest apply only to batch mode (--motion-dir)");
   if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
   const bool fbx = endsWith(s.out, ".fbx");
   if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
@@ -157,7 +179,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   return Status();
 }
 
-const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco"};
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco",
+                              "--flat-hand-mean"};
 
 }  // namespace
 
@@ -183,6 +206,7 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
     else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
     else if (arg == "--quantize-morphs") s.writer_options.quantize_morphs = true;
     else if (arg == "--draco") s.writer_options.draco = true;
+    else if (arg == "--flat-hand-mean") s.flat_hand_mean = true;
     else if (Status st = applyOption(arg, value, &s); !st) return st.error();
   }
   s.betas_given = std::find(given.begin(), given.end(), "--betas") != given.end() ||
@@ -254,16 +278,27 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
   --fbx-units m|cm       FBX geometry units (default m)
   --fbx-version 7400|7500  FBX binary version (default 7400)
 
-Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rotation matrices):
+Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` axis-angle or
+rotation matrices, SMPLCodec .smpl, SMPL-X/SMPL fits .pkl/.npz (SMPLify-X, PIXIE, ExPose), AIST++ .pkl):
   --motion FILE          bake FILE as an animation (repeatable: one animation each)
+  --source-fps R         the motion's frame rate: overrides a stored one; without it a file that stores
+                         none is read at 30 fps (AIST++: 60) and a note says so
+  --flat-hand-mean       fit hand poses (PCA or 45-d axis-angle) are relative to the flat hand: the
+                         model's hands_mean is not added (the authors' default adds it)
   --fps F                resample to F frames per second (slerp/lerp; default: the motion's rate)
   --frames A:B           source frames A (inclusive) to B (exclusive); either may be empty
   --betas-from-motion    use the motion's betas (the default when no --betas/--betas-file)
   --up y|z               up axis of the motion's world (default: z for AMASS files, else y);
                          output is always Y-up
   --root-motion keep|in-place   keep or drop horizontal root motion (default keep)
-  --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json in DIR, in parallel, skipping
-                         outputs newer than their inputs; per-file errors do not stop the batch
+  --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json/.smpl/.pkl in DIR, in parallel,
+                         skipping outputs newer than their inputs; per-file errors do not stop the
+                         batch; files with no pose keys (AMASS shape.npz, *_stagei.npz) are skipped
+                         with a note
+  --shard I/N            batch: convert only share I of N (0 <= I < N): the motions sorted by path
+                         relative to DIR, the one at position p belongs to shard p mod N
+  --manifest FILE        batch: write one JSON line per motion (input, output, bytes, sha256,
+                         seconds, status); shards' manifests concatenate
   --format glb|gltf|fbx  batch output format (default glb)
   --threads N            batch workers (default: all cores)
   --quiet, -q            no summary

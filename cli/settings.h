@@ -28,6 +28,10 @@ struct Settings {
   bool version = false;
   int error_poses = 32;     // random poses for the pruning-error report
   int threads = 0;          // batch workers; 0 = all cores
+  double source_fps = 0.0;  // --source-fps: rate of the motion files (0: stored, else assumed with a note)
+  bool flat_hand_mean = false;  // --flat-hand-mean: fit hand poses are flat-hand relative
+  int shard_index = 0, shard_count = 1;  // --shard I/N (batch): this run's share
+  std::string manifest;     // --manifest FILE (batch): JSON-lines record of every motion
 };
 
 // Parse argv; the error text is one line for the user.

@@ -1,15 +1,57 @@
 #include "core/load/motion.h"
 
 #include <cmath>
-#include <fstream>
+#include <cstdio>
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 #include "core/io/file_io.h"
-#include "core/joint_names.h"
 #include "core/io/npz.h"
+#include "core/io/pickle/pickle.h"
+#include "core/joint_names.h"
+#include "core/load/motion_aist.h"
+#include "core/load/motion_fit.h"
+#include "core/load/motion_internal.h"
+#include "core/load/motion_smplcodec.h"
 
 namespace smpl {
+namespace motion_detail {
+
+Format detectFormat(const ArrayDict& d) {
+  if (find(d, "bodyPose")) return Format::SmplCodec;
+  if (find(d, "smpl_poses")) return Format::Aist;
+  if (find(d, "poses") || find(d, "root_orient")) return Format::Poses;
+  if (find(d, "body_pose") || find(d, "global_orient")) return Format::Fit;
+  return Format::NoPoses;
+}
+
+const Array* find(const ArrayDict& d, const char* key) {
+  auto it = d.find(key);
+  return it == d.end() ? nullptr : &it->second;
+}
+
+Status checkNumbers(const Array& a, const std::string& path, const char* key) {
+  if (a.isString()) return makeError(path + ": '" + key + "' holds text, expected numbers");
+  for (double v : a.data)
+    if (!std::isfinite(v)) return makeError(path + ": '" + key + "' contains NaN or infinite values");
+  return Status();
+}
+
+void putAxisAngle(const double* p, int count, int first, Rotations* out) {
+  const Rotations r = rotationsFromAxisAngle(Eigen::Map<const Eigen::VectorXd>(p, 3 * count));
+  for (int k = 0; k < count; ++k) (*out)[first + k] = r[k];
+}
+
+void putMatrices(const double* p, int count, int first, Rotations* out) {
+  for (int k = 0; k < count; ++k)
+    (*out)[first + k] = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p + 9 * k);
+}
+
+}  // namespace motion_detail
+
 namespace {
+using motion_detail::find;
+using motion_detail::Format;
 
 // Nested rectangular JSON number arrays -> Array (shape inferred, C order).
 Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
@@ -27,10 +69,8 @@ Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
   return Status();
 }
 
-Result<ArrayDict> readJsonArrays(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return makeError(path + ": cannot open");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+Result<ArrayDict> readJsonArrays(const std::vector<uint8_t>& bytes, const std::string& path) {
+  nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
   ArrayDict arrays;
   for (const auto& [key, value] : j.items()) {
@@ -46,11 +86,6 @@ Result<ArrayDict> readJsonArrays(const std::string& path) {
     arrays[key] = std::move(a);
   }
   return arrays;
-}
-
-const Array* find(const ArrayDict& d, const char* key) {
-  auto it = d.find(key);
-  return it == d.end() ? nullptr : &it->second;
 }
 
 // Concatenate SMPL-X AMASS split keys into one (T,165) pose array.
@@ -104,7 +139,7 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
   return Status();
 }
 
-Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fallback, Motion* m) {
+Status decodeExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   const size_t t = m->frames.size();
   m->translation.assign(t, Eigen::Vector3d::Zero());
   if (const Array* trans = find(d, "trans")) {
@@ -117,7 +152,7 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fall
   }
   if (const Array* betas = find(d, "betas"); betas && !betas->isString()) m->betas = betas->data;
   if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty()) m->gender = gender->strings[0];
-  m->fps = fps_fallback;
+  m->fps = 0.0;
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
     const Array* rate = find(d, key);
     if (!rate || rate->isString() || rate->data.size() != 1) continue;
@@ -131,28 +166,91 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fall
   return Status();
 }
 
+// AMASS and plain files: `poses` or the AMASS SMPL-X split keys.
+Status decodePoses(const ArrayDict& d, const std::string& path, Motion* m) {
+  Array poses;
+  if (const Array* p = find(d, "poses")) {
+    poses = *p;
+  } else {
+    Result<Array> joined = joinSplitPoses(d, path);
+    if (!joined) return joined.error();
+    poses = std::move(*joined);
+  }
+  if (poses.isString()) return makeError(path + ": 'poses' holds text, expected numbers");
+  if (Status s = decodeRotations(poses, path, m); !s) return s;
+  return decodeExtras(d, path, m);
+}
+
+// The source rate: --source-fps, else the stored one, else a default; a
+// note says what was assumed or overridden (single frames need no rate).
+void settleFps(const MotionOptions& o, double fallback, const char* why, Motion* m) {
+  char text[200];
+  if (o.source_fps > 0) {
+    if (m->fps > 0 && std::abs(m->fps - o.source_fps) > 1e-9) {
+      std::snprintf(text, sizeof text, "the stored rate %g fps is overridden by --source-fps %g", m->fps, o.source_fps);
+      m->notes.push_back(text);
+    }
+    m->fps = o.source_fps;
+    m->fps_assumed = false;
+    return;
+  }
+  if (m->fps > 0) return;
+  m->fps = fallback;
+  m->fps_assumed = true;
+  if (m->frames.size() < 2) return;
+  std::snprintf(text, sizeof text, "%s; assumed %g fps (state the rate with --source-fps R)", why, fallback);
+  m->notes.push_back(text);
+}
+
 }  // namespace
 
+Result<ArrayDict> readMotionArrays(const std::string& path) {
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+  if (!bytes) return bytes.error();
+  const std::vector<uint8_t>& b = *bytes;
+  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) return parseNpz(b.data(), b.size(), path);
+  if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']'))
+    return parsePickle(b.data(), b.size(), path);
+  return readJsonArrays(b, path);
+}
+
+Result<bool> hasPoseData(const std::string& path) {
+  Result<ArrayDict> arrays = readMotionArrays(path);
+  if (!arrays) return arrays.error();
+  return motion_detail::detectFormat(*arrays) != Format::NoPoses;
+}
+
 Result<Motion> loadMotion(const std::string& path, double fps_fallback) {
-  Result<ArrayDict> arrays = hasSuffix(path, ".json") ? readJsonArrays(path) : readNpzFile(path);
+  MotionOptions options;
+  options.fps_fallback = fps_fallback;
+  return loadMotion(path, options);
+}
+
+Result<Motion> loadMotion(const std::string& path, const MotionOptions& options) {
+  Result<ArrayDict> arrays = readMotionArrays(path);
   if (!arrays) return arrays.error();
   const ArrayDict& d = *arrays;
   Motion m;
   m.name = baseName(path);
   m.name = m.name.substr(0, m.name.rfind('.'));
-  Array poses;
-  if (const Array* p = find(d, "poses")) {
-    poses = *p;
-  } else if (find(d, "root_orient")) {
-    Result<Array> joined = joinSplitPoses(d, path);
-    if (!joined) return joined.error();
-    poses = std::move(*joined);
-  } else {
-    return makeError(path + ": missing key 'poses' (or AMASS 'root_orient'/'pose_body')");
+  Status s;
+  double fallback = options.fps_fallback;
+  const char* why = "no frame rate is stored";
+  switch (motion_detail::detectFormat(d)) {
+    case Format::Poses: s = decodePoses(d, path, &m); break;
+    case Format::SmplCodec: s = motion_detail::decodeSmplCodec(d, path, &m); break;
+    case Format::Fit: s = motion_detail::decodeFit(d, path, &m); break;
+    case Format::Aist:
+      s = motion_detail::decodeAist(d, path, &m);
+      fallback = 60.0;
+      why = "AIST++ stores no frame rate; its documentation gives 60 fps";
+      break;
+    case Format::NoPoses:
+      return makeError(path + ": no pose data (no 'poses', 'root_orient', 'bodyPose', 'body_pose', 'global_orient' "
+                              "or 'smpl_poses' key): a shape file, not a motion");
   }
-  if (poses.isString()) return makeError(path + ": 'poses' holds text, expected numbers");
-  if (Status s = decodeRotations(poses, path, &m); !s) return s.error();
-  if (Status s = decodeExtras(d, path, fps_fallback, &m); !s) return s.error();
+  if (!s) return s.error();
+  settleFps(options, fallback, why, &m);
   return m;
 }
 

@@ -1,3 +1,7 @@
 add_test(NAME cli_behaviour
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/cli_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli_behaviour PROPERTIES LABELS cli)
+
+add_test(NAME cli.motion_formats
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/motion_formats_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli.motion_formats PROPERTIES LABELS cli)

@@ -66,5 +66,44 @@ TEST(Settings, BetasFileJson) {
   EXPECT_FALSE(readBetasFile(path).ok());
 }
 
+TEST(Settings, MotionFormatAndShardOptions) {
+  Result<Settings> s = parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--source-fps", "59.94",
+                              "--flat-hand-mean", "--shard", "3/8", "--manifest", "s3.jsonl"});
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(s->source_fps, 59.94);
+  EXPECT_TRUE(s->flat_hand_mean);
+  EXPECT_EQ(s->shard_index, 3);
+  EXPECT_EQ(s->shard_count, 8);
+  EXPECT_EQ(s->manifest, "s3.jsonl");
+  struct Bad { std::vector<const char*> args; const char* message; };
+  const Bad cases[] = {
+      {{"--source-fps", "0"}, "--source-fps: expected a rate in (0, 1000]"},
+      {{"--source-fps", "-30"}, "--source-fps: expected a rate"},
+      {{"--source-fps", "nan"}, "--source-fps"},
+      {{"--source-fps", "inf"}, "--source-fps"},
+      {{"--source-fps", "5000"}, "--source-fps: expected a rate"},
+      {{"--shard", "8/8"}, "--shard: expected I/N"},
+      {{"--shard", "-1/8"}, "--shard: expected I/N"},
+      {{"--shard", "1/0"}, "--shard: expected I/N"},
+      {{"--shard", "1"}, "--shard: expected I/N"},
+      {{"--shard", "a/b"}, "--shard: expected I/N"},
+  };
+  for (const Bad& b : cases) {
+    std::vector<const char*> args = {"--model", "builtin", "--motion-dir", "m", "--out-dir", "o"};
+    args.insert(args.end(), b.args.begin(), b.args.end());
+    Result<Settings> r = parse(args);
+    ASSERT_FALSE(r.ok()) << b.args[0] << " " << b.args[1];
+    EXPECT_NE(r.message().find(b.message), std::string::npos) << r.message();
+  }
+  for (const char* option : {"--shard", "--manifest"}) {
+    Result<Settings> r = parse({"--model", "builtin", "--out", "a.glb", "--motion", "w.npz", option, "0/2"});
+    ASSERT_FALSE(r.ok()) << option;
+    EXPECT_NE(r.message().find("only to batch mode"), std::string::npos) << r.message();
+  }
+  Result<Settings> still = parse({"--model", "builtin", "--out", "a.glb", "--source-fps", "30"});
+  ASSERT_FALSE(still.ok());
+  EXPECT_NE(still.message().find("--source-fps needs --motion"), std::string::npos) << still.message();
+}
+
 }  // namespace
 }  // namespace smpl
