@@ -76,3 +76,21 @@ set_tests_properties(anim.validator PROPERTIES
 add_test(NAME cli.batch
   COMMAND ${PROJECT_SOURCE_DIR}/tests/cli/batch_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.batch PROPERTIES LABELS "blender;cli")
+
+# Other motion layouts (tests/fixtures/make_motion_formats.py) on SMPL-X: a
+# SMPLCodec .smpl motion and a SMPLify-X fit with PCA hands (one frame).
+foreach(motion codec_root.smpl fit_pca.pkl)
+  string(REPLACE "." "_" case smplx_small_${motion})
+  set(asset ${SMPL_ROUNDTRIP_DIR}/anim_${case}.glb)
+  add_test(NAME anim.export.${case}
+    COMMAND smpl-export --model ${SMPL_FIXTURE_DIR}/models/smplx_small.npz
+            --motion ${SMPL_FIXTURE_DIR}/formats/${motion} --max-influences 8 --out ${asset} --quiet)
+  add_test(NAME anim.blender.${case}
+    COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_animation.py --
+            --asset ${asset} --model ${SMPL_FIXTURE_DIR}/models/smplx_small.npz
+            --motion ${SMPL_FIXTURE_DIR}/formats/${motion} --label smplx_${motion} --tol 1e-4)
+  set_tests_properties(anim.export.${case} PROPERTIES
+    FIXTURES_SETUP anim_${case} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
+  set_tests_properties(anim.blender.${case} PROPERTIES
+    FIXTURES_REQUIRED "anim_${case};roundtrip_dir" LABELS blender TIMEOUT 600)
+endforeach()

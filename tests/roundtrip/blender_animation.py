@@ -2,7 +2,8 @@
 written by `smpl-export --motion`, play it with NO runtime script (the baked
 weights channel / DeformPercent curves alone drive the correctives), and
 compare the evaluated mesh at chosen frames with numpy's forward pass of the
-motion file read here with numpy.
+motion file read here with numpy (AMASS/plain .npz, SMPLCodec .smpl, and
+SMPLify-X .pkl fits with PCA hands per the authors' smplx code).
 
   blender -b --factory-startup --python-exit-code 1 --python blender_animation.py -- \
       --asset walk.glb --model model.npz --motion walk.npz [--fps 30] [--tol 1e-4] \
@@ -56,9 +57,53 @@ def parse_args():
 
 # --- the motion, read with numpy -------------------------------------------------
 
-def read_motion(path):
-    """Joint name -> (T,3) axis-angle, trans (T,3), betas, fps (AMASS SMPL-H / SMPL-X / SMPL)."""
+def read_codec(data):
+    """SMPLCodec .smpl (smplcodec codec.py keys; SMPL-X only here): the same dict as read_motion."""
+    body = np.asarray(data["bodyPose"], dtype=np.float64)
+    frames = body.shape[0]
+    if body.shape[1] == 21:  # no root: globalOrient or rest
+        root = data["globalOrient"].reshape(frames, 1, 3) if "globalOrient" in data.files else np.zeros((frames, 1, 3))
+        body = np.concatenate([root, body], axis=1)
+    zeros = np.zeros((frames, 15, 3))
+    parts = [body, data["headPose"] if "headPose" in data.files else np.zeros((frames, 3, 3)),
+             data["leftHandPose"] if "leftHandPose" in data.files else zeros,
+             data["rightHandPose"] if "rightHandPose" in data.files else zeros]
+    poses = np.concatenate([np.asarray(p, dtype=np.float64) for p in parts], axis=1)
+    names = model_math.joint_names(55)
+    trans = np.asarray(data["bodyTranslation"], np.float64) if "bodyTranslation" in data.files else np.zeros((frames, 3))
+    fps = float(data["frameRate"]) if "frameRate" in data.files else 30.0
+    return {"rot": {n: poses[:, j] for j, n in enumerate(names)}, "trans": trans, "fps": fps, "frames": frames,
+            "betas": np.asarray(data["shapeParameters"], np.float64), "amass": False}
+
+
+def read_fit(path, model_path):
+    """SMPLify-X style fit (.pkl, batch dim 1) with the authors' hand math (smplx SMPLX.forward):
+    hand = coefficients @ hands_components[:C] (C < 45) + hands_mean."""
+    import pickle
+    with open(path, "rb") as fh:
+        fit = {k: np.asarray(v, np.float64) for k, v in pickle.load(fh).items()}
+    model = np.load(model_path)
+    hands = []
+    for side, key in (("l", "left_hand_pose"), ("r", "right_hand_pose")):
+        coeffs = fit[key].reshape(-1)
+        pose = coeffs if coeffs.size == 45 else coeffs @ model["hands_components" + side][:coeffs.size]
+        hands.append((pose + model["hands_mean" + side]).reshape(15, 3))
+    pose = np.concatenate([fit["global_orient"].reshape(1, 3), fit["body_pose"].reshape(21, 3),
+                           fit["jaw_pose"].reshape(1, 3), fit["leye_pose"].reshape(1, 3),
+                           fit["reye_pose"].reshape(1, 3)] + hands)[None]
+    names = model_math.joint_names(55)
+    return {"rot": {n: pose[:, j] for j, n in enumerate(names)}, "trans": fit["transl"].reshape(1, 3),
+            "betas": fit["betas"].reshape(-1), "fps": 30.0, "frames": 1, "amass": False}
+
+
+def read_motion(path, model_path=None):
+    """Joint name -> (T,3) axis-angle, trans (T,3), betas, fps (AMASS SMPL-H / SMPL-X / SMPL,
+    SMPLCodec .smpl, SMPLify-X .pkl fits)."""
+    if path.endswith(".pkl"):
+        return read_fit(path, model_path)
     data = np.load(path, allow_pickle=False)
+    if "bodyPose" in data.files:
+        return read_codec(data)
     if "root_orient" in data.files:  # AMASS SMPL-X release: split keys
         parts = [data[k] for k in ("root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand")]
         poses = np.concatenate(parts, axis=1)
@@ -260,7 +305,7 @@ def main():
     args = parse_args()
     start = time.perf_counter()
     model = model_math.load_model_npz(args.model)
-    motion = read_motion(args.motion)
+    motion = read_motion(args.motion, args.model)
     fps_out = args.fps or motion["fps"]
     fmt, arm, mesh_obj = import_asset(args.asset, fps_out)
     m = read_max_influences(args.asset)
