@@ -1,5 +1,7 @@
 #include "core/load/motion.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -211,7 +213,11 @@ Result<ArrayDict> readMotionArrays(const std::string& path) {
   if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) return parseNpz(b.data(), b.size(), path);
   if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']'))
     return parsePickle(b.data(), b.size(), path);
-  return readJsonArrays(b, path);
+  const size_t first = std::min(b.size(), static_cast<size_t>(std::find_if(b.begin(), b.end(), [](uint8_t c) {
+                                  return !std::isspace(c);
+                                }) - b.begin()));
+  if (hasSuffix(path, ".json") || (first < b.size() && b[first] == '{')) return readJsonArrays(b, path);
+  return parseNpz(b.data(), b.size(), path);  // its error says what a zip needed
 }
 
 Result<bool> hasPoseData(const std::string& path) {

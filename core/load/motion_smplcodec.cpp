@@ -15,7 +15,8 @@ std::string expected(int64_t t, int64_t j) {
 Status versionLayout(const ArrayDict& d, const std::string& path, ModelKind* kind, int* body) {
   int version = 2;
   if (const Array* v = find(d, "smplVersion")) {
-    if (v->isString() || v->data.size() != 1) return makeError(path + ": 'smplVersion' is not one integer");
+    if (v->isString() || v->data.size() != 1 || !(v->data[0] >= 0 && v->data[0] <= 100))
+      return makeError(path + ": 'smplVersion' is not one integer in 0..7");
     version = static_cast<int>(v->data[0]);
   }
   switch (version) {
