@@ -62,9 +62,12 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s) {
   BatchSummary summary;
   std::error_code ec;
   fs::create_directories(s.out_dir, ec);
-  const std::vector<fs::path> motions =
-      shardMotions(listMotions(s.motion_dir), s.motion_dir, s.shard_index, s.shard_count);
-  if (motions.empty()) std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n", s.motion_dir.c_str());
+  const std::vector<fs::path> all = listMotions(s.motion_dir);
+  const std::vector<fs::path> motions = shardMotions(all, s.motion_dir, s.shard_index, s.shard_count);
+  if (all.empty()) std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n", s.motion_dir.c_str());
+  else if (motions.empty() && !s.quiet)
+    std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index, s.shard_count, all.size(),
+                s.motion_dir.c_str());
   std::vector<ManifestEntry> manifest(motions.size());
   std::atomic<size_t> next{0};
   std::mutex print;
