@@ -14,7 +14,10 @@ namespace SmplExport.Correctives.Tests
         [TearDown]
         public void DestroyObjects()
         {
-            if (root != null) Object.DestroyImmediate(root);
+            if (root == null) return;
+            foreach (SkinnedMeshRenderer skin in root.GetComponentsInChildren<SkinnedMeshRenderer>(true))
+                Object.DestroyImmediate(skin.sharedMesh);
+            Object.DestroyImmediate(root);
             root = null;
         }
 
