@@ -33,6 +33,7 @@ what Unity 2021.3 writes, without its trailing spaces after empty values
 """
 import hashlib
 import json
+import os
 import pathlib
 import sys
 
@@ -91,6 +92,12 @@ def scan(root):
     return expected, existing
 
 
+def write_atomic(path, text):
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+
+
 def main(argv):
     check = "--check" in argv
     args = [a for a in argv if a != "--check"]
@@ -111,7 +118,7 @@ def main(argv):
         else:
             continue
         if not check:
-            meta.write_text(text, encoding="utf-8")
+            write_atomic(meta, text)
     for meta in sorted(existing):
         if meta not in expected:
             problems.append(f"{meta}: orphaned .meta file (no asset, or the asset is ignored by Unity)")
