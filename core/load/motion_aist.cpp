@@ -21,8 +21,10 @@ Status decodeAist(const ArrayDict& d, const std::string& path, Motion* m) {
   if (Status s = checkNumbers(*trans, path, "smpl_trans"); !s) return s;
   double scaling = 1.0;
   if (const Array* sc = find(d, "smpl_scaling")) {
-    if (sc->isString() || sc->data.size() != 1 || !(sc->data[0] > 0) || !std::isfinite(sc->data[0]))
-      return makeError(path + ": 'smpl_scaling' has shape " + shapeString(sc->shape) + "; expected one positive number");
+    if (sc->isString() || sc->data.size() != 1)
+      return makeError(path + ": 'smpl_scaling' has shape " + shapeString(sc->shape) + "; expected one number");
+    if (!(sc->data[0] > 0) || !std::isfinite(sc->data[0]))
+      return makeError(path + ": 'smpl_scaling' is " + std::to_string(sc->data[0]) + "; expected a positive scale");
     scaling = sc->data[0];
   } else {
     m->notes.push_back("no 'smpl_scaling': the translation is used unscaled");

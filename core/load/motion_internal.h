@@ -12,7 +12,7 @@ namespace smpl {
 namespace motion_detail {
 
 // Which reader a file's keys call for (first match wins):
-//   SmplCodec  `bodyPose` or `smplVersion` (Meshcapade .smpl)
+//   SmplCodec  `bodyPose` (Meshcapade .smpl)
 //   Aist       `smpl_poses` (AIST++)
 //   Poses      `poses` or `root_orient` (AMASS and plain files)
 //   Fit        `body_pose` or `global_orient` (SMPLify-X / PIXIE / ExPose style)
