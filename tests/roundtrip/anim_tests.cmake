@@ -78,7 +78,10 @@ add_test(NAME cli.batch
 set_tests_properties(cli.batch PROPERTIES LABELS "blender;cli")
 
 # Other motion layouts (tests/fixtures/make_motion_formats.py) on SMPL-X: a
-# SMPLCodec .smpl motion and a SMPLify-X fit with PCA hands (one frame).
+# SMPLCodec .smpl motion and a SMPLify-X fit with PCA hands (one frame);
+# anim.validator.formats runs the Khronos validator on both GLBs.
+set(SMPL_FORMAT_GLBS)
+set(SMPL_FORMAT_FIXTURES)
 foreach(motion codec_root.smpl fit_pca.pkl)
   string(REPLACE "." "_" case smplx_small_${motion})
   set(asset ${SMPL_ROUNDTRIP_DIR}/anim_${case}.glb)
@@ -93,4 +96,10 @@ foreach(motion codec_root.smpl fit_pca.pkl)
     FIXTURES_SETUP anim_${case} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
   set_tests_properties(anim.blender.${case} PROPERTIES
     FIXTURES_REQUIRED "anim_${case};roundtrip_dir" LABELS blender TIMEOUT 600)
+  list(APPEND SMPL_FORMAT_GLBS ${asset})
+  list(APPEND SMPL_FORMAT_FIXTURES anim_${case})
 endforeach()
+add_test(NAME anim.validator.formats
+  COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js ${SMPL_FORMAT_GLBS})
+set_tests_properties(anim.validator.formats PROPERTIES
+  FIXTURES_REQUIRED "${SMPL_FORMAT_FIXTURES}" LABELS "blender;validator")
