@@ -2,9 +2,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <exception>
+#include <new>
 #include <unistd.h>
 
 #include "core/io/file_io.h"
+#include "core/io/printable.h"
 #include "core/load/motion.h"
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
@@ -77,11 +80,15 @@ Status writeOutputs(const std::string& out, const std::string& bytes, const std:
 }  // namespace
 
 std::string errorLine(const std::string& verb, const std::string& path, const std::string& message) {
-  if (message.compare(0, path.size() + 1, path + ":") == 0) return "Error " + verb + " " + message;
-  return "Error " + verb + " " + path + ": " + message;
+  // Paths and messages may carry bytes from files or the command line: one printable line.
+  if (message.compare(0, path.size() + 1, path + ":") == 0) return printable("Error " + verb + " " + message, 4096);
+  return printable("Error " + verb + " " + path + ": " + message, 4096);
 }
 
-Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job, JobFailure* failure) {
+namespace {
+
+Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& s, const ExportJob& job,
+                                        JobFailure* failure) {
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(failure, kExitUsage, "in", "arguments", "no writer for " + job.out);
@@ -111,6 +118,20 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
   report.max_influences = asset->metadata.max_influences;
   return report;
+}
+
+}  // namespace
+
+// Batch jobs run on worker threads, where an escaping exception would abort
+// the process: the job's own last-resort catch turns it into a job failure.
+Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job, JobFailure* failure) {
+  try {
+    return runExportUnguarded(model, s, job, failure);
+  } catch (const std::bad_alloc&) {
+    return fail(failure, kExitExport, "exporting", job.out, "out of memory (set a lower --memory-limit)");
+  } catch (const std::exception& e) {
+    return fail(failure, kExitExport, "exporting", job.out, std::string("internal error: ") + e.what());
+  }
 }
 
 }  // namespace smpl

@@ -8,6 +8,8 @@
 
 #include "core/io/npy.h"
 #include "core/io/npz.h"
+#include "core/load/validate_inputs.h"
+#include "core/memory_budget.h"
 
 namespace smpl {
 namespace {
@@ -92,6 +94,10 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--root-motion") {
     if (value != "keep" && value != "in-place") return makeError("--root-motion: expected 'keep' or 'in-place', got '" + value + "'");
     s->animation.in_place = value == "in-place";
+  } else if (name == "--memory-limit") {
+    Result<uint64_t> v = parseMemorySize(value);
+    if (!v) return v.error();
+    s->memory_limit = *v;
   } else if (name == "--model") s->model = value;
   else if (name == "--out") s->out = value;
   else if (name == "--betas-file") s->betas_file = value;
@@ -103,6 +109,7 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   else if (name == "--betas" || name == "--expression") {
     Result<std::vector<double>> v = parseList(value, name);
     if (!v) return v.error();
+    if (Status st = checkCoefficients(*v, name, "value"); !st) return st;
     (name == "--betas" ? e.betas : e.expression) = *v;
   } else if (name == "--correctives") {
     if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
@@ -266,6 +273,9 @@ Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rot
                          outputs newer than their inputs; per-file errors do not stop the batch
   --format glb|gltf|fbx  batch output format (default glb)
   --threads N            batch workers (default: all cores)
+  --memory-limit SIZE    memory budget for everything the run reads or builds, e.g. 512M, 4G
+                         (default: the smaller of 8G and 3/4 of physical memory); an input
+                         that would need more fails before allocating (exit 2, 3 when baking)
   --quiet, -q            no summary
   --version, --help
 

@@ -2,6 +2,7 @@
 // (gltfpack's discipline: unknown or conflicting options fail first).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct Settings {
   bool version = false;
   int error_poses = 32;     // random poses for the pruning-error report
   int threads = 0;          // batch workers; 0 = all cores
+  uint64_t memory_limit = 0;  // --memory-limit in bytes; 0 = defaultMemoryLimit()
 };
 
 // Parse argv; the error text is one line for the user.

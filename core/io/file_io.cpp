@@ -2,6 +2,8 @@
 // failure can be reported with strerror and a failed write leaves no file.
 #include "core/io/file_io.h"
 
+#include "core/memory_budget.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -31,11 +33,18 @@ struct Fd {
 // Reads until EOF; works for regular files, pipes and /dev/stdin alike.
 // `hint` (the file size when known) sizes the buffer so a regular file is read
 // without regrowing: the +1 leaves room for the read that returns EOF.
+// Every buffer size is checked against the memory budget first, so an endless
+// pipe ends with an error, not with all of memory.
 Status readAll(int fd, const std::string& path, size_t hint, std::vector<uint8_t>& out) {
   size_t used = 0;
-  out.resize(std::max<size_t>(hint + 1, 65536));
+  const size_t first = std::max<size_t>(hint + 1, 65536);
+  if (Status st = checkMemory(first, path, "reading the file"); !st) return st;
+  out.resize(first);
   for (;;) {
-    if (used == out.size()) out.resize(out.size() * 2);
+    if (used == out.size()) {
+      if (Status st = checkMemory(out.size() * 2, path, "reading the file"); !st) return st;
+      out.resize(out.size() * 2);
+    }
     ssize_t n = ::read(fd, out.data() + used, out.size() - used);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return ioError(path, "cannot read", errno);
@@ -55,6 +64,14 @@ Status writeAll(int fd, const std::string& path, const uint8_t* p, size_t size) 
     size -= static_cast<size_t>(n);
   }
   return Status();
+}
+
+const char* fileKind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a file";
 }
 
 std::string dirName(const std::string& path) {
@@ -88,8 +105,12 @@ Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
   std::vector<uint8_t> bytes;
   struct stat st;
   size_t hint = 0;
-  if (::fstat(fd.fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
-    hint = static_cast<size_t>(st.st_size);
+  if (::fstat(fd.fd, &st) != 0) return ioError(path, "cannot stat", errno);
+  // Devices (/dev/zero, /dev/urandom) never end and directories are no data:
+  // only regular files and pipes (/dev/stdin, process substitution) are read.
+  if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
+    return makeError(path + ": not a regular file (" + fileKind(st.st_mode) + ")");
+  if (S_ISREG(st.st_mode) && st.st_size > 0) hint = static_cast<size_t>(st.st_size);
   if (Status s = readAll(fd.fd, path, hint, bytes); !s) return s.error();
   return bytes;
 }

@@ -12,6 +12,7 @@
 
 #include "core/body_model.h"
 #include "core/math/forward.h"
+#include "core/memory_budget.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -25,6 +26,7 @@ struct Motion {
   std::vector<double> betas;        // empty if the file has none
   std::string gender;               // "" if absent
   bool amass = false;               // AMASS-style file (Z-up world)
+  MemoryCharge charge;              // `frames` and `translation` against the memory budget
 };
 
 // `path` names the file in errors. fps_fallback is used when the file has no rate.
