@@ -30,9 +30,9 @@ Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
 }
 
 Result<ArrayDict> readJsonArrays(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return makeError(path + ": cannot open");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path);  // devices refused, size budgeted
+  if (!bytes) return bytes.error();
+  nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
   ArrayDict arrays;
   for (const auto& [key, value] : j.items()) {
