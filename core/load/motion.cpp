@@ -32,6 +32,10 @@ Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
 Result<ArrayDict> readJsonArrays(const std::string& path) {
   Result<std::vector<uint8_t>> bytes = readFileBytes(path);  // devices refused, size budgeted
   if (!bytes) return bytes.error();
+  // A parsed JSON value takes 16 bytes and a number at least 2 characters ("0,"),
+  // and each number is then copied into a double: at most 12 bytes per byte of text.
+  MemoryCharge parse;
+  if (Status st = parse.add(bytes->size() * 12, path, "parsing the JSON"); !st) return st.error();
   nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
   ArrayDict arrays;

@@ -103,6 +103,10 @@ fail("motion whose 500,000 frames exceed the limit", base("--motion", long500k, 
 slow = zero_npz(work / "slow.npz", {"poses": ("<f8", (30000, 72)), "mocap_framerate": np.array(1.0)})
 fail("resampling a 1 fps motion to --fps 1000", base("--motion", slow, "--fps", "1000"),
      3, ["slow.npz", "resampling 30000 frames", "would need"], [slow])
+big_json = work / "big.json"
+big_json.write_text(json.dumps({"poses": [[0] * 72] * 70000, "fps": 30}))  # 10 MB of text
+fail("JSON motion whose parse exceeds the limit", base("--motion", big_json, "--memory-limit", "64M"),
+     2, ["big.json", "parsing the JSON would need"], [big_json])
 tiny = motion_npz("tiny_fps.npz", frames=10, mocap_framerate=np.array(1e-3))
 fail("tiny source frame rate", base("--motion", tiny, "--fps", "30"), 2,
      ["tiny_fps.npz", "'mocap_framerate' is 0.001 frames per second"], [tiny])
