@@ -107,6 +107,28 @@ big_json = work / "big.json"
 big_json.write_text(json.dumps({"poses": [[0] * 72] * 70000, "fps": 30}))  # 10 MB of text
 fail("JSON motion whose parse exceeds the limit", base("--motion", big_json, "--memory-limit", "64M"),
      2, ["big.json", "parsing the JSON would need"], [big_json])
+# Last resort: the system refuses memory below --memory-limit (here an address-space
+# limit of 700 MB, set by the shell that execs smpl-export): one error line, the
+# stage's exit code, never an abort (134).
+if not ONLY or "last resort" in ONLY:
+    def limited(*argv):
+        return ["/bin/sh", "-c", 'ulimit -v 700000; exec "$0" "$@"', exe] + [str(a) for a in argv]
+    harness.expect_failure("last resort: out of memory while loading the model",
+                           limited("--model", widen, "--out", OUT, "--memory-limit", "16G"), exit_code=2,
+                           names=["widen.npz", "out of memory"], inputs=[str(widen)], out_dirs=[out_dir],
+                           forbidden=[str(OUT)], max_rss_mb=800)
+    harness.expect_failure("last resort: out of memory in an export job",
+                           limited(*base("--motion", long2m, "--memory-limit", "16G")), exit_code=3,
+                           names=["o.glb", "out of memory"], inputs=[str(long2m)], out_dirs=[out_dir],
+                           forbidden=[str(OUT)], max_rss_mb=800)
+    batch_in, batch_out = work / "batch_in", work / "batch_out"
+    batch_in.mkdir()
+    os.link(long2m, batch_in / "long2m.npz")
+    harness.expect_failure("last resort: out of memory in a batch job (worker thread)",
+                           limited("--model", MODEL, "--motion-dir", batch_in, "--out-dir", batch_out,
+                                   "--memory-limit", "16G", "--threads", "2"), exit_code=3,
+                           names=["long2m.glb", "out of memory"], inputs=[str(batch_in)], out_dirs=[batch_out],
+                           forbidden=[str(batch_out / "long2m.glb")], max_rss_mb=800)
 tiny = motion_npz("tiny_fps.npz", frames=10, mocap_framerate=np.array(1e-3))
 fail("tiny source frame rate", base("--motion", tiny, "--fps", "30"), 2,
      ["tiny_fps.npz", "'mocap_framerate' is 0.001 frames per second"], [tiny])
