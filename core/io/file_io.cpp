@@ -2,8 +2,6 @@
 // failure can be reported with strerror and a failed write leaves no file.
 #include "core/io/file_io.h"
 
-#include "core/memory_budget.h"
-
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -11,6 +9,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+
+#include "core/memory_budget.h"
 
 namespace smpl {
 namespace {

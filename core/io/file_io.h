@@ -10,6 +10,9 @@
 
 namespace smpl {
 
+// Regular files and pipes only: devices (/dev/zero), directories and sockets
+// are refused ("<path>: not a regular file (a character device)"); every buffer
+// size is checked against the memory budget (core/memory_budget.h) first.
 Result<std::vector<uint8_t>> readFileBytes(const std::string& path);
 
 // Write bytes atomically: temp file in the same directory, fsync, rename.
