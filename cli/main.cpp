@@ -8,7 +8,9 @@
 #include "core/demo/demo_body.h"
 #include "core/load/model_loader.h"
 #include "cli/batch.h"
+#include "cli/batch_plan.h"
 #include "cli/export_job.h"
+#include "cli/output_guard.h"
 #include "exporter/pruning_error.h"
 #include "cli/settings.h"
 
@@ -34,6 +36,15 @@ int main(int argc, char** argv) {
   if (s.help) return std::printf("%s", usageText().c_str()), kExitOk;
   if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
 
+  // Before any work: outputs must not be inputs; a batch is planned (motion
+  // listing, name collisions, up-to-date decisions) and refused as a whole.
+  JobFailure planned{kExitOk, ""};
+  Result<BatchPlan> plan = BatchPlan();
+  if (!s.motion_dir.empty()) plan = planBatch(s, &planned);
+  else if (Status st = checkOutputsAreNotInputs({s.out}, runInputs(s, s.motions)); !st)
+    planned = {kExitUsage, "Error in arguments: " + st.message()};
+  if (planned.code != kExitOk) return std::fprintf(stderr, "%s\n", planned.message.c_str()), planned.code;
+
   if (!s.betas_file.empty()) {
     Result<std::vector<double>> betas = readBetasFile(s.betas_file);
     if (!betas) return std::fprintf(stderr, "%s\n", errorLine("loading", s.betas_file, betas.message()).c_str()), kExitLoad;
@@ -43,11 +54,11 @@ int main(int argc, char** argv) {
   if (!loaded) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, loaded.message()).c_str()), kExitLoad;
 
   if (!s.motion_dir.empty()) {
-    BatchSummary summary = runBatch(*loaded, s);
+    BatchSummary summary = runBatch(*loaded, s, *plan);
     return summary.failed > 0 ? kExitExport : kExitOk;
   }
   JobFailure failure{kExitOk, ""};
-  Result<ExportReport> report = runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet}, &failure);
+  Result<ExportReport> report = runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""}, &failure);
   if (!report) return std::fprintf(stderr, "%s\n", failure.message.c_str()), failure.code;
   if (!s.quiet) {
     Result<PruningError> err = measurePruningError(*loaded, report->options, s.error_poses);
