@@ -92,7 +92,8 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(failure, kExitUsage, "in", "arguments", "no writer for " + job.out);
-  removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json"});
+  if (job.producer_hash.empty())  // a batch (planBatch) cleans all its outputs' temporaries at once
+    removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json"});
   Result<std::vector<Motion>> motions = loadMotions(job, failure);
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;

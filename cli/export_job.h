@@ -40,7 +40,8 @@ std::string errorLine(const std::string& verb, const std::string& path, const st
 
 // Returns the report, or fills `failure` and returns an Error. Before any
 // work, stale temporaries of this output and its sidecar are removed
-// (file_io.h); after building, the asset must pass validateAsset (exit 3,
+// (file_io.h; unless the job comes from planBatch, which removed them for
+// every output: job.producer_hash set); after building, the asset must pass validateAsset (exit 3,
 // nothing written); the output and its sidecar are committed together
 // (writeFilesTogether, sidecar last): both new or both as before.
 Result<ExportReport> runExport(const BodyModel& model, const Settings& settings, const ExportJob& job,

@@ -185,23 +185,29 @@ def symlink_loop():
 def killed_run():
     d = fresh("kill")
     long_motion = d / "long.npz"
-    t = np.arange(6000) / 30.0
+    t = np.arange(450) / 30.0  # 15 s at 1000 fps: a 35 MB FBX, about 2 s, 250 MB
     poses = np.zeros((t.size, 72))
     poses[:, 3:] = 0.3 * np.sin(t[:, None] * np.linspace(0.5, 3, 69)[None, :])
     np.savez(long_motion, poses=poses, fps=np.array(30.0))
     out = d / "big.fbx"
-    proc = subprocess.Popen([str(exe), "--model", "builtin", "--motion", str(long_motion), "--fps", "1000",
-                             "--out", str(out), "-q"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    seen = []
-    deadline = time.monotonic() + 240
-    while proc.poll() is None and time.monotonic() < deadline:
-        seen = [n for n in os.listdir(d) if n.startswith(".big.fbx.smpl.tmp-")]
-        if seen:
+    for attempt in range(3):  # the write lasts tens of ms; poll for its temporary, then SIGKILL
+        proc = subprocess.Popen([str(exe), "--model", "builtin", "--motion", str(long_motion), "--fps", "1000",
+                                 "--out", str(out), "-q"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        seen = []
+        deadline = time.monotonic() + 120
+        while proc.poll() is None and time.monotonic() < deadline:
+            seen = [n for n in os.listdir(d) if n.startswith(".big.fbx.smpl.tmp-")]
+            if seen:
+                break
+            time.sleep(0.001)
+        caught = proc.poll() is None and bool(seen)
+        proc.send_signal(signal.SIGKILL)
+        proc.wait()
+        if caught:
             break
-        time.sleep(0.002)
-    caught = proc.poll() is None and bool(seen)
-    proc.send_signal(signal.SIGKILL)
-    proc.wait()
+        for name in os.listdir(d):  # finished before the poll saw it: try again
+            if name != "long.npz":
+                os.unlink(d / name)
     left = sorted(n for n in os.listdir(d) if n != "long.npz")
     check("kill.caught_mid_write", caught, f"temporary seen: {seen}, exit {proc.returncode}")
     check("kill.only_dot_temporaries_left",
