@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -178,17 +179,28 @@ TEST_F(FileIo, RemovesOnlyStaleTemporariesOfItsOutputs) {
   ASSERT_GT(child, 0);
   int status = 0;
   ::waitpid(child, &status, 0);  // now a pid that is not alive
-  const std::string dead = std::to_string(child), live = std::to_string(::getpid());
+  pid_t sleeper = ::fork();  // another live process
+  if (sleeper == 0) {
+    ::pause();
+    ::_exit(0);
+  }
+  ASSERT_GT(sleeper, 0);
+  const std::string dead = std::to_string(child), live = std::to_string(sleeper);
   const std::vector<std::string> files = {
       ".out.glb.smpl.tmp-" + dead,           ".out.glb.smpl.json.smpl.tmp-" + dead,
       ".out.glb.smpl.tmp-" + dead + "-old",  ".out.glb.smpl.tmp-" + live,
       ".other.glb.smpl.tmp-" + dead,         "out.glb.smpl.tmp-" + dead,
       ".out.glb.tmp-" + dead};
   for (const std::string& f : files) std::ofstream(dir_ + "/" + f) << "x";
-  EXPECT_EQ(removeStaleTemps(dir_, {"out.glb", "out.glb.smpl.json"}), 3);
+  std::ofstream(dir_ + "/.out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid())) << "x";  // this run's
+  const int removed = removeStaleTemps(dir_, {"out.glb", "out.glb.smpl.json"});
+  ::kill(sleeper, SIGKILL);
+  ::waitpid(sleeper, &status, 0);
+  EXPECT_EQ(removed, 3);
   std::vector<std::string> left = list();
   std::sort(left.begin(), left.end());
-  std::vector<std::string> want = {files[3], files[4], files[5], files[6]};
+  std::vector<std::string> want = {files[3], files[4], files[5], files[6],
+                                    ".out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid())};
   std::sort(want.begin(), want.end());
   EXPECT_EQ(left, want);
 }
