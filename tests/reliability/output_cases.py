@@ -147,6 +147,8 @@ def batch_refusals():
     expect_failure("batch.missing_motion_dir",
                    [exe, "--model", "builtin", "--motion-dir", missing, "--out-dir", work / "missing_out"],
                    exit_code=2, names=[str(missing)], forbidden=[work / "missing_out"])
+    expect_failure("batch.force_needs_batch_mode", [exe, "--model", "builtin", "--out", odir / "x.glb", "--force"],
+                   exit_code=1, names=["--force"], forbidden=[odir / "x.glb"])
     not_dir = work / "collide" / "file_not_dir"
     not_dir.write_text("x")
     expect_failure("batch.motion_dir_is_a_file",
