@@ -33,8 +33,8 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s, const BatchPlan
         continue;
       }
       JobFailure failure{kExitOk, ""};
-      Result<ExportReport> r = runExport(model, s, ExportJob{out, {motions[i].motion}, false, motions[i].producer_hash},
-                                            &failure);
+      const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
+      Result<ExportReport> r = runExport(model, s, job, &failure);
       std::lock_guard<std::mutex> lock(print);
       if (!r) {
         ++summary.failed;

@@ -68,7 +68,9 @@ Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs, const s
       if (!identify(path, &id)) continue;
       auto inode = by_inode.find({id.dev, id.ino});
       auto real = by_path.find(id.real);
-      const std::string* input = inode != by_inode.end() ? &inode->second : real != by_path.end() ? &real->second : nullptr;
+      const std::string* input = inode != by_inode.end() ? &inode->second
+                                 : real != by_path.end() ? &real->second
+                                                          : nullptr;
       if (input)
         return makeError("output " + path + " would overwrite the input " + *input +
                          " (same file); choose another output path");
