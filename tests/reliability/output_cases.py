@@ -211,14 +211,17 @@ def killed_run():
             time.sleep(0.001)
         caught = proc.poll() is None and bool(seen)
         proc.send_signal(signal.SIGKILL)
-        proc.wait()
+        _, status, usage = os.wait4(proc.pid, 0)  # the kernel's own peak-memory accounting
+        proc.returncode = os.waitstatus_to_exitcode(status)
         if caught:
             break
         for name in os.listdir(d):  # finished before the poll saw it: try again
             if name != "long.npz":
                 os.unlink(d / name)
     left = sorted(n for n in os.listdir(d) if n != "long.npz")
-    check("kill.caught_mid_write", caught, f"temporary seen: {seen}, exit {proc.returncode}")
+    peak = usage.ru_maxrss / 1024.0
+    check("kill.caught_mid_write", caught and peak < 600,
+          f"temporary seen: {seen}, exit {proc.returncode}, peak {peak:.0f} MB")
     check("kill.only_dot_temporaries_left",
           all(n.startswith(".") and ".smpl.tmp-" in n for n in left) and left,
           f"left: {left}")
