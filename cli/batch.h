@@ -1,10 +1,12 @@
 // Batch conversion (--motion-dir DIR --out-dir DIR): every .npz/.json motion
-// in DIR becomes <out-dir>/<stem>.<format>, on all cores. Outputs newer than
-// their motion and model are skipped; a failing file is reported and the
-// batch goes on.
+// in DIR becomes <out-dir>/<stem>.<format>, on all cores. planBatch
+// (batch_plan.h) decides before any work what to convert and what is up to
+// date (same inputs and options); a failing file is reported and the batch
+// goes on.
 #pragma once
 
 #include "core/body_model.h"
+#include "cli/batch_plan.h"
 #include "cli/settings.h"
 
 namespace smpl {
@@ -13,6 +15,8 @@ struct BatchSummary {
   int converted = 0, skipped = 0, failed = 0;
 };
 
-BatchSummary runBatch(const BodyModel& model, const Settings& settings);
+// Converts `plan` (from planBatch with the same settings); prints its notes
+// and per-entry errors (counted as failed) and one line per output.
+BatchSummary runBatch(const BodyModel& model, const Settings& settings, const BatchPlan& plan);
 
 }  // namespace smpl

@@ -13,7 +13,9 @@
 #include <string>
 
 #include "cli/batch.h"
+#include "cli/batch_plan.h"
 #include "cli/export_job.h"
+#include "cli/output_guard.h"
 #include "cli/settings.h"
 #include "core/demo/demo_body.h"
 #include "core/io/printable.h"
@@ -64,6 +66,15 @@ int run(int argc, char** argv, Stage* stage) {
   if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
   setMemoryLimit(s.memory_limit);
 
+  // Before any work: outputs must not be inputs; a batch is planned (motion
+  // listing, name collisions, up-to-date decisions) and refused as a whole.
+  JobFailure planned{kExitOk, ""};
+  Result<BatchPlan> plan = BatchPlan();
+  if (!s.motion_dir.empty()) plan = planBatch(s, &planned);
+  else if (Status st = checkOutputsAreNotInputs({s.out}, runInputs(s, s.motions)); !st)
+    planned = {kExitUsage, "Error in arguments: " + st.message()};
+  if (planned.code != kExitOk) return report(planned.message, planned.code);
+
   if (!s.betas_file.empty()) {
     stage->set("loading", s.betas_file, kExitLoad);
     Result<std::vector<double>> betas = readBetasFile(s.betas_file);
@@ -82,11 +93,12 @@ int run(int argc, char** argv, Stage* stage) {
 
   stage->set("exporting", s.motion_dir.empty() ? s.out : s.motion_dir, kExitExport);
   if (!s.motion_dir.empty()) {
-    BatchSummary summary = runBatch(*loaded, s);
+    BatchSummary summary = runBatch(*loaded, s, *plan);
     return summary.failed > 0 ? kExitExport : kExitOk;
   }
   JobFailure failure{kExitOk, ""};
-  Result<ExportReport> result = runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet}, &failure);
+  Result<ExportReport> result =
+      runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""}, &failure);
   if (!result) return report(failure.message, failure.code);
   if (!s.quiet) {
     Result<PruningError> err = measurePruningError(*loaded, result->options, s.error_poses);

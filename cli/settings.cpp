@@ -152,7 +152,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
     if (has("--fbx-units") && s.format != "fbx") return makeError("--fbx-units applies only to --format fbx");
     return Status();
   }
-  if (has("--format") || has("--threads")) return makeError("--format and --threads apply only to batch mode (--motion-dir)");
+  if (has("--format") || has("--threads") || has("--force"))
+    return makeError("--format, --threads and --force apply only to batch mode (--motion-dir)");
   if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
   const bool fbx = endsWith(s.out, ".fbx");
   if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
@@ -164,7 +165,7 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   return Status();
 }
 
-const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco"};
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco", "--force"};
 
 }  // namespace
 
@@ -184,12 +185,14 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
     if (arg != "--motion" && std::find(given.begin(), given.end(), arg) != given.end())
       return makeError("option " + arg + " given twice");
     given.push_back(arg);
+    s.given_options.emplace_back(arg, value);
     if (arg == "--help" || arg == "-h") s.help = true;
     else if (arg == "--version") s.version = true;
     else if (arg == "--quiet" || arg == "-q") s.quiet = true;
     else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
     else if (arg == "--quantize-morphs") s.writer_options.quantize_morphs = true;
     else if (arg == "--draco") s.writer_options.draco = true;
+    else if (arg == "--force") s.force = true;
     else if (Status st = applyOption(arg, value, &s); !st) return st.error();
   }
   s.betas_given = std::find(given.begin(), given.end(), "--betas") != given.end() ||
@@ -270,7 +273,9 @@ Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rot
                          output is always Y-up
   --root-motion keep|in-place   keep or drop horizontal root motion (default keep)
   --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json in DIR, in parallel, skipping
-                         outputs newer than their inputs; per-file errors do not stop the batch
+                         outputs made from the same inputs and options (recorded in the sidecar);
+                         per-file errors do not stop the batch
+  --force                batch: rebuild every output, even when up to date
   --format glb|gltf|fbx  batch output format (default glb)
   --threads N            batch workers (default: all cores)
   --memory-limit SIZE    memory budget for everything the run reads or builds, e.g. 512M, 4G
