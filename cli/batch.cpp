@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
 #include <thread>
 
-#include "cli/batch_shard.h"
+#include "cli/batch_plan.h"
 #include "cli/export_job.h"
 #include "cli/manifest.h"
 #include "cli/sha256.h"
@@ -18,75 +19,66 @@ namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
-std::vector<fs::path> listMotions(const std::string& dir) {
-  std::vector<fs::path> files;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    const std::string ext = entry.path().extension().string();
-    if (entry.is_regular_file() && (ext == ".npz" || ext == ".json" || ext == ".smpl" || ext == ".pkl"))
-      files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-// Up to date: output and sidecar exist and are newer than every input.
-bool upToDate(const fs::path& out, const fs::path& motion, const std::string& model) {
-  std::error_code ec;
-  const fs::path sidecar = out.string() + ".smpl.json";
-  if (!fs::exists(out, ec) || !fs::exists(sidecar, ec)) return false;
-  auto built = std::min(fs::last_write_time(out, ec), fs::last_write_time(sidecar, ec));
-  if (ec || built < fs::last_write_time(motion, ec)) return false;
-  return model == "builtin" || built >= fs::last_write_time(model, ec);
-}
-
 // Output size and digest for the manifest (only when one is written).
-void describeOutput(const fs::path& out, bool manifest, ManifestEntry* e) {
-  e->output = out.string();
+void describeOutput(const std::string& out, bool manifest, ManifestEntry* e) {
+  e->output = out;
   std::error_code ec;
   e->bytes = static_cast<size_t>(fs::file_size(out, ec));
-  if (Result<std::string> digest = manifest ? sha256File(out.string()) : Result<std::string>(std::string()); digest)
+  if (Result<std::string> digest = manifest ? sha256File(out) : Result<std::string>(std::string()); digest)
     e->sha256 = *digest;
 }
 
 // No pose keys at all (AMASS shape.npz, *_stagei.npz): skipped, not failed.
-// An unreadable file is left to the export, which reports it.
-bool noPoseData(const fs::path& motion) {
-  Result<bool> poses = hasPoseData(motion.string());
-  return poses && !*poses;
+// An unreadable file (or one too large to read here) is left to the export,
+// which reports it with its guards.
+bool noPoseData(const std::string& motion) {
+  try {
+    Result<bool> poses = hasPoseData(motion);
+    return poses && !*poses;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+void printHeader(const Settings& s, const BatchPlan& plan) {
+  for (const std::string& note : plan.notes) std::printf("note: %s\n", note.c_str());
+  for (const std::string& error : plan.errors) std::fprintf(stderr, "%s\n", error.c_str());
+  if (plan.listed == 0)
+    std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n", s.motion_dir.c_str());
+  else if (plan.outputs.empty() && !s.quiet)
+    std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index, s.shard_count, plan.listed,
+                s.motion_dir.c_str());
 }
 
 }  // namespace
 
-BatchSummary runBatch(const BodyModel& model, const Settings& s) {
+BatchSummary runBatch(const BodyModel& model, const Settings& s, const BatchPlan& plan) {
   BatchSummary summary;
   std::error_code ec;
   fs::create_directories(s.out_dir, ec);
-  const std::vector<fs::path> all = listMotions(s.motion_dir);
-  const std::vector<fs::path> motions = shardMotions(all, s.motion_dir, s.shard_index, s.shard_count);
-  if (all.empty()) std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n", s.motion_dir.c_str());
-  else if (motions.empty() && !s.quiet)
-    std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index, s.shard_count, all.size(),
-                s.motion_dir.c_str());
+  printHeader(s, plan);
+  summary.failed = static_cast<int>(plan.errors.size());
+  const std::vector<PlannedOutput>& motions = plan.outputs;
   std::vector<ManifestEntry> manifest(motions.size());
+  const bool record = !s.manifest.empty();
   std::atomic<size_t> next{0};
   std::mutex print;
   auto worker = [&] {
     for (size_t i; (i = next++) < motions.size();) {
       const auto start = std::chrono::steady_clock::now();
-      const fs::path out = fs::path(s.out_dir) / (motions[i].stem().string() + "." + s.format);
-      ManifestEntry& entry = manifest[i];
-      entry.input = motions[i].string();
       auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-      if (upToDate(out, motions[i], s.model)) {
-        describeOutput(out, !s.manifest.empty(), &entry);
+      const std::string& out = motions[i].out;
+      ManifestEntry& entry = manifest[i];
+      entry.input = motions[i].motion;
+      if (motions[i].up_to_date) {
+        describeOutput(out, record, &entry);
         entry.status = "up-to-date";
         entry.seconds = seconds();
         std::lock_guard<std::mutex> lock(print);
         ++summary.skipped;
         continue;
       }
-      if (noPoseData(motions[i])) {
+      if (noPoseData(motions[i].motion)) {
         entry.status = "skipped";
         entry.message = "no pose data (a shape file: betas/gender only)";
         entry.seconds = seconds();
@@ -96,8 +88,9 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s) {
         continue;
       }
       JobFailure failure{kExitOk, ""};
-      Result<ExportReport> r = runExport(model, s, ExportJob{out.string(), {motions[i].string()}, false}, &failure);
-      if (r) describeOutput(out, !s.manifest.empty(), &entry);
+      const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
+      Result<ExportReport> r = runExport(model, s, job, &failure);
+      if (r) describeOutput(out, record, &entry);
       entry.status = r ? "converted" : "failed";
       entry.message = r ? "" : failure.message;
       entry.seconds = seconds();
@@ -117,9 +110,9 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s) {
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < std::min<size_t>(threads, std::max<size_t>(1, motions.size())); ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
-  std::printf("batch: %d converted, %d up to date, %d skipped (no pose data), %d failed\n", summary.converted,
-              summary.skipped, summary.no_poses, summary.failed);
-  if (!s.manifest.empty())
+  std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n", summary.converted,
+              summary.skipped, summary.failed, summary.no_poses);
+  if (record)
     if (Status st = writeManifest(s.manifest, manifest); !st) {
       std::fprintf(stderr, "%s\n", errorLine("saving", s.manifest, st.message()).c_str());
       summary.manifest_failed = true;

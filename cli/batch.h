@@ -1,14 +1,16 @@
 // Batch conversion (--motion-dir DIR --out-dir DIR): every .npz/.json/.smpl/
-// .pkl motion in DIR becomes <out-dir>/<stem>.<format>, on all cores. Outputs
-// newer than their motion and model are skipped (up to date); files without
-// pose keys (AMASS shape.npz, *_stagei.npz: hasPoseData() is false, decided
-// from the keys, not the name) are skipped with a note naming them and do not
-// count as failed; a failing file (it has pose keys but is broken) is
-// reported and the batch goes on. --shard I/N keeps a deterministic share
-// (cli/batch_shard.h); --manifest writes cli/manifest.h's JSON lines.
+// .pkl motion in DIR becomes <out-dir>/<stem>.<format>, on all cores.
+// planBatch (batch_plan.h) decides before any work what to convert and what is
+// up to date (same inputs and options), and keeps this run's --shard share
+// (cli/batch_shard.h). Files without pose keys (AMASS shape.npz,
+// *_stagei.npz: hasPoseData() is false, decided from the keys, not the name)
+// are skipped with a note naming them and do not count as failed; a failing
+// file (it has pose keys but is broken) is reported and the batch goes on.
+// --manifest writes cli/manifest.h's JSON lines.
 #pragma once
 
 #include "core/body_model.h"
+#include "cli/batch_plan.h"
 #include "cli/settings.h"
 
 namespace smpl {
@@ -19,6 +21,8 @@ struct BatchSummary {
   bool manifest_failed = false;                 // --manifest could not be written
 };
 
-BatchSummary runBatch(const BodyModel& model, const Settings& settings);
+// Converts `plan` (from planBatch with the same settings); prints its notes
+// and per-entry errors (counted as failed) and one line per output.
+BatchSummary runBatch(const BodyModel& model, const Settings& settings, const BatchPlan& plan);
 
 }  // namespace smpl

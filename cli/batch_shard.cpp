@@ -1,14 +1,15 @@
 #include "cli/batch_shard.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace smpl {
 namespace fs = std::filesystem;
 
-std::vector<fs::path> shardMotions(std::vector<fs::path> files, const fs::path& root, int index, int count) {
-  auto key = [&](const fs::path& p) { return p.lexically_relative(root).generic_string(); };
-  std::sort(files.begin(), files.end(), [&](const fs::path& a, const fs::path& b) { return key(a) < key(b); });
-  std::vector<fs::path> share;
+std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root, int index, int count) {
+  auto key = [&](const std::string& p) { return fs::path(p).lexically_relative(root).generic_string(); };
+  std::sort(files.begin(), files.end(), [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
+  std::vector<std::string> share;
   for (size_t p = 0; p < files.size(); ++p)
     if (count <= 1 || static_cast<int>(p % static_cast<size_t>(count)) == index) share.push_back(files[p]);
   return share;

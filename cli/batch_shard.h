@@ -9,15 +9,13 @@
 // as they see the same folder.
 #pragma once
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace smpl {
 
-// Keeps share `index` of `count` (0 <= index < count) of `files` (paths under
-// `root`), sorted by relative path.
-std::vector<std::filesystem::path> shardMotions(std::vector<std::filesystem::path> files,
-                                                const std::filesystem::path& root, int index, int count);
+// Share `index` of `count` (0 <= index < count) of `files` (paths under
+// `root`), in the sorted order above.
+std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root, int index, int count);
 
 }  // namespace smpl

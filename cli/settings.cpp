@@ -8,6 +8,8 @@
 
 #include "core/io/npy.h"
 #include "core/io/npz.h"
+#include "core/load/validate_inputs.h"
+#include "core/memory_budget.h"
 
 namespace smpl {
 namespace {
@@ -98,7 +100,7 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
     s->animation.fps = *v;
   } else if (name == "--source-fps") {
     Result<double> v = parseNumber(value, name);
-    if (!v || *v <= 0 || *v > 1000) return makeError("--source-fps: expected a rate in (0, 1000], got '" + value + "'");
+    if (!v || *v < 1 || *v > 1000) return makeError("--source-fps: expected a rate in [1, 1000], got '" + value + "'");
     s->source_fps = *v;
   } else if (name == "--shard") {
     return parseShard(value, s);
@@ -112,6 +114,10 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--root-motion") {
     if (value != "keep" && value != "in-place") return makeError("--root-motion: expected 'keep' or 'in-place', got '" + value + "'");
     s->animation.in_place = value == "in-place";
+  } else if (name == "--memory-limit") {
+    Result<uint64_t> v = parseMemorySize(value);
+    if (!v) return v.error();
+    s->memory_limit = *v;
   } else if (name == "--model") s->model = value;
   else if (name == "--out") s->out = value;
   else if (name == "--betas-file") s->betas_file = value;
@@ -123,6 +129,7 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   else if (name == "--betas" || name == "--expression") {
     Result<std::vector<double>> v = parseList(value, name);
     if (!v) return v.error();
+    if (Status st = checkCoefficients(*v, name, "value"); !st) return st;
     (name == "--betas" ? e.betas : e.expression) = *v;
   } else if (name == "--correctives") {
     if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
@@ -166,8 +173,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
     if (has("--fbx-units") && s.format != "fbx") return makeError("--fbx-units applies only to --format fbx");
     return Status();
   }
-  if (has("--format") || has("--threads") || has("--shard") || has("--manifest"))
-    return makeError("--format, --threads, --shard and --manifest apply only to batch mode (--motion-dir)");
+  if (has("--format") || has("--threads") || has("--force") || has("--shard") || has("--manifest"))
+    return makeError("--format, --threads, --force, --shard and --manifest apply only to batch mode (--motion-dir)");
   if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
   const bool fbx = endsWith(s.out, ".fbx");
   if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
@@ -179,7 +186,7 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   return Status();
 }
 
-const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco",
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco", "--force",
                               "--flat-hand-mean"};
 
 }  // namespace
@@ -200,12 +207,14 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
     if (arg != "--motion" && std::find(given.begin(), given.end(), arg) != given.end())
       return makeError("option " + arg + " given twice");
     given.push_back(arg);
+    s.given_options.emplace_back(arg, value);
     if (arg == "--help" || arg == "-h") s.help = true;
     else if (arg == "--version") s.version = true;
     else if (arg == "--quiet" || arg == "-q") s.quiet = true;
     else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
     else if (arg == "--quantize-morphs") s.writer_options.quantize_morphs = true;
     else if (arg == "--draco") s.writer_options.draco = true;
+    else if (arg == "--force") s.force = true;
     else if (arg == "--flat-hand-mean") s.flat_hand_mean = true;
     else if (Status st = applyOption(arg, value, &s); !st) return st.error();
   }
@@ -292,15 +301,19 @@ rotation matrices, SMPLCodec .smpl, SMPL-X/SMPL fits .pkl/.npz (SMPLify-X, PIXIE
                          output is always Y-up
   --root-motion keep|in-place   keep or drop horizontal root motion (default keep)
   --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json/.smpl/.pkl in DIR, in parallel,
-                         skipping outputs newer than their inputs; per-file errors do not stop the
-                         batch; files with no pose keys (AMASS shape.npz, *_stagei.npz) are skipped
-                         with a note
+                         skipping outputs made from the same inputs and options (recorded in the
+                         sidecar); per-file errors do not stop the batch; files with no pose keys
+                         (AMASS shape.npz, *_stagei.npz) are skipped with a note
+  --force                batch: rebuild every output, even when up to date
   --shard I/N            batch: convert only share I of N (0 <= I < N): the motions sorted by path
                          relative to DIR, the one at position p belongs to shard p mod N
   --manifest FILE        batch: write one JSON line per motion (input, output, bytes, sha256,
                          seconds, status); shards' manifests concatenate
   --format glb|gltf|fbx  batch output format (default glb)
   --threads N            batch workers (default: all cores)
+  --memory-limit SIZE    memory budget for everything the run reads or builds, e.g. 512M, 4G
+                         (default: the smaller of 8G and 3/4 of physical memory); an input
+                         that would need more fails before allocating (exit 2, 3 when baking)
   --quiet, -q            no summary
   --version, --help
 

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_budget.h"
+
 namespace smpl {
 
 struct Array {
@@ -17,6 +19,7 @@ struct Array {
   std::vector<double> data;          // numeric/bool values, C order; empty for strings
   std::vector<std::string> strings;  // string arrays ('U'/'S' dtypes), C order
   std::string dtype;                 // numpy descr as read, e.g. "<f8", "|b1", "<U6"
+  MemoryCharge charge;               // `data`/`strings` bytes held against the memory budget
   bool isString() const { return !strings.empty() || (!dtype.empty() && (dtype[1] == 'U' || dtype[1] == 'S')); }
   int64_t size() const {
     int64_t n = 1;

@@ -8,6 +8,7 @@
 
 #include "core/io/file_io.h"
 #include "core/io/npy.h"
+#include "core/io/printable.h"
 #include "core/io/zip.h"
 
 namespace smpl {
@@ -28,8 +29,8 @@ Result<ArrayDict> parseNpz(const uint8_t* data, size_t size, const std::string& 
     if (hasSuffix(e.name, "/") && e.data.empty()) continue;  // directory entry
     const std::string key = keyOf(e.name);
     if (arrays.count(key))
-      return makeError(context + "/" + e.name + ": duplicate member '" + key + "'");
-    Result<Array> a = parseNpy(e.data.data(), e.data.size(), context + "/" + e.name);
+      return makeError(context + "/" + printable(e.name) + ": duplicate member '" + key + "'");
+    Result<Array> a = parseNpy(e.data.data(), e.data.size(), context + "/" + printable(e.name));
     if (!a) return a.error();
     std::vector<uint8_t>().swap(e.data);
     arrays.emplace(key, std::move(*a));

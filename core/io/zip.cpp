@@ -6,6 +6,8 @@
 // the file and the limits before any entry is allocated or inflated.
 #include "core/io/zip.h"
 
+#include "core/io/printable.h"
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -152,7 +154,7 @@ Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t e
   c.csize = le32(h + 20);
   c.usize = le32(h + 24);
   c.local_offset = le32(h + 42);
-  const std::string ectx = ctx + "/" + c.name;
+  const std::string ectx = ctx + "/" + printable(c.name);
   if (Status st = applyZip64Extra(h + kCentralBytes + n, x, c, ectx); !st) return st.error();
   if (Status st = checkSupported(c, ectx); !st) return st.error();
   pos += kCentralBytes + n + x + k;
@@ -174,7 +176,7 @@ Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, cons
     if (!c) return c.error();
     if (c->usize > limits.max_total_uncompressed - total)
       return makeError(ctx + ": declared uncompressed size exceeds the limit of " +
-                       std::to_string(limits.max_total_uncompressed) + " bytes at '" + c->name +
+                       std::to_string(limits.max_total_uncompressed) + " bytes at '" + printable(c->name) +
                        "'");
     total += c->usize;
     entries.push_back(std::move(*c));
@@ -259,11 +261,12 @@ uint32_t crc32Of(const std::vector<uint8_t>& bytes) {
 
 Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
                               const std::string& ctx) {
-  const std::string ectx = ctx + "/" + c.name;
+  const std::string ectx = ctx + "/" + printable(c.name);
   Result<size_t> start = locateData(data, c, data_end, ectx);
   if (!start) return start.error();
   ZipEntry e;
   e.name = c.name;
+  if (Status st = e.charge.add(c.usize, ectx, "inflating the member"); !st) return st.error();
   if (c.method == 0) {
     e.data.assign(data + *start, data + *start + c.csize);
   } else {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_budget.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -15,6 +16,7 @@ namespace smpl {
 struct ZipEntry {
   std::string name;
   std::vector<uint8_t> data;  // uncompressed bytes, CRC-checked
+  MemoryCharge charge;        // `data` held against the memory budget
 };
 
 struct ZipLimits {

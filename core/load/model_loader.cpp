@@ -7,6 +7,7 @@
 #include "core/joint_names.h"
 #include "core/io/npz.h"
 #include "core/io/pickle/pickle.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace {
@@ -45,9 +46,7 @@ struct Arrays {
     if (!shapeMatches(a, expected))
       return makeError(context + ": '" + key + "' has shape " + shapeString(a.shape) + "; expected " +
                        expectedString(expected));
-    for (double v : a.data)
-      if (!std::isfinite(v)) return makeError(context + ": '" + key + "' contains NaN or infinite values");
-    return Status();
+    return checkFloatRange(a, context, key);
   }
   // Fetch key and check its shape in one step.
   Result<const Array*> get(const std::string& key, const std::vector<int64_t>& expected) const {
@@ -135,6 +134,7 @@ Result<BodyModel> buildCore(const Arrays& in) {
   splitShapedirs(m.kind, toMatrix(**sd, 3 * n, (*sd)->shape[2]), &m);
   m.posedirs = toMatrix(**pd, 3 * n, 9 * (k - 1));
   m.j_regressor = toMatrix(**jr, k, n).sparseView();
+  if (Status s = checkIndices(**f, in.context, "f"); !s) return s.error();
   m.faces = toMatrix(**f, (*f)->shape[0], 3).cast<int>();
   if (Status s = loadHands(in, &m); !s) return s.error();
   return m;

@@ -10,11 +10,13 @@
 #include "core/io/file_io.h"
 #include "core/io/npz.h"
 #include "core/io/pickle/pickle.h"
+#include "core/io/printable.h"
 #include "core/joint_names.h"
 #include "core/load/motion_aist.h"
 #include "core/load/motion_fit.h"
 #include "core/load/motion_internal.h"
 #include "core/load/motion_smplcodec.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace motion_detail {
@@ -30,6 +32,14 @@ Format detectFormat(const ArrayDict& d) {
 const Array* find(const ArrayDict& d, const char* key) {
   auto it = d.find(key);
   return it == d.end() ? nullptr : &it->second;
+}
+
+Status allocateFrames(int64_t t, size_t joints, const std::string& path, Motion* m) {
+  const uint64_t frame_bytes = sizeof(Rotations) + joints * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
+  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path, std::to_string(t) + " frames"); !st)
+    return st;
+  m->frames.assign(t, Rotations(joints, Eigen::Matrix3d::Identity()));
+  return Status();
 }
 
 Status checkNumbers(const Array& a, const std::string& path, const char* key) {
@@ -72,6 +82,10 @@ Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
 }
 
 Result<ArrayDict> readJsonArrays(const std::vector<uint8_t>& bytes, const std::string& path) {
+  // A parsed JSON value takes 16 bytes and a number at least 2 characters ("0,"),
+  // and each number is then copied into a double: at most 12 bytes per byte of text.
+  MemoryCharge parse;
+  if (Status st = parse.add(bytes.size() * 12, path, "parsing the JSON"); !st) return st.error();
   nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
   ArrayDict arrays;
@@ -81,9 +95,9 @@ Result<ArrayDict> readJsonArrays(const std::vector<uint8_t>& bytes, const std::s
       a.dtype = "<U";
       a.strings = {value.get<std::string>()};
     } else if (Status s = jsonToArray(value, &a); !s) {
-      return makeError(path + ": '" + key + "': " + s.message());
+      return makeError(path + ": '" + printable(key, 64) + "': " + s.message());
     } else if (a.size() != static_cast<int64_t>(a.data.size())) {
-      return makeError(path + ": '" + key + "': ragged array");
+      return makeError(path + ": '" + printable(key, 64) + "': ragged array");
     }
     arrays[key] = std::move(a);
   }
@@ -98,6 +112,8 @@ Result<Array> joinSplitPoses(const ArrayDict& d, const std::string& path) {
   const int64_t t = root->shape.empty() ? 0 : root->shape[0];
   Array joined;
   joined.shape = {t, 165};
+  if (Status st = joined.charge.add(static_cast<uint64_t>(t) * 165 * sizeof(double), path, "joining the pose keys"); !st)
+    return st.error();
   joined.data.assign(t * 165, 0.0);
   int64_t column = 0;
   for (int i = 0; i < 5; ++i) {
@@ -126,6 +142,9 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
                      " joints; expected 24 (SMPL), 52 (SMPL-H), 55 (SMPL-X) or 16 (MANO)");
   for (double v : poses.data)
     if (!std::isfinite(v)) return makeError(path + ": 'poses' contains NaN or infinite values");
+  const uint64_t frame_bytes = sizeof(Rotations) + j * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
+  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path, std::to_string(t) + " frames"); !st)
+    return st;
   m->frames.resize(t);
   const int64_t stride = matrices ? 9 * j : 3 * j;
   for (int64_t f = 0; f < t; ++f) {
@@ -158,8 +177,7 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
     const Array* rate = find(d, key);
     if (!rate || rate->isString() || rate->data.size() != 1) continue;
-    if (!(rate->data[0] > 0 && rate->data[0] < 10000))
-      return makeError(path + ": '" + key + "' is not a usable frame rate");
+    if (Status st = checkFrameRate(rate->data[0], path, "'" + std::string(key) + "'"); !st) return st;
     m->fps = rate->data[0];
     m->amass = m->amass || std::string(key) != "fps";
     break;
@@ -257,6 +275,7 @@ Result<Motion> loadMotion(const std::string& path, const MotionOptions& options)
   }
   if (!s) return s.error();
   settleFps(options, fallback, why, &m);
+  if (Status st = checkMotionValues(&m, path); !st) return st.error();
   return m;
 }
 

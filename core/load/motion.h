@@ -22,6 +22,7 @@
 #include "core/array.h"
 #include "core/body_model.h"
 #include "core/math/forward.h"
+#include "core/memory_budget.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -46,6 +47,7 @@ struct Motion {
   bool amass = false;               // AMASS-style file (Z-up world)
   PendingHands hands;               // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;   // what was assumed while reading, one line each
+  MemoryCharge charge;              // `frames` and `translation` against the memory budget
 };
 
 // Options of loadMotion.

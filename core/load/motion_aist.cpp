@@ -30,7 +30,7 @@ Status decodeAist(const ArrayDict& d, const std::string& path, Motion* m) {
     m->notes.push_back("no 'smpl_scaling': the translation is used unscaled");
   }
   m->layout = ModelKind::Smpl;
-  m->frames.assign(t, Rotations(24));
+  if (Status s = allocateFrames(t, 24, path, m); !s) return s;
   m->translation.resize(t);
   for (int64_t f = 0; f < t; ++f) {
     putAxisAngle(poses->data.data() + 72 * f, 24, 0, &m->frames[f]);

@@ -5,6 +5,7 @@
 
 #include "core/joint_names.h"
 #include "core/load/motion_internal.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace motion_detail {
@@ -118,7 +119,7 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   m->fps = 0.0;
   for (const char* key : {"fps", "frame_rate", "mocap_framerate"})
     if (const Array* r = find(d, key); r && !r->isString() && r->data.size() == 1) {
-      if (!(r->data[0] > 0 && r->data[0] < 10000)) return makeError(path + ": '" + key + "' is not a usable frame rate");
+      if (Status s = checkFrameRate(r->data[0], path, "'" + std::string(key) + "'"); !s) return s;
       m->fps = r->data[0];
       break;
     }
@@ -138,7 +139,7 @@ Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m) {
     return makeError(path + ": 'body_pose' has shape " + shapeString(body->shape) +
                      "; expected 21 joints (SMPL-X/SMPL-H: (T,63), (T,21,3), (T,21,3,3)) or 23 (SMPL: (T,69), ...)");
   m->layout = joints == 21 ? ModelKind::SmplX : ModelKind::Smpl;
-  m->frames.assign(t, Rotations(canonicalJointNames(m->layout).size(), Eigen::Matrix3d::Identity()));
+  if (Status s = allocateFrames(t, canonicalJointNames(m->layout).size(), path, m); !s) return s;
   if (!find(d, "global_orient")) m->notes.push_back("no 'global_orient': the root stays at rest");
   if (Status s = putPart(d, path, "global_orient", 1, 0, m); !s) return s;
   if (Status s = putPart(d, path, "body_pose", joints, 1, m); !s) return s;

@@ -24,6 +24,9 @@ Format detectFormat(const ArrayDict& arrays);
 
 const Array* find(const ArrayDict& d, const char* key);
 
+// T frames of `joints` rest rotations, charged to m->charge (the memory budget).
+Status allocateFrames(int64_t t, size_t joints, const std::string& path, Motion* m);
+
 // Numbers (not text), all finite; else "<path>: '<key>' ..." errors.
 Status checkNumbers(const Array& a, const std::string& path, const char* key);
 

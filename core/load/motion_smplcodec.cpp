@@ -2,6 +2,7 @@
 
 #include "core/joint_names.h"
 #include "core/load/motion_internal.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace motion_detail {
@@ -55,8 +56,8 @@ Status readScalars(const ArrayDict& d, const std::string& path, Motion* m) {
   }
   m->fps = 0.0;
   if (const Array* r = find(d, "frameRate")) {
-    if (r->isString() || r->data.size() != 1 || !(r->data[0] > 0 && r->data[0] < 10000))
-      return makeError(path + ": 'frameRate' is not a usable frame rate");
+    if (r->isString() || r->data.size() != 1) return makeError(path + ": 'frameRate' is not one number");
+    if (Status s = checkFrameRate(r->data[0], path, "'frameRate'"); !s) return s;
     m->fps = r->data[0];
   }
   if (const Array* e = find(d, "expressionParameters"))
@@ -109,7 +110,7 @@ Status decodeSmplCodec(const ArrayDict& d, const std::string& path, Motion* m) {
     return makeError(path + ": 'bodyPose' has " + std::to_string(t) + " frames but 'frameCount' is " +
                      (count->data.size() == 1 ? std::to_string(static_cast<long long>(count->data[0])) : "not a number"));
   const size_t joints = canonicalJointNames(m->layout).size();
-  m->frames.assign(t, Rotations(joints, Eigen::Matrix3d::Identity()));
+  if (Status s = allocateFrames(t, joints, path, m); !s) return s;
   const bool with_root = shape[1] == body;
   if (Status s = putPart(d, path, "bodyPose", static_cast<int>(shape[1]), with_root ? 0 : 1, m); !s) return s;
   if (!with_root)

@@ -34,22 +34,22 @@ outputs() {  # the files an out dir must hold, sorted
 }
 
 # 1. First run: 3 converted, 1 failed, nothing written for the bad one.
-run "$out" 3 "batch: 3 converted, 0 up to date, 0 skipped (no pose data), 1 failed"
+run "$out" 3 "batch: 3 converted, 0 up to date, 1 failed, 0 skipped (no pose data)"
 [ "$(ls "$out" | sort)" = "$(outputs)" ]; check "outputs: $(ls "$out" | tr '\n' ' ')" $?
 (cd "$out" && sha256sum $(outputs)) >"$work/first.sha"
 
 # 2. Nothing changed: all up to date, the bad one still fails.
-run "$out" 3 "batch: 0 converted, 3 up to date, 0 skipped (no pose data), 1 failed"
+run "$out" 3 "batch: 0 converted, 3 up to date, 1 failed, 0 skipped (no pose data)"
 
 # 3. A touched motion is reconverted alone, to the same bytes.
 sleep 1
 touch "$motions/smpl_72.npz"
-run "$out" 3 "batch: 1 converted, 2 up to date, 0 skipped (no pose data), 1 failed"
+run "$out" 3 "batch: 1 converted, 2 up to date, 1 failed, 0 skipped (no pose data)"
 [ "$out/smpl_72.glb" -nt "$out/amass_smplh.glb" ]; check "smpl_72.glb was not rewritten" $?
 (cd "$out" && sha256sum -c --quiet "$work/first.sha"); check "outputs changed after reconverting" $?
 
 # 4. Determinism across out dirs (fresh run, any thread schedule).
-run "$work/out2" 3 "batch: 3 converted, 0 up to date, 0 skipped (no pose data), 1 failed"
+run "$work/out2" 3 "batch: 3 converted, 0 up to date, 1 failed, 0 skipped (no pose data)"
 (cd "$work/out2" && sha256sum -c --quiet "$work/first.sha"); check "a fresh out dir differs from the first" $?
 
 # 5. The outputs are real animated GLBs: glTF magic and an "animations" array.

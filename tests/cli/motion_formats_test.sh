@@ -25,7 +25,7 @@ for f in shape.npz S1_stagei.npz; do
   grep -qF "note: skipped $work/subject/$f: no pose data" "$work/stdout"; check $? "no skip note for $f: $(cat "$work/stdout")"
   [ ! -e "$work/out1/${f%.npz}.glb" ]; check $? "$f produced an output"
 done
-tail -n 1 "$work/stdout" | grep -qxF "batch: 2 converted, 0 up to date, 2 skipped (no pose data), 0 failed"
+tail -n 1 "$work/stdout" | grep -qxF "batch: 2 converted, 0 up to date, 0 failed, 2 skipped (no pose data)"
 check $? "subject summary: $(tail -n 1 "$work/stdout")"
 [ -s "$work/out1/walk_poses.glb" ] && [ -s "$work/out1/run_stageii.glb" ]; check $? "subject motions not converted"
 [ ! -s "$work/stderr" ]; check $? "subject folder wrote to stderr: $(cat "$work/stderr")"
@@ -36,7 +36,7 @@ cp "$formats/broken_poses.npz" "$work/subject/"
 status=$?
 [ "$status" = 3 ]; check $? "broken motion: exit $status, expected 3"
 grep -qF "broken_poses.npz" "$work/stderr"; check $? "broken motion not named: $(cat "$work/stderr")"
-tail -n 1 "$work/stdout" | grep -qxF "batch: 0 converted, 2 up to date, 2 skipped (no pose data), 1 failed"
+tail -n 1 "$work/stdout" | grep -qxF "batch: 0 converted, 2 up to date, 1 failed, 2 skipped (no pose data)"
 check $? "broken summary: $(tail -n 1 "$work/stdout")"
 rm "$work/subject/broken_poses.npz"
 

@@ -77,7 +77,7 @@ TEST(Settings, MotionFormatAndShardOptions) {
   EXPECT_EQ(s->manifest, "s3.jsonl");
   struct Bad { std::vector<const char*> args; const char* message; };
   const Bad cases[] = {
-      {{"--source-fps", "0"}, "--source-fps: expected a rate in (0, 1000]"},
+      {{"--source-fps", "0"}, "--source-fps: expected a rate in [1, 1000]"},
       {{"--source-fps", "-30"}, "--source-fps: expected a rate"},
       {{"--source-fps", "nan"}, "--source-fps"},
       {{"--source-fps", "inf"}, "--source-fps"},
