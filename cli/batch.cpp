@@ -36,7 +36,7 @@ bool upToDate(const fs::path& out, const fs::path& motion, const std::string& mo
 
 }  // namespace
 
-BatchSummary runBatch(const BodyModel& model, const Settings& s) {
+BatchSummary runBatch(ModelSource& models, const Settings& s) {
   BatchSummary summary;
   std::error_code ec;
   fs::create_directories(s.out_dir, ec);
@@ -53,7 +53,10 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s) {
         continue;
       }
       JobFailure failure{kExitOk, ""};
-      Result<ExportReport> r = runExport(model, s, ExportJob{out.string(), {motions[i].string()}, false}, &failure);
+      Result<ModelPick> pick = models.forMotion(motions[i].string());  // per motion: a folder picks by gender
+      if (!pick) failure = JobFailure{kExitLoad, errorLine("loading", s.model, pick.message())};
+      Result<ExportReport> r = !pick ? Result<ExportReport>(makeError(failure.message))
+                                     : runExport(*pick->model, s, ExportJob{out.string(), {motions[i].string()}, false}, &failure);
       std::lock_guard<std::mutex> lock(print);
       if (!r) {
         ++summary.failed;
@@ -62,7 +65,8 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s) {
       }
       ++summary.converted;
       if (!s.quiet)
-        std::printf("%s: %d frames, %.2f MB, %.0f ms\n", out.c_str(), r->frames, r->bytes / 1e6, r->seconds * 1e3);
+        std::printf("%s: %d frames, %.2f MB, %.0f ms, model %s%s%s\n", out.c_str(), r->frames, r->bytes / 1e6,
+                    r->seconds * 1e3, pick->path.c_str(), pick->note.empty() ? "" : "; note: ", pick->note.c_str());
     }
   };
   const unsigned threads = s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());

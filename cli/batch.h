@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/body_model.h"
+#include "cli/model_source.h"
 #include "cli/settings.h"
 
 namespace smpl {
@@ -13,6 +14,7 @@ struct BatchSummary {
   int converted = 0, skipped = 0, failed = 0;
 };
 
-BatchSummary runBatch(const BodyModel& model, const Settings& settings);
+// `models` gives each motion its model (one file, or per motion from a folder).
+BatchSummary runBatch(ModelSource& models, const Settings& settings);
 
 }  // namespace smpl

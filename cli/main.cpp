@@ -5,10 +5,9 @@
 #include <cstdio>
 #include <string>
 
-#include "core/demo/demo_body.h"
-#include "core/load/model_loader.h"
 #include "cli/batch.h"
 #include "cli/export_job.h"
+#include "cli/model_source.h"
 #include "exporter/pruning_error.h"
 #include "cli/settings.h"
 
@@ -35,17 +34,21 @@ int main(int argc, char** argv) {
   if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
 
   if (!s.betas_file.empty()) {
-    Result<std::vector<double>> betas = readBetasFile(s.betas_file);
+    std::string note;
+    Result<std::vector<double>> betas = readBetasFile(s.betas_file, &note);
     if (!betas) return std::fprintf(stderr, "%s\n", errorLine("loading", s.betas_file, betas.message()).c_str()), kExitLoad;
+    if (!note.empty() && !s.quiet) std::printf("note: %s: %s\n", s.betas_file.c_str(), note.c_str());
     s.export_options.betas = *betas;
   }
-  Result<BodyModel> loaded = s.model == "builtin" ? Result<BodyModel>(demoBody()) : loadModel(s.model);
-  if (!loaded) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, loaded.message()).c_str()), kExitLoad;
-
+  ModelSource models(s.model);  // a file, builtin, or a folder (picked per motion)
   if (!s.motion_dir.empty()) {
-    BatchSummary summary = runBatch(*loaded, s);
+    BatchSummary summary = runBatch(models, s);
     return summary.failed > 0 ? kExitExport : kExitOk;
   }
+  Result<ModelPick> pick = models.forMotion(s.motions.empty() ? "" : s.motions[0]);
+  if (!pick) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, pick.message()).c_str()), kExitLoad;
+  const BodyModel* loaded = pick->model;
+  if (!pick->note.empty() && !s.quiet) std::printf("note: %s\n", pick->note.c_str());
   JobFailure failure{kExitOk, ""};
   Result<ExportReport> report = runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet}, &failure);
   if (!report) return std::fprintf(stderr, "%s\n", failure.message.c_str()), failure.code;
@@ -53,6 +56,7 @@ int main(int argc, char** argv) {
     Result<PruningError> err = measurePruningError(*loaded, report->options, s.error_poses);
     if (!err) return std::fprintf(stderr, "Error measuring %s: %s\n", s.out.c_str(), err.message().c_str()), kExitExport;
     printSummary(s.out, *report, *err);
+    std::printf("model: %s\n", pick->path.c_str());
   }
   return kExitOk;
 }

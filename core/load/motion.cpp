@@ -6,7 +6,8 @@
 
 #include "core/io/file_io.h"
 #include "core/joint_names.h"
-#include "core/io/npz.h"
+#include "core/load/betas_rows.h"
+#include "core/load/npz_arrays.h"
 
 namespace smpl {
 namespace {
@@ -115,7 +116,12 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fall
     for (double v : trans->data)
       if (!std::isfinite(v)) return makeError(path + ": 'trans' contains NaN or infinite values");
   }
-  if (const Array* betas = find(d, "betas"); betas && !betas->isString()) m->betas = betas->data;
+  if (const Array* betas = find(d, "betas"); betas && !betas->isString()) {  // per-frame rows: betas_rows.h
+    Result<BetasRows> rows = collapseBetasRows(*betas, path);
+    if (!rows) return rows.error();
+    m->betas = rows->betas;
+    if (rows->averaged) m->notes.push_back(betasRowsNote(*rows));
+  }
   if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty()) m->gender = gender->strings[0];
   m->fps = fps_fallback;
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
@@ -131,10 +137,18 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fall
   return Status();
 }
 
+// The keys loadMotion reads from an .npz (NpzArchive is lazy: nothing else is decoded).
+const std::vector<std::string>& motionKeys() {
+  static const std::vector<std::string> keys = {
+      "poses", "root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand", "trans", "betas",
+      "gender", "mocap_framerate", "mocap_frame_rate", "fps", "surface_model_type"};
+  return keys;
+}
+
 }  // namespace
 
 Result<Motion> loadMotion(const std::string& path, double fps_fallback) {
-  Result<ArrayDict> arrays = hasSuffix(path, ".json") ? readJsonArrays(path) : readNpzFile(path);
+  Result<ArrayDict> arrays = hasSuffix(path, ".json") ? readJsonArrays(path) : readNpzArrays(path, motionKeys());
   if (!arrays) return arrays.error();
   const ArrayDict& d = *arrays;
   Motion m;

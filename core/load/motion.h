@@ -25,6 +25,7 @@ struct Motion {
   std::vector<double> betas;        // empty if the file has none
   std::string gender;               // "" if absent
   bool amass = false;               // AMASS-style file (Z-up world)
+  std::vector<std::string> notes;   // for the user, e.g. per-frame betas averaged
 };
 
 // `path` names the file in errors. fps_fallback is used when the file has no rate.
