@@ -365,10 +365,10 @@ Status setObjectArrayState(Heap& heap, Ref obj, Ref shape_ref, const DtypeInfo& 
     return heap.fail("ndarray state has list data for a non-object dtype");
   Result<std::vector<int64_t>> shape = shapeOf(heap, shape_ref);
   if (!shape) return shape.error();
-  int64_t count = 1;
-  for (int64_t n : *shape) count = n == 0 ? 0 : (count > (int64_t(1) << 40) / n ? -1 : count * n);
+  uint64_t count = 1;  // saturates at 2^40 (more elements than any list can hold)
+  for (int64_t n : *shape) count = std::min<uint64_t>(count * std::min<uint64_t>(n, 1ull << 40), 1ull << 40);
   std::vector<Ref> items = heap.at(raw_ref).items;
-  if (count != static_cast<int64_t>(items.size()))
+  if (count != items.size())
     return heap.fail("object array of shape " + shapeString(*shape) + " holds " + std::to_string(items.size()) +
                      " elements");
   PyObj& o = heap.at(obj);
