@@ -41,6 +41,10 @@ int main(int argc, char** argv) {
     s.export_options.betas = *betas;
   }
   ModelSource models(s.model);  // a file, builtin, or a folder (picked per motion)
+  if (!s.motion_dir.empty() && !models.isFolder()) {  // one model for the whole batch: load it first
+    Result<ModelPick> one = models.forMotion("");
+    if (!one) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, one.message()).c_str()), kExitLoad;
+  }
   if (!s.motion_dir.empty()) {
     BatchSummary summary = runBatch(models, s);
     return summary.failed > 0 ? kExitExport : kExitOk;

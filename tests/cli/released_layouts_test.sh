@@ -101,5 +101,20 @@ done
 # The female and male outputs differ (different models), proving the pick is used.
 ! cmp -s "$work/batch/f_walk.glb" "$work/batch/m_walk.glb"; st=$?; check "female and male outputs differ" $st
 
+# A folder without released names, or without the motion's kind: one error line, exit 2.
+mkdir -p "$work/empty"
+"$exe" --model "$work/empty" --out "$work/e.glb" >"$work/out" 2>&1
+[ $? = 2 ]; st=$?; check "empty model folder exits 2" $st
+grep -q "^Error loading $work/empty: .*no model files with the released names" "$work/out"; st=$?; check "empty folder error: $(cat "$work/out")" $st
+"$exe" --model "$folder" --motion "$rel/amass_stageii.npz" --out "$work/e.glb" >"$work/out" 2>&1
+[ $? = 2 ]; st=$?; check "no SMPL-X model in folder exits 2" $st
+grep -q "no male SMPL-X model" "$work/out"; st=$?; check "missing kind error: $(cat "$work/out")" $st
+[ ! -e "$work/e.glb" ]; st=$?; check "no output after a folder error" $st
+# Batch with one unloadable model file: exit 2 before any motion (as before folders existed).
+head -c 3000 "$rel/smpl_folder/SMPL_NEUTRAL.npz" >"$work/cut.npz"
+"$exe" --model "$work/cut.npz" --motion-dir "$rel/mixed_gender" --out-dir "$work/batch2" >"$work/out" 2>&1
+[ $? = 2 ]; st=$?; check "batch with a broken model exits 2: $(cat "$work/out")" $st
+[ "$(wc -l <"$work/out")" = 1 ]; st=$?; check "batch with a broken model: one error line" $st
+
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
