@@ -2,14 +2,19 @@
 
 #include <chrono>
 #include <cstdio>
+#include <exception>
+#include <new>
 #include <unistd.h>
 
 #include "core/io/file_io.h"
+#include "core/io/printable.h"
 #include "core/load/motion.h"
+#include "cli/producer.h"
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
 #include "exporter/morph_scales.h"
+#include "exporter/validate_asset.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -67,26 +72,37 @@ Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& j
   return Status();
 }
 
-Status writeOutputs(const std::string& out, const std::string& bytes, const std::string& metadata) {
-  if (Status st = writeFileAtomic(out, bytes); !st) return st;
-  if (Status st = writeFileAtomic(out + ".smpl.json", metadata); !st) {
-    std::remove(out.c_str());  // the file and its metadata go together
-    return st;
-  }
-  return Status();
+// The output and its sidecar go together; the sidecar (what produced the
+// output) is renamed last, so it is the commit record (file_io.h).
+Status writeOutputs(const std::string& out, const std::string& bytes, const std::string& sidecar) {
+  return writeFilesTogether({FileContent{out, bytes.data(), bytes.size()},
+                             FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()}});
+}
+
+Result<std::string> producerHashFor(const Settings& s, const ExportJob& job) {
+  if (!job.producer_hash.empty()) return job.producer_hash;
+  Result<ContentHash> base = producerBase(s);
+  if (!base) return base.error();
+  return producerHash(*base, job.motions);
 }
 
 }  // namespace
 
 std::string errorLine(const std::string& verb, const std::string& path, const std::string& message) {
-  if (message.compare(0, path.size() + 1, path + ":") == 0) return "Error " + verb + " " + message;
-  return "Error " + verb + " " + path + ": " + message;
+  // Paths and messages may carry bytes from files or the command line: one printable line.
+  if (message.compare(0, path.size() + 1, path + ":") == 0) return printable("Error " + verb + " " + message, 4096);
+  return printable("Error " + verb + " " + path + ": " + message, 4096);
 }
 
-Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job, JobFailure* failure) {
+namespace {
+
+Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& s, const ExportJob& job,
+                                        JobFailure* failure) {
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(failure, kExitUsage, "in", "arguments", "no writer for " + job.out);
+  if (job.producer_hash.empty())  // a batch (planBatch) cleans all its outputs' temporaries at once
+    removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json"});
   Result<std::vector<Motion>> motions = loadMotions(job, failure);
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
@@ -101,9 +117,12 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   // Quantized targets carry their scale in the weight mapping: fold it here so
   // the sidecar and the file agree.
   if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
+  if (Status st = validateAsset(*asset); !st) return fail(failure, kExitExport, "exporting", job.out, st.message());
+  Result<std::string> producer = producerHashFor(s, job);
+  if (!producer) return fail(failure, kExitLoad, "loading", s.model, producer.message());
   Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
   if (!bytes) return fail(failure, kExitExport, "exporting", job.out, bytes.message());
-  if (Status st = writeOutputs(job.out, *bytes, metadataJson(*asset)); !st)
+  if (Status st = writeOutputs(job.out, *bytes, sidecarJson(*asset, *producer)); !st)
     return fail(failure, kExitSave, "saving", job.out, st.message());
   report.options = options;
   report.bytes = bytes->size();
@@ -113,6 +132,20 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
   report.max_influences = asset->metadata.max_influences;
   return report;
+}
+
+}  // namespace
+
+// Batch jobs run on worker threads, where an escaping exception would abort
+// the process: the job's own last-resort catch turns it into a job failure.
+Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job, JobFailure* failure) {
+  try {
+    return runExportUnguarded(model, s, job, failure);
+  } catch (const std::bad_alloc&) {
+    return fail(failure, kExitExport, "exporting", job.out, "out of memory (set a lower --memory-limit)");
+  } catch (const std::exception& e) {
+    return fail(failure, kExitExport, "exporting", job.out, std::string("internal error: ") + e.what());
+  }
 }
 
 }  // namespace smpl

@@ -17,6 +17,7 @@ struct ExportJob {
   std::string out;
   std::vector<std::string> motions;
   bool progress = false;  // draw a progress bar on stderr while baking
+  std::string producer_hash;  // recorded in the sidecar; "" = computed here (producer.h)
 };
 
 struct ExportReport {
@@ -37,7 +38,12 @@ struct JobFailure {
 // already starts with it (core errors name their file).
 std::string errorLine(const std::string& verb, const std::string& path, const std::string& message);
 
-// Returns the report, or fills `failure` and returns an Error.
+// Returns the report, or fills `failure` and returns an Error. Before any
+// work, stale temporaries of this output and its sidecar are removed
+// (file_io.h; unless the job comes from planBatch, which removed them for
+// every output: job.producer_hash set); after building, the asset must pass validateAsset (exit 3,
+// nothing written); the output and its sidecar are committed together
+// (writeFilesTogether, sidecar last): both new or both as before.
 Result<ExportReport> runExport(const BodyModel& model, const Settings& settings, const ExportJob& job,
                                JobFailure* failure);
 

@@ -1,66 +1,127 @@
 // smpl-export: a thin main. Parse and check every option, load the model,
-// then run one export (or a batch); print a summary.
+// then run one export (or a batch); print a summary. Everything the run reads
+// or builds is charged to one memory budget (core/memory_budget.h, set by
+// --memory-limit); exceptions that still escape (std::bad_alloc, filesystem
+// errors) are caught here as a last resort and reported as one error line with
+// the exit code of the stage that failed, never as an abort.
 #include <unistd.h>
 
 #include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <new>
 #include <string>
 
 #include "cli/batch.h"
+#include "cli/batch_plan.h"
 #include "cli/export_job.h"
 #include "cli/model_source.h"
-#include "exporter/pruning_error.h"
+#include "cli/output_guard.h"
 #include "cli/settings.h"
+#include "core/io/printable.h"
+#include "core/load/validate_inputs.h"
+#include "core/memory_budget.h"
+#include "exporter/pruning_error.h"
 
 using namespace smpl;
 
 namespace {
 
+// What main is doing, for the last-resort error line.
+struct Stage {
+  const char* verb = "in";
+  std::string path = "arguments";
+  ExitCode code = kExitUsage;
+  void set(const char* v, const std::string& p, ExitCode c) { verb = v, path = p, code = c; }
+};
+
+int report(const std::string& line, int code) {
+  std::fprintf(stderr, "%s\n", printable(line, 4096).c_str());
+  return code;
+}
+
 void printSummary(const std::string& out, const ExportReport& r, const PruningError& err) {
-  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n", out.c_str(), r.vertices, r.joints,
-              r.morph_targets, r.bytes / 1e6, r.seconds * 1e3);
+  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n", printable(out).c_str(), r.vertices,
+              r.joints, r.morph_targets, r.bytes / 1e6, r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
-  for (const std::string& note : r.notes) std::printf("note: %s\n", note.c_str());
+  for (const std::string& note : r.notes) std::printf("note: %s\n", printable(note, 4096).c_str());
   std::printf("skinning error of %d influences vs all (%d random poses): mean %.3f mm, max %.3f mm\n",
               r.max_influences, err.poses, err.mean_m * 1e3, err.max_m * 1e3);
+}
+
+int run(int argc, char** argv, Stage* stage) {
+  Result<Settings> parsed = parseSettings(argc, argv);
+  if (!parsed) return report("Error in arguments: " + parsed.message(), kExitUsage);
+  Settings& s = *parsed;
+  if (s.help) return std::printf("%s", usageText().c_str()), kExitOk;
+  if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
+  setMemoryLimit(s.memory_limit);
+
+  // Before any work: outputs must not be inputs; a batch is planned (motion
+  // listing, name collisions, up-to-date decisions) and refused as a whole.
+  JobFailure planned{kExitOk, ""};
+  Result<BatchPlan> plan = BatchPlan();
+  if (!s.motion_dir.empty()) plan = planBatch(s, &planned);
+  else if (Status st = checkOutputsAreNotInputs({s.out}, runInputs(s, s.motions)); !st)
+    planned = {kExitUsage, "Error in arguments: " + st.message()};
+  if (planned.code != kExitOk) return report(planned.message, planned.code);
+
+  if (!s.betas_file.empty()) {
+    stage->set("loading", s.betas_file, kExitLoad);
+    std::string note;  // per-frame (T,B) betas that differ: their mean, with a note
+    Result<std::vector<double>> betas = readBetasFile(s.betas_file, &note);
+    if (betas) {
+      if (Status st = checkCoefficients(*betas, s.betas_file, "'betas'"); !st) betas = st.error();
+    }
+    if (!betas) return report(errorLine("loading", s.betas_file, betas.message()), kExitLoad);
+    if (!note.empty() && !s.quiet) std::printf("note: %s: %s\n", printable(s.betas_file).c_str(), note.c_str());
+    s.export_options.betas = *betas;
+  }
+  stage->set("loading", s.model, kExitLoad);
+  ModelSource models(s.model);  // a file, builtin, or a folder (picked per motion: kind and gender)
+  if (!s.motion_dir.empty()) {
+    if (!models.isFolder()) {  // one model for the whole batch: load it before any motion
+      Result<ModelPick> one = models.forMotion("");
+      if (!one) return report(errorLine("loading", s.model, one.message()), kExitLoad);
+    }
+    stage->set("exporting", s.motion_dir, kExitExport);
+    BatchSummary summary = runBatch(models, s, *plan);
+    return summary.failed > 0 ? kExitExport : kExitOk;
+  }
+  Result<ModelPick> pick = models.forMotion(s.motions.empty() ? "" : s.motions[0]);
+  if (!pick) return report(errorLine("loading", s.model, pick.message()), kExitLoad);
+  if (!pick->note.empty() && !s.quiet) std::printf("note: %s\n", printable(pick->note, 4096).c_str());
+  const BodyModel& loaded = *pick->model;
+  stage->set("exporting", s.out, kExitExport);
+  JobFailure failure{kExitOk, ""};
+  Result<ExportReport> result =
+      runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""}, &failure);
+  if (!result) return report(failure.message, failure.code);
+  if (!s.quiet) {
+    Result<PruningError> err = measurePruningError(loaded, result->options, s.error_poses);
+    if (!err) return report("Error measuring " + s.out + ": " + err.message(), kExitExport);
+    printSummary(s.out, *result, *err);
+    std::printf("model: %s\n", printable(pick->path).c_str());
+  }
+  return kExitOk;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  Result<Settings> parsed = parseSettings(argc, argv);
-  if (!parsed) return std::fprintf(stderr, "Error in arguments: %s\n", parsed.message().c_str()), kExitUsage;
-  Settings& s = *parsed;
-  if (s.help) return std::printf("%s", usageText().c_str()), kExitOk;
-  if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
-
-  if (!s.betas_file.empty()) {
-    std::string note;
-    Result<std::vector<double>> betas = readBetasFile(s.betas_file, &note);
-    if (!betas) return std::fprintf(stderr, "%s\n", errorLine("loading", s.betas_file, betas.message()).c_str()), kExitLoad;
-    if (!note.empty() && !s.quiet) std::printf("note: %s: %s\n", s.betas_file.c_str(), note.c_str());
-    s.export_options.betas = *betas;
+  Stage stage;
+  try {
+    return run(argc, argv, &stage);
+  } catch (const std::bad_alloc&) {
+    return report("Error " + std::string(stage.verb) + " " + stage.path +
+                      ": out of memory (the system refused an allocation below --memory-limit " +
+                      formatBytes(memoryLimit()) + "; set a lower limit)",
+                  stage.code);
+  } catch (const std::filesystem::filesystem_error& e) {
+    return report("Error " + std::string(stage.verb) + " " + stage.path + ": " + e.what(), stage.code);
+  } catch (const std::exception& e) {
+    return report("Error " + std::string(stage.verb) + " " + stage.path + ": internal error: " + e.what(), stage.code);
+  } catch (...) {
+    return report("Error " + std::string(stage.verb) + " " + stage.path + ": internal error", stage.code);
   }
-  ModelSource models(s.model);  // a file, builtin, or a folder (picked per motion)
-  if (!s.motion_dir.empty() && !models.isFolder()) {  // one model for the whole batch: load it first
-    Result<ModelPick> one = models.forMotion("");
-    if (!one) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, one.message()).c_str()), kExitLoad;
-  }
-  if (!s.motion_dir.empty()) {
-    BatchSummary summary = runBatch(models, s);
-    return summary.failed > 0 ? kExitExport : kExitOk;
-  }
-  Result<ModelPick> pick = models.forMotion(s.motions.empty() ? "" : s.motions[0]);
-  if (!pick) return std::fprintf(stderr, "%s\n", errorLine("loading", s.model, pick.message()).c_str()), kExitLoad;
-  const BodyModel* loaded = pick->model;
-  if (!pick->note.empty() && !s.quiet) std::printf("note: %s\n", pick->note.c_str());
-  JobFailure failure{kExitOk, ""};
-  Result<ExportReport> report = runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet}, &failure);
-  if (!report) return std::fprintf(stderr, "%s\n", failure.message.c_str()), failure.code;
-  if (!s.quiet) {
-    Result<PruningError> err = measurePruningError(*loaded, report->options, s.error_poses);
-    if (!err) return std::fprintf(stderr, "Error measuring %s: %s\n", s.out.c_str(), err.message().c_str()), kExitExport;
-    printSummary(s.out, *report, *err);
-    std::printf("model: %s\n", pick->path.c_str());
-  }
-  return kExitOk;
 }

@@ -35,6 +35,15 @@ Result<MotionHint> motionHint(const std::string& path) {
   return hint;
 }
 
+// Bytes the model's arrays occupy, held against the budget while the model is cached.
+uint64_t modelBytes(const BodyModel& m) {
+  const uint64_t doubles = m.v_template.size() + m.shapedirs.size() + m.exprdirs.size() + m.posedirs.size() +
+                           m.weights.size() + m.hands_components_l.size() + m.hands_components_r.size() +
+                           m.texcoords.size();
+  return doubles * sizeof(double) + m.j_regressor.nonZeros() * (sizeof(double) + sizeof(int)) +
+         (m.faces.size() + m.texcoord_faces.size()) * sizeof(int);
+}
+
 }  // namespace
 
 bool ModelSource::isFolder() const {
@@ -49,9 +58,12 @@ Result<ModelPick> ModelSource::load(const std::string& path, const std::string& 
     Result<BodyModel> m = path == "builtin" ? Result<BodyModel>(demoBody()) : loadModel(path);
     if (!m) return m.error();
     if (!name.empty()) m->name = name;  // e.g. "smplh/male/model.npz", not just "model.npz"
-    it = cache_.emplace(path, std::make_unique<BodyModel>(std::move(*m))).first;
+    Cached cached;
+    if (Status st = cached.memory.add(modelBytes(*m), path, "the model"); !st) return st.error();
+    cached.model = std::make_unique<BodyModel>(std::move(*m));
+    it = cache_.emplace(path, std::move(cached)).first;
   }
-  return ModelPick{it->second.get(), path, ""};
+  return ModelPick{it->second.model.get(), path, ""};
 }
 
 Result<ModelPick> ModelSource::forMotion(const std::string& motion_path) {

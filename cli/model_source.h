@@ -2,7 +2,8 @@
 // or `--model DIR` (core/load/model_folder.h picks the file per motion: its
 // model kind from the joint count or AMASS's `surface_model_type`, its gender
 // from `gender`). Loaded models are cached by path and shared by the batch
-// workers (thread-safe), so a mixed-gender AMASS folder loads each model once.
+// workers (thread-safe), so a mixed-gender AMASS folder loads each model once;
+// each cached model's arrays are charged to the memory budget.
 #pragma once
 
 #include <map>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "core/body_model.h"
+#include "core/memory_budget.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -33,7 +35,11 @@ class ModelSource {
   Result<ModelPick> load(const std::string& path, const std::string& name);
   std::string option_;
   std::mutex mutex_;
-  std::map<std::string, std::unique_ptr<BodyModel>> cache_;
+  struct Cached {
+    std::unique_ptr<BodyModel> model;
+    MemoryCharge memory;  // the model's arrays, held against the budget while cached
+  };
+  std::map<std::string, Cached> cache_;
   std::vector<std::string> listing_;
   bool listed_ = false;
 };

@@ -9,6 +9,8 @@
 #include "core/io/npy.h"
 #include "core/io/npz.h"
 #include "core/load/betas_rows.h"
+#include "core/load/validate_inputs.h"
+#include "core/memory_budget.h"
 
 namespace smpl {
 namespace {
@@ -93,6 +95,10 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--root-motion") {
     if (value != "keep" && value != "in-place") return makeError("--root-motion: expected 'keep' or 'in-place', got '" + value + "'");
     s->animation.in_place = value == "in-place";
+  } else if (name == "--memory-limit") {
+    Result<uint64_t> v = parseMemorySize(value);
+    if (!v) return v.error();
+    s->memory_limit = *v;
   } else if (name == "--model") s->model = value;
   else if (name == "--out") s->out = value;
   else if (name == "--betas-file") s->betas_file = value;
@@ -104,6 +110,7 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   else if (name == "--betas" || name == "--expression") {
     Result<std::vector<double>> v = parseList(value, name);
     if (!v) return v.error();
+    if (Status st = checkCoefficients(*v, name, "value"); !st) return st;
     (name == "--betas" ? e.betas : e.expression) = *v;
   } else if (name == "--correctives") {
     if (value != "all" && value != "none") return makeError("--correctives: expected 'all' or 'none', got '" + value + "'");
@@ -146,7 +153,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
     if (has("--fbx-units") && s.format != "fbx") return makeError("--fbx-units applies only to --format fbx");
     return Status();
   }
-  if (has("--format") || has("--threads")) return makeError("--format and --threads apply only to batch mode (--motion-dir)");
+  if (has("--format") || has("--threads") || has("--force"))
+    return makeError("--format, --threads and --force apply only to batch mode (--motion-dir)");
   if (s.out.empty()) return makeError("missing --out FILE (.glb, .gltf or .fbx)");
   const bool fbx = endsWith(s.out, ".fbx");
   if (!fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
@@ -158,7 +166,7 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   return Status();
 }
 
-const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco"};
+const char* const kFlags[] = {"--help", "-h", "--version", "--quiet", "-q", "--betas-from-motion", "--quantize-morphs", "--draco", "--force"};
 
 }  // namespace
 
@@ -178,12 +186,14 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
     if (arg != "--motion" && std::find(given.begin(), given.end(), arg) != given.end())
       return makeError("option " + arg + " given twice");
     given.push_back(arg);
+    s.given_options.emplace_back(arg, value);
     if (arg == "--help" || arg == "-h") s.help = true;
     else if (arg == "--version") s.version = true;
     else if (arg == "--quiet" || arg == "-q") s.quiet = true;
     else if (arg == "--betas-from-motion") continue;  // the default without --betas; checked below
     else if (arg == "--quantize-morphs") s.writer_options.quantize_morphs = true;
     else if (arg == "--draco") s.writer_options.draco = true;
+    else if (arg == "--force") s.force = true;
     else if (Status st = applyOption(arg, value, &s); !st) return st.error();
   }
   s.betas_given = std::find(given.begin(), given.end(), "--betas") != given.end() ||
@@ -232,7 +242,9 @@ std::string usageText() {
 
 Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
 
-  --model PATH|builtin   model file (.npz or .pkl from the model's authors), or the built-in demo body
+  --model PATH|DIR|builtin  model file (.npz or .pkl from the model's authors); a folder of released model
+                         files (picked per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz,
+                         AMASS smplh/male/model.npz, ...); or the built-in demo body
   --out FILE             output; format from the extension. Also writes FILE.smpl.json (metadata)
   --betas v,v,...        shape coefficients (fewer than the model has are zero-padded)
   --betas-file FILE      betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas:
@@ -268,9 +280,14 @@ Animation (AMASS .npz, SMPL (T,72), or .npz/.json with `poses` axis-angle or rot
                          output is always Y-up
   --root-motion keep|in-place   keep or drop horizontal root motion (default keep)
   --motion-dir DIR --out-dir DIR  batch: convert every .npz/.json in DIR, in parallel, skipping
-                         outputs newer than their inputs; per-file errors do not stop the batch
+                         outputs made from the same inputs and options (recorded in the sidecar);
+                         per-file errors do not stop the batch
+  --force                batch: rebuild every output, even when up to date
   --format glb|gltf|fbx  batch output format (default glb)
   --threads N            batch workers (default: all cores)
+  --memory-limit SIZE    memory budget for everything the run reads or builds, e.g. 512M, 4G
+                         (default: the smaller of 8G and 3/4 of physical memory); an input
+                         that would need more fails before allocating (exit 2, 3 when baking)
   --quiet, -q            no summary
   --version, --help
 

@@ -2,7 +2,9 @@
 // (gltfpack's discipline: unknown or conflicting options fail first).
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/result.h"
@@ -28,6 +30,9 @@ struct Settings {
   bool version = false;
   int error_poses = 32;     // random poses for the pruning-error report
   int threads = 0;          // batch workers; 0 = all cores
+  uint64_t memory_limit = 0;  // --memory-limit in bytes; 0 = defaultMemoryLimit()
+  bool force = false;       // batch: rebuild outputs even when up to date
+  std::vector<std::pair<std::string, std::string>> given_options;  // (name, value) as given; producer hash
 };
 
 // Parse argv; the error text is one line for the user.

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_budget.h"
+
 namespace smpl {
 
 struct Array {
@@ -22,6 +24,7 @@ struct Array {
   // name -> number (e.g. SMPL-X's joint-name -> index map, AMASS's marker ->
   // vertex id) has keys[i] naming data[i], shape (n,).
   std::vector<std::string> keys;
+  MemoryCharge charge;               // `data`/`strings` bytes held against the memory budget
   bool isObject() const { return dtype.size() >= 2 && dtype[1] == 'O'; }
   bool isString() const {
     return !isObject() && (!strings.empty() || (dtype.size() >= 2 && (dtype[1] == 'U' || dtype[1] == 'S')));

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 
 #include "core/joint_names.h"
@@ -26,6 +27,22 @@ std::vector<Sample> resampleTimes(int first, int end, double fps_in, double fps_
     samples.push_back({frame, std::max(0.0, pos - frame)});
   }
   return samples;
+}
+
+// Output frames of resampleTimes(), computed in double so that a tiny source
+// rate or a large --fps cannot overflow the count, and charged to the memory
+// budget (rotations, translation, time and morph weights per frame) before any
+// of it is allocated.
+Status chargeSamples(int first, int end, double fps_in, double fps_out, int joints, Eigen::Index targets,
+                     const std::string& context, MemoryCharge* charge) {
+  const double count = std::floor((end - 1 - first) / fps_in * fps_out + 1e-9) + 1;
+  const double per_frame = joints * sizeof(Eigen::Quaterniond) + sizeof(Eigen::Vector3d) + sizeof(double) +
+                           sizeof(Sample) + static_cast<double>(targets) * sizeof(float);
+  const double bytes = count * per_frame;
+  const std::string what = "resampling " + std::to_string(end - first) + " frames to " +
+                           std::to_string(static_cast<long long>(std::min(count, 9e18))) + " frames";
+  if (count > 2147483647.0 || bytes > 1.8e19) return checkMemory(UINT64_MAX, context, what);
+  return charge->add(static_cast<uint64_t>(bytes), context, what);
 }
 
 Eigen::Quaterniond rotationAt(const Motion& m, int source_joint, const Sample& s) {
@@ -111,6 +128,11 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, 
   Result<MotionMapping> mapping = mapMotion(model, motion, context);
   if (!mapping) return mapping.error();
   const double fps = o.fps > 0 ? o.fps : motion.fps;
+  AnimationClip clip;
+  if (Status st = chargeSamples(o.first_frame, end, motion.fps, fps, model.numJoints(),
+                                static_cast<Eigen::Index>(asset.mesh.morph_targets.size()), context, &clip.charge);
+      !st)
+    return st.error();
   const std::vector<Sample> samples = resampleTimes(o.first_frame, end, motion.fps, fps);
   const bool z_up = o.up == UpAxis::Z || (o.up == UpAxis::Auto && motion.amass);
   // Z-up capture world -> Y-up output: rotate the whole body -90 degrees about X.
@@ -118,7 +140,6 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, 
                                   : Eigen::Matrix3d::Identity();
   const int k = model.numJoints(), t = static_cast<int>(samples.size());
   const Eigen::Vector3d j0 = asset.skeleton.rest_world.row(0).transpose();
-  AnimationClip clip;
   clip.name = motion.name;
   clip.fps = fps;
   clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));

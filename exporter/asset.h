@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_budget.h"
+
 namespace smpl {
 
 struct Skeleton {
@@ -61,6 +63,7 @@ struct AnimationClip {
   std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
   std::vector<Eigen::Vector3d> root_translation;    // T root node translations (model axes)
   Eigen::MatrixXf morph_weights;                    // T x (#morph targets), in target order
+  MemoryCharge charge;                              // the arrays above, against the memory budget
 };
 
 struct AssetMetadata {

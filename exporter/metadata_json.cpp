@@ -9,6 +9,13 @@
 //                        "scale": [...], "offset": [...]}    K each
 // drives target k with weight_k = scale_k * sum_n matrix[k P + n] f[n] + offset_k
 // (f of DESIGN.md). The key is absent without a basis.
+//
+// The sidecar <out>.smpl.json adds, last,
+//   "producer": {"hash": "<16 hex digits>"}
+// a hash of everything that produced the output pair (cli/producer.h: exporter
+// version, options, model and input identities); batch mode rebuilds an
+// output whose sidecar hash differs. It is not in the glTF, so the output's
+// bytes do not depend on it.
 #include "exporter/metadata_json.h"
 
 #include <nlohmann/json.hpp>
@@ -50,9 +57,7 @@ Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
   return names;
 }
 
-}  // namespace
-
-std::string metadataJson(const Asset& asset) {
+Json metadataObject(const Asset& asset) {
   const AssetMetadata& m = asset.metadata;
   Json o = Json::object();
   o["model_kind"] = m.model_kind;
@@ -68,9 +73,30 @@ std::string metadataJson(const Asset& asset) {
   o["correctives"] = correctivesJson(m.correctives);
   if (!m.corrective_basis.targets.empty()) o["corrective_basis"] = basisJson(m.corrective_basis);
   o["morph_targets"] = morphTargetNamesJson(asset.mesh.morph_targets);
-  // Names come from model files: replace invalid UTF-8 instead of throwing
-  // (nlohmann's default), so a hostile name cannot abort the export.
-  return o.dump(-1, ' ', false, Json::error_handler_t::replace);
+  return o;
+}
+
+// Names come from model files: replace invalid UTF-8 instead of throwing
+// (nlohmann's default), so a hostile name cannot abort the export.
+std::string dump(const Json& o) { return o.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+}  // namespace
+
+std::string metadataJson(const Asset& asset) { return dump(metadataObject(asset)); }
+
+std::string sidecarJson(const Asset& asset, const std::string& producer_hash) {
+  Json o = metadataObject(asset);
+  Json producer = Json::object();
+  producer["hash"] = producer_hash;
+  o["producer"] = std::move(producer);
+  return dump(o);
+}
+
+std::string producerHashOf(const std::string& sidecar) {
+  const Json o = Json::parse(sidecar, nullptr, /*allow_exceptions=*/false);
+  if (!o.is_object() || !o.contains("producer") || !o["producer"].is_object()) return "";
+  const Json& h = o["producer"].value("hash", Json());
+  return h.is_string() ? h.get<std::string>() : "";
 }
 
 }  // namespace smpl

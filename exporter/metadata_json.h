@@ -12,4 +12,12 @@ namespace smpl {
 // Deterministic JSON (fixed key order, shortest round-trip doubles).
 std::string metadataJson(const Asset& asset);
 
+// The sidecar <out>.smpl.json: metadataJson plus, last,
+// "producer": {"hash": producer_hash} (what made the output; cli/producer.h).
+std::string sidecarJson(const Asset& asset, const std::string& producer_hash);
+
+// The producer hash recorded in a sidecar's text; "" when absent or when the
+// text is not a JSON object (an old or damaged sidecar: rebuild).
+std::string producerHashOf(const std::string& sidecar);
+
 }  // namespace smpl

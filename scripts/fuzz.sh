@@ -6,8 +6,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMPL_FUZZ=ON \
-  -DSMPL_BUILD_TESTS=OFF >/dev/null
+  -DSMPL_BUILD_TESTS=OFF "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j"$(nproc)"
 for exe in build-fuzz/tests/fuzz/*_fuzz; do
   name=$(basename "$exe" _fuzz)

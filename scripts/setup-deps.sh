@@ -7,10 +7,15 @@ set -euo pipefail
 
 build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev)
 test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy blender
-           libassimp-dev mono-mcs)
+           libassimp-dev mono-mcs ccache)
 
 pkgs=("${build_pkgs[@]}")
-[[ "${1:-}" == "--build" ]] || pkgs+=("${test_pkgs[@]}")
+if [[ "${1:-}" != "--build" ]]; then
+  pkgs+=("${test_pkgs[@]}")
+  # The glTF validator runs on Node.js: use the machine's node/npm when present
+  # (any install), else Debian's.
+  command -v npm >/dev/null 2>&1 || pkgs+=(nodejs npm)
+fi
 
 missing=()
 for p in "${pkgs[@]}"; do

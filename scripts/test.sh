@@ -12,7 +12,10 @@ jobs=$(nproc)
 scripts/setup-deps.sh
 (cd tests/validator && npm ci --no-audit --no-fund --loglevel=error)
 
-cmake -S . -B build-test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMPL_SANITIZE=ON >/dev/null
+# ccache (a test dependency) makes rebuilds of an unchanged tree nearly free.
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S . -B build-test -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMPL_SANITIZE=ON "${launcher[@]}" >/dev/null
 cmake --build build-test -j"$jobs"
 # Blender embeds its own allocator; sanitizers stay in our binaries only.
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1

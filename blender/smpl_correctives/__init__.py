@@ -1,8 +1,13 @@
 """SMPL correctives: drive the pose-corrective shape keys of assets written by
 smpl-export from the bone rotations, so Blender reproduces the body model's
-own output (DESIGN.md, "The robust runtime formula"). The math lives in
+own output (docs/file-contract.md, "The robust runtime formula"). The math lives in
 correctives.py, importable without the UI; this file is the panel and the
-operators (3D View > Sidebar > SMPL).
+operators (3D View > Sidebar > SMPL; File > Import > SMPL asset).
+
+Packaging: bl_info serves Blender 3.x-4.1 add-on installs;
+blender_manifest.toml beside it serves Blender 4.2+ extensions. The version in
+both is checked against the repository's VERSION file by
+scripts/check-version.py.
 """
 import os
 
@@ -17,7 +22,7 @@ bl_info = {
     "author": "smpl-export",
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
-    "location": "3D View > Sidebar > SMPL",
+    "location": "3D View > Sidebar > SMPL, File > Import > SMPL asset",
     "description": "Drive SMPL pose-corrective shape keys from the armature pose",
     "category": "Animation",
 }
@@ -27,10 +32,13 @@ def _pairs(context):
     """(armature, mesh) pairs selected by the user: an armature drives all its
     skinned meshes; a mesh is driven by the armature of its modifier."""
     pairs = []
-    for obj in context.selected_objects or ([context.active_object] if context.active_object else []):
+    selected = getattr(context, "selected_objects", None) or []
+    active = getattr(context, "active_object", None)
+    for obj in selected or ([active] if active else []):
         if obj.type == "ARMATURE":
-            pairs += [(obj, m) for m in correctives.skinned_meshes(obj) if m.data.shape_keys]
-        elif obj.type == "MESH" and obj.data.shape_keys:
+            pairs += [(obj, m) for m in correctives.skinned_meshes(obj)
+                      if m.data is not None and m.data.shape_keys]
+        elif obj.type == "MESH" and obj.data is not None and obj.data.shape_keys:
             arm = correctives.armature_of(obj)
             if arm is not None:
                 pairs.append((arm, obj))
@@ -42,6 +50,10 @@ class SMPL_OT_enable(bpy.types.Operator):
     bl_idname = "smpl.enable_correctives"
     bl_label = "Enable"
     bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return bool(_pairs(context))
 
     def execute(self, context):
         pairs = _pairs(context)
@@ -59,6 +71,10 @@ class SMPL_OT_disable(bpy.types.Operator):
     bl_idname = "smpl.disable_correctives"
     bl_label = "Disable"
     bl_options = {"REGISTER", "UNDO"}
+
+    @classmethod
+    def poll(cls, context):
+        return any(correctives.is_enabled(a, m) for a, m in _pairs(context))
 
     def execute(self, context):
         for arm, mesh in _pairs(context):
@@ -95,6 +111,10 @@ class SMPL_OT_import(bpy.types.Operator, ImportHelper):
     bl_label = "Import SMPL asset"
     bl_options = {"REGISTER", "UNDO"}
 
+    @classmethod
+    def poll(cls, context):
+        return context.mode == "OBJECT"
+
     filter_glob: StringProperty(default="*.glb;*.gltf;*.fbx", options={"HIDDEN"})
 
     def execute(self, context):
@@ -128,13 +148,20 @@ class SMPL_PT_panel(bpy.types.Panel):
 _classes = (SMPL_OT_enable, SMPL_OT_disable, SMPL_OT_import, SMPL_PT_panel)
 
 
+def _menu_import(self, context):
+    """File > Import > SMPL asset (smpl-export .glb/.gltf/.fbx)."""
+    self.layout.operator(SMPL_OT_import.bl_idname, text="SMPL asset (smpl-export .glb/.fbx)")
+
+
 def register():
     for cls in _classes:
         bpy.utils.register_class(cls)
+    bpy.types.TOPBAR_MT_file_import.append(_menu_import)
     correctives.register_load_handler(True)
 
 
 def unregister():
     correctives.register_load_handler(False)
+    bpy.types.TOPBAR_MT_file_import.remove(_menu_import)
     for cls in reversed(_classes):
         bpy.utils.unregister_class(cls)

@@ -411,7 +411,10 @@ def _run_enabled(scene, depsgraph=None):
     try:
         for arm_name, mesh_name in list(_enabled):
             arm, mesh = bpy.data.objects.get(arm_name), bpy.data.objects.get(mesh_name)
-            if arm is None or mesh is None or mesh.data.shape_keys is None:
+            # Objects may be gone, renamed or data-less while a file or the
+            # factory settings load: forget them instead of raising.
+            if (arm is None or mesh is None or mesh.type != "MESH" or mesh.data is None
+                    or mesh.data.shape_keys is None):
                 _enabled.discard((arm_name, mesh_name))
                 continue
             apply(arm, mesh, depsgraph)

@@ -6,9 +6,17 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <dirent.h>
+#include <signal.h>
+
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
+#include <set>
+
+#include "core/memory_budget.h"
 
 namespace smpl {
 namespace {
@@ -31,11 +39,18 @@ struct Fd {
 // Reads until EOF; works for regular files, pipes and /dev/stdin alike.
 // `hint` (the file size when known) sizes the buffer so a regular file is read
 // without regrowing: the +1 leaves room for the read that returns EOF.
+// Every buffer size is checked against the memory budget first, so an endless
+// pipe ends with an error, not with all of memory.
 Status readAll(int fd, const std::string& path, size_t hint, std::vector<uint8_t>& out) {
   size_t used = 0;
-  out.resize(std::max<size_t>(hint + 1, 65536));
+  const size_t first = std::max<size_t>(hint + 1, 65536);
+  if (Status st = checkMemory(first, path, "reading the file"); !st) return st;
+  out.resize(first);
   for (;;) {
-    if (used == out.size()) out.resize(out.size() * 2);
+    if (used == out.size()) {
+      if (Status st = checkMemory(out.size() * 2, path, "reading the file"); !st) return st;
+      out.resize(out.size() * 2);
+    }
     ssize_t n = ::read(fd, out.data() + used, out.size() - used);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return ioError(path, "cannot read", errno);
@@ -57,10 +72,12 @@ Status writeAll(int fd, const std::string& path, const uint8_t* p, size_t size) 
   return Status();
 }
 
-std::string dirName(const std::string& path) {
-  size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
+const char* fileKind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a file";
 }
 
 // Makes the rename itself durable; best effort, a failure here loses nothing.
@@ -80,6 +97,61 @@ Status writeTemp(const std::string& tmp, const std::string& path, const void* da
   return Status();
 }
 
+
+constexpr const char* kTempInfix = ".smpl.tmp-";
+
+// The old file kept while a set of files is replaced (writeFilesTogether).
+struct Backup {
+  std::string path;  // empty: there was no old file
+};
+
+// Only regular files and symlinks are backed up: a directory in the way makes
+// the rename fail, which leaves it as it was.
+Backup keepBackup(const std::string& path, const std::string& backup) {
+  struct stat st;
+  if (::lstat(path.c_str(), &st) != 0 || !(S_ISREG(st.st_mode) || S_ISLNK(st.st_mode))) return Backup{};
+  ::unlink(backup.c_str());
+  if (::link(path.c_str(), backup.c_str()) == 0) return Backup{backup};
+  if (::rename(path.c_str(), backup.c_str()) == 0) return Backup{backup};
+  return Backup{};
+}
+
+// Undoes a rename of a new file over `path`: the backup goes back in place,
+// or the new file is removed when there was no old one.
+void restore(const std::string& path, const Backup& b) {
+  if (b.path.empty()) ::unlink(path.c_str());
+  else ::rename(b.path.c_str(), path.c_str());
+}
+
+// After a failed rename of the temporary: the old file is still in `path`
+// (linked backup) or in the backup (renamed); put it back either way.
+void restoreBackup(const std::string& path, const std::string& backup) {
+  struct stat st;
+  if (::lstat(path.c_str(), &st) != 0 && ::lstat(backup.c_str(), &st) == 0) ::rename(backup.c_str(), path.c_str());
+  else ::unlink(backup.c_str());
+}
+
+// ".<name>.smpl.tmp-<pid>[suffix]" with <name> in `ours` -> pid.
+bool tempOwner(const std::string& entry, const std::set<std::string>& ours, long* pid) {
+  if (entry.size() < 2 || entry[0] != '.') return false;
+  const size_t infix = entry.rfind(kTempInfix);
+  if (infix == std::string::npos || infix < 1 || !ours.count(entry.substr(1, infix - 1))) return false;
+  const char* digits = entry.c_str() + infix + std::strlen(kTempInfix);
+  char* end = nullptr;
+  *pid = std::strtol(digits, &end, 10);
+  return end != digits && *pid > 0;
+}
+
+bool processAlive(long pid) {
+  if (pid == static_cast<long>(::getpid())) return true;
+  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+bool olderThanADay(const std::string& path) {
+  struct stat st;
+  return ::lstat(path.c_str(), &st) == 0 && std::time(nullptr) - st.st_mtime > 24 * 3600;
+}
+
 }  // namespace
 
 Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
@@ -88,23 +160,74 @@ Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
   std::vector<uint8_t> bytes;
   struct stat st;
   size_t hint = 0;
-  if (::fstat(fd.fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
-    hint = static_cast<size_t>(st.st_size);
+  if (::fstat(fd.fd, &st) != 0) return ioError(path, "cannot stat", errno);
+  // Devices (/dev/zero, /dev/urandom) never end and directories are no data:
+  // only regular files and pipes (/dev/stdin, process substitution) are read.
+  if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
+    return makeError(path + ": not a regular file (" + fileKind(st.st_mode) + ")");
+  if (S_ISREG(st.st_mode) && st.st_size > 0) hint = static_cast<size_t>(st.st_size);
   if (Status s = readAll(fd.fd, path, hint, bytes); !s) return s.error();
   return bytes;
 }
 
 Status writeFileAtomic(const std::string& path, const void* data, size_t size) {
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  Status st = writeTemp(tmp, path, data, size);
-  if (st && ::rename(tmp.c_str(), path.c_str()) != 0)
-    st = ioError(path, "cannot rename temporary file into place", errno);
-  if (!st) {
-    ::unlink(tmp.c_str());
-    return st;
+  return writeFilesTogether({FileContent{path, data, size}});
+}
+
+std::string tempPathFor(const std::string& path) {
+  const std::string dir = dirName(path);
+  return (path.find('/') == std::string::npos ? std::string() : dir + "/") + "." + baseName(path) +
+         kTempInfix + std::to_string(::getpid());
+}
+
+Status writeFilesTogether(const std::vector<FileContent>& files) {
+  std::vector<std::string> temps;
+  for (const FileContent& f : files) {
+    temps.push_back(tempPathFor(f.path));
+    if (Status st = writeTemp(temps.back(), f.path, f.data, f.size); !st) {
+      for (const std::string& t : temps) ::unlink(t.c_str());
+      return st;
+    }
   }
-  syncDirectory(path);
+  std::vector<Backup> backups;
+  for (size_t i = 0; i < files.size(); ++i) {
+    backups.push_back(keepBackup(files[i].path, temps[i] + "-old"));
+    if (::rename(temps[i].c_str(), files[i].path.c_str()) != 0) {
+      Status st = ioError(files[i].path, "cannot rename temporary file into place", errno);
+      backups.pop_back();
+      restoreBackup(files[i].path, temps[i] + "-old");  // rename left the old file as it was
+      for (size_t j = i; j-- > 0;) restore(files[j].path, backups[j]);
+      for (size_t j = i; j < files.size(); ++j) ::unlink(temps[j].c_str());
+      return st;
+    }
+  }
+  for (const Backup& b : backups)
+    if (!b.path.empty()) ::unlink(b.path.c_str());
+  for (const FileContent& f : files) syncDirectory(f.path);
   return Status();
+}
+
+int removeStaleTemps(const std::string& dir, const std::vector<std::string>& names) {
+  const std::set<std::string> ours(names.begin(), names.end());
+  DIR* d = ::opendir(dir.c_str());
+  if (!d) return 0;
+  int removed = 0;
+  while (dirent* e = ::readdir(d)) {
+    const std::string entry = e->d_name;
+    long pid = 0;
+    if (!tempOwner(entry, ours, &pid)) continue;
+    const std::string path = dir + "/" + entry;
+    if (processAlive(pid) && !olderThanADay(path)) continue;
+    if (::unlink(path.c_str()) == 0) ++removed;
+  }
+  ::closedir(d);
+  return removed;
+}
+
+std::string dirName(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  return slash == 0 ? "/" : path.substr(0, slash);
 }
 
 std::string baseName(const std::string& path) {

@@ -13,6 +13,7 @@
 
 #include "core/io/file_io.h"
 #include "core/io/numpy_dtype.h"
+#include "core/io/printable.h"
 
 namespace smpl {
 namespace {
@@ -127,7 +128,7 @@ Status parseHeaderValue(Cursor& c, const std::string& key, NpyHeader& h, const s
     h.shape = std::move(*s);
     h.has_shape = true;
   } else {
-    return makeError(ctx + ": bad .npy header: unexpected or repeated key '" + key + "'");
+    return makeError(ctx + ": bad .npy header: unexpected or repeated key '" + printable(key, 64) + "'");
   }
   return Status();
 }
@@ -139,10 +140,10 @@ Result<NpyHeader> parseHeaderDict(const std::string& text, const std::string& ct
   while (!c.eat('}')) {
     Result<std::string> key = parseQuoted(c, ctx);
     if (!key) return key.error();
-    if (!c.eat(':')) return makeError(ctx + ": bad .npy header: expected ':' after '" + *key + "'");
+    if (!c.eat(':')) return makeError(ctx + ": bad .npy header: expected ':' after '" + printable(*key, 64) + "'");
     if (Status st = parseHeaderValue(c, *key, h, ctx); !st) return st.error();
     if (!c.eat(',') && !c.peek('}'))
-      return makeError(ctx + ": bad .npy header: expected ',' or '}' after '" + *key + "'");
+      return makeError(ctx + ": bad .npy header: expected ',' or '}' after '" + printable(*key, 64) + "'");
   }
   c.skipSpace();
   if (c.pos != text.size())

@@ -1,7 +1,10 @@
 // .npz = zip of .npy members (np.savez / np.savez_compressed). The archive is
-// memory-mapped (POSIX) or read once; members are listed from the central
-// directory and inflated one at a time, only when asked for, and their raw
-// bytes released as soon as they are converted.
+// memory-mapped (POSIX; a mapping of a regular file costs address space, not
+// memory, and its untouched pages are never read) or, where that fails, read
+// through readFileBytes (charged to the memory budget). Members are listed from
+// the central directory and inflated one at a time, only when asked for (each
+// inflated member is charged to the budget while it lives), and their raw bytes
+// released as soon as they are converted.
 #include "core/io/npz.h"
 
 #include <fcntl.h>
@@ -9,10 +12,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <set>
 #include <utility>
 
 #include "core/io/file_io.h"
+#include "core/io/numpy_dtype.h"
+#include "core/memory_budget.h"
+#include "core/io/printable.h"
 
 namespace smpl {
 
@@ -69,7 +76,8 @@ Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storag
   for (ZipMember& m : *members) {
     if (hasSuffix(m.name, "/") && m.usize == 0) continue;  // directory entry
     const std::string key = keyOf(m.name);
-    if (!seen.insert(key).second) return makeError(context + "/" + m.name + ": duplicate member '" + key + "'");
+    if (!seen.insert(key).second)
+      return makeError(context + "/" + printable(m.name) + ": duplicate member '" + printable(key) + "'");
     a.keys_.push_back(key);
     a.members_.push_back(std::move(m));
   }
@@ -100,28 +108,54 @@ const ZipMember* NpzArchive::find(const std::string& key) const {
   return nullptr;
 }
 
-Result<std::vector<uint8_t>> NpzArchive::memberBytes(const std::string& key) const {
+Result<ZipEntry> NpzArchive::memberBytes(const std::string& key) const {
   const ZipMember* m = find(key);
-  if (!m) return makeError(context_ + ": missing key '" + key + "'");
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
   return extractZipMember(storage_->data, storage_->size, *m, context_);
 }
 
 Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
-  Result<std::vector<uint8_t>> bytes = memberBytes(key);
-  if (!bytes) return bytes.error();
-  return parseNpyHeader(bytes->data(), bytes->size(), context_ + "/" + find(key)->name);
+  Result<ZipEntry> e = memberBytes(key);
+  if (!e) return e.error();
+  return parseNpyHeader(e->data.data(), e->data.size(), context_ + "/" + printable(find(key)->name));
+}
+
+// Before inflating a member: its header (from the first bytes only) tells how
+// large the decoded array will be; refuse it against the memory budget now,
+// so a small member that widens past the limit costs neither its inflated
+// bytes nor its mapped pages. Object arrays are charged by the unpickler.
+Status NpzArchive::checkDecodedSize(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  constexpr size_t kHeaderPeek = (1 << 20) + 16;  // the .npy reader's header limit plus its preamble
+  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kHeaderPeek, context_);
+  if (!prefix) return Status();  // extraction reports the problem in full
+  const std::string mctx = context_ + "/" + printable(m->name);
+  Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
+  if (!h || isObjectDescr(h->descr)) return Status();
+  Result<NumpyDtype> t = parseNumpyDescr(h->descr, mctx);
+  if (!t) return Status();
+  constexpr uint64_t kCap = 1ull << 60;  // saturate: anything this large is refused anyway
+  auto times = [&](uint64_t a, uint64_t b) { return a == 0 || b == 0 ? 0 : (a > kCap / b ? kCap : a * b); };
+  uint64_t count = 1;
+  for (int64_t d : h->shape) count = times(count, static_cast<uint64_t>(d));
+  const bool text = t->kind == 'S' || t->kind == 'U';
+  const uint64_t decoded = times(count, text ? sizeof(std::string) + t->itemsize : sizeof(double));
+  return checkMemory(m->usize + decoded, mctx,
+                     "the array " + shapeString(h->shape) + (text ? " as strings" : " as doubles"));
 }
 
 Result<Array> NpzArchive::get(const std::string& key) const {
-  Result<std::vector<uint8_t>> bytes = memberBytes(key);
-  if (!bytes) return bytes.error();
-  const std::string mctx = context_ + "/" + find(key)->name;
-  Result<NpyHeaderInfo> h = parseNpyHeader(bytes->data(), bytes->size(), mctx);
+  if (Status st = checkDecodedSize(key); !st) return st.error();
+  Result<ZipEntry> e = memberBytes(key);
+  if (!e) return e.error();
+  const std::string mctx = context_ + "/" + printable(find(key)->name);
+  Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
   if (!h) return h.error();
   if (isObjectDescr(h->descr))
-    return makeError(context_ + ": '" + key + "' is an object array ('" + h->descr +
+    return makeError(context_ + ": '" + printable(key) + "' is an object array ('" + printable(h->descr) +
                      "'); expected numbers or text");
-  return parseNpy(bytes->data(), bytes->size(), mctx);
+  return parseNpy(e->data.data(), e->data.size(), mctx);
 }
 
 Result<ArrayDict> NpzArchive::read(const std::vector<std::string>& keys) const {
@@ -139,13 +173,14 @@ Result<ArrayDict> NpzArchive::readAllNumeric() const {
   ArrayDict arrays;
   for (size_t i = 0; i < keys_.size(); ++i) {
     const std::string& key = keys_[i];
-    Result<std::vector<uint8_t>> bytes = memberBytes(key);
-    if (!bytes) return bytes.error();
-    const std::string mctx = context_ + "/" + members_[i].name;
-    Result<NpyHeaderInfo> h = parseNpyHeader(bytes->data(), bytes->size(), mctx);
+    if (Status st = checkDecodedSize(key); !st) return st.error();
+    Result<ZipEntry> e = memberBytes(key);
+    if (!e) return e.error();
+    const std::string mctx = context_ + "/" + printable(members_[i].name);
+    Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
     if (!h) return h.error();
     if (isObjectDescr(h->descr)) continue;
-    Result<Array> a = parseNpy(bytes->data(), bytes->size(), mctx);
+    Result<Array> a = parseNpy(e->data.data(), e->data.size(), mctx);
     if (!a) return a.error();
     arrays.emplace(key, std::move(*a));
   }

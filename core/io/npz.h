@@ -38,8 +38,9 @@ class NpzArchive {
   std::vector<std::string> keys() const;  // member names without ".npy", archive order
   bool has(const std::string& key) const;
 
-  // The member's raw .npy bytes (inflated, CRC-checked).
-  Result<std::vector<uint8_t>> memberBytes(const std::string& key) const;
+  // The member's raw .npy bytes (inflated, CRC-checked; `data`), charged to
+  // the memory budget while the entry lives.
+  Result<ZipEntry> memberBytes(const std::string& key) const;
   // Header of the member (dtype, shape) without decoding its data.
   Result<NpyHeaderInfo> header(const std::string& key) const;
   // Decode one member. Object arrays ('|O') are refused here with
@@ -58,6 +59,7 @@ class NpzArchive {
   std::vector<std::string> keys_;
   std::string context_;
   const ZipMember* find(const std::string& key) const;
+  Status checkDecodedSize(const std::string& key) const;
   static Result<NpzArchive> fromStorage(std::shared_ptr<const Storage> storage, const std::string& context);
 
 };

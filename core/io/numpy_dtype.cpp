@@ -7,6 +7,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/io/printable.h"
 #include "core/io/utf8.h"
 
 namespace smpl {
@@ -25,7 +26,7 @@ Result<size_t> descrItemCount(const std::string& digits, const std::string& desc
                               const std::string& ctx) {
   if (digits.empty() || digits.size() > 9 ||
       digits.find_first_not_of("0123456789") != std::string::npos)
-    return makeError(ctx + ": unsupported dtype '" + descr + "'");
+    return makeError(ctx + ": unsupported dtype '" + printable(descr, 64) + "'");
   return static_cast<size_t>(std::stoll(digits));
 }
 
@@ -143,7 +144,13 @@ class SourceOrder {
 Status fillElements(const uint8_t* p, size_t count, const NumpyDtype& t, bool fortran, Array& a,
                     const std::string& ctx) {
   SourceOrder order(a.shape, fortran);
-  if (t.kind == 'S' || t.kind == 'U') {
+  const bool text = t.kind == 'S' || t.kind == 'U';
+  const uint64_t per_element = text ? sizeof(std::string) + t.itemsize : sizeof(double);
+  if (Status st = a.charge.add(count * per_element, ctx, "the array " + shapeString(a.shape) +
+                               (text ? " as strings" : " as doubles"));
+      !st)
+    return st;
+  if (text) {
     a.strings.reserve(count);
     for (size_t i = 0; i < count; ++i) {
       Result<std::string> s = loadString(p + order.next() * t.itemsize, t, ctx);
@@ -161,27 +168,27 @@ Status fillElements(const uint8_t* p, size_t count, const NumpyDtype& t, bool fo
 
 Result<NumpyDtype> parseNumpyDescr(const std::string& descr, const std::string& ctx) {
   if (descr.size() < 2 || std::string("<>|=").find(descr[0]) == std::string::npos)
-    return makeError(ctx + ": unsupported dtype '" + descr + "'");
+    return makeError(ctx + ": unsupported dtype '" + printable(descr, 64) + "'");
   const char order = descr[0], kind = descr[1];
   if (kind == 'O')
-    return makeError(ctx + ": object arrays ('" + descr +
+    return makeError(ctx + ": object arrays ('" + printable(descr, 64) +
                      "') are not supported; save a numeric array");
   if (kind == 'V')
-    return makeError(ctx + ": structured/void dtype '" + descr + "' is not supported");
+    return makeError(ctx + ": structured/void dtype '" + printable(descr, 64) + "' is not supported");
   Result<size_t> n = descrItemCount(descr.substr(2), descr, ctx);
   if (!n) return n.error();
-  if (!validItemSize(kind, *n)) return makeError(ctx + ": unsupported dtype '" + descr + "'");
+  if (!validItemSize(kind, *n)) return makeError(ctx + ": unsupported dtype '" + printable(descr, 64) + "'");
   // 'U' counts characters of 4-byte UTF-32 code units; all others count bytes.
   NumpyDtype t{kind, kind == 'U' ? *n * 4 : *n, order == '>' || (order == '=' && hostIsBigEndian()),
                descr};
   if (order == '|' && t.itemsize > 1 && kind != 'S')
-    return makeError(ctx + ": dtype '" + descr + "' needs a byte order");
+    return makeError(ctx + ": dtype '" + printable(descr, 64) + "' needs a byte order");
   return t;
 }
 
 Result<size_t> numpyByteCount(const NumpyDtype& t, const std::vector<int64_t>& shape,
                               const std::string& ctx) {
-  if (t.itemsize == 0) return makeError(ctx + ": unsupported dtype '" + t.descr + "'");
+  if (t.itemsize == 0) return makeError(ctx + ": unsupported dtype '" + printable(t.descr, 64) + "'");
   const uint64_t limit = static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) / t.itemsize;
   uint64_t nonzero = 1;
   bool empty = false;

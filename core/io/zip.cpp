@@ -6,6 +6,8 @@
 // the file and the limits before any entry is allocated or inflated.
 #include "core/io/zip.h"
 
+#include "core/io/printable.h"
+
 #include <zlib.h>
 
 #include <algorithm>
@@ -147,7 +149,7 @@ Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t e
   c.csize = le32(h + 20);
   c.usize = le32(h + 24);
   c.local_offset = le32(h + 42);
-  const std::string ectx = ctx + "/" + c.name;
+  const std::string ectx = ctx + "/" + printable(c.name);
   if (Status st = applyZip64Extra(h + kCentralBytes + n, x, c, ectx); !st) return st.error();
   if (check_supported)
     if (Status st = checkSupported(c, ectx); !st) return st.error();
@@ -175,7 +177,7 @@ Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, cons
     }
     if (c->usize > limits.max_total_uncompressed - total)
       return makeError(ctx + ": declared uncompressed size exceeds the limit of " +
-                       std::to_string(limits.max_total_uncompressed) + " bytes at '" + c->name +
+                       std::to_string(limits.max_total_uncompressed) + " bytes at '" + printable(c->name) +
                        "'");
     total += c->usize;
     entries.push_back(std::move(*c));
@@ -260,11 +262,12 @@ uint32_t crc32Of(const std::vector<uint8_t>& bytes) {
 
 Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
                               const std::string& ctx) {
-  const std::string ectx = ctx + "/" + c.name;
+  const std::string ectx = ctx + "/" + printable(c.name);
   Result<size_t> start = locateData(data, c, data_end, ectx);
   if (!start) return start.error();
   ZipEntry e;
   e.name = c.name;
+  if (Status st = e.charge.add(c.usize, ectx, "inflating the member"); !st) return st.error();
   if (c.method == 0) {
     e.data.assign(data + *start, data + *start + c.csize);
   } else {
@@ -287,17 +290,42 @@ Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const s
   return readCentralDirectory(data, *dir, limits, context, /*lazy=*/true);
 }
 
-Result<std::vector<uint8_t>> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
-                                              const std::string& context, const ZipLimits& limits) {
-  const std::string ectx = context + "/" + member.name;
+Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
+                                  const std::string& context, const ZipLimits& limits) {
+  const std::string ectx = context + "/" + printable(member.name);
   if (data == nullptr || member.data_end > size) return makeError(ectx + ": member lies outside the archive");
   if (Status st = checkSupported(member, ectx); !st) return st.error();
   if (member.usize > limits.max_total_uncompressed)
     return makeError(ectx + ": declared uncompressed size " + std::to_string(member.usize) +
                      " exceeds the limit of " + std::to_string(limits.max_total_uncompressed) + " bytes");
-  Result<ZipEntry> e = extractEntry(data, member, member.data_end, context);
-  if (!e) return e.error();
-  return std::move(e->data);
+  return extractEntry(data, member, member.data_end, context);  // charged to the memory budget
+}
+
+Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size, const ZipMember& member,
+                                                 size_t max_bytes, const std::string& context) {
+  const std::string ectx = context + "/" + printable(member.name);
+  if (data == nullptr || member.data_end > size) return makeError(ectx + ": member lies outside the archive");
+  if (Status st = checkSupported(member, ectx); !st) return st.error();
+  Result<size_t> start = locateData(data, member, member.data_end, ectx);
+  if (!start) return start.error();
+  std::vector<uint8_t> out(static_cast<size_t>(std::min<uint64_t>(max_bytes, member.usize)));
+  if (member.method == 0) {
+    std::memcpy(out.data(), data + *start, out.size());
+    return out;
+  }
+  z_stream zs{};
+  if (inflateInit2(&zs, -15) != Z_OK) return makeError(ectx + ": cannot initialise zlib");
+  zs.next_in = const_cast<Bytef*>(data + *start);  // zlib's API is not const-correct
+  zs.avail_in = static_cast<uInt>(std::min<uint64_t>(member.csize, kZlibChunk));
+  zs.next_out = out.data();
+  zs.avail_out = static_cast<uInt>(out.size());
+  int ret = Z_OK;
+  while (zs.avail_out > 0 && ret == Z_OK) ret = inflate(&zs, Z_NO_FLUSH);
+  const size_t produced = out.size() - zs.avail_out;
+  inflateEnd(&zs);
+  if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR) return makeError(ectx + ": corrupt deflate data");
+  out.resize(produced);
+  return out;
 }
 
 Result<std::vector<ZipEntry>> readZip(const uint8_t* data, size_t size, const std::string& context,

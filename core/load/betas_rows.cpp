@@ -10,8 +10,8 @@ Result<BetasRows> collapseBetasRows(const Array& a, const std::string& context) 
   if (a.isString() || a.isObject() || a.shape.empty() || a.shape.size() > 2 || a.size() == 0)
     return makeError(context + ": 'betas' has shape " + shapeString(a.shape) + (a.isString() ? " of text" : "") +
                      "; expected (B,) or (T,B) numbers");
-  for (double v : a.data)
-    if (!std::isfinite(v)) return makeError(context + ": 'betas' contains NaN or infinite values");
+  // Finite values and ranges are checked by the callers' input validation
+  // (checkCoefficients), which names the offending index; NaN/Inf pass through the mean.
   BetasRows out;
   if (a.shape.size() == 1) {
     out.betas = a.data;

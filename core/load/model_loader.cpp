@@ -2,12 +2,14 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include "core/io/file_io.h"
 #include "core/joint_names.h"
 #include "core/load/npz_arrays.h"
 #include "core/io/pickle/pickle.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace {
@@ -48,9 +50,7 @@ struct Arrays {
     if (!shapeMatches(a, expected))
       return makeError(context + ": '" + key + "' has shape " + shapeString(a.shape) + "; expected " +
                        expectedString(expected));
-    for (double v : a.data)
-      if (!std::isfinite(v)) return makeError(context + ": '" + key + "' contains NaN or infinite values");
-    return Status();
+    return checkFloatRange(a, context, key);
   }
   // Fetch key and check its shape in one step.
   Result<const Array*> get(const std::string& key, const std::vector<int64_t>& expected) const {
@@ -159,6 +159,7 @@ Result<BodyModel> buildCore(const Arrays& in) {
   splitShapedirs(m.kind, toMatrix(**sd, 3 * n, (*sd)->shape[2]), &m);
   m.posedirs = toMatrix(**pd, 3 * n, 9 * (k - 1));
   m.j_regressor = toMatrix(**jr, k, n).sparseView();
+  if (Status s = checkIndices(**f, in.context, "f"); !s) return s.error();
   m.faces = toMatrix(**f, (*f)->shape[0], 3).cast<int>();
   if (Status s = loadHands(in, &m); !s) return s.error();
   if (Status s = loadTexcoords(in, &m); !s) return s.error();
@@ -206,17 +207,27 @@ const std::vector<std::string>& modelKeys() {
   return keys;
 }
 
-Result<BodyModel> loadModel(const std::string& path) {
+// The first bytes of a regular file, without reading the rest (devices and
+// other special files go through readFileBytes, which refuses them).
+Result<std::vector<uint8_t>> fileMagic(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return readFileBytes(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) return makeError(path + ": cannot open");
-  unsigned char magic[4] = {0, 0, 0, 0};
-  in.read(reinterpret_cast<char*>(magic), 4);
-  const std::streamsize got = in.gcount();
-  in.close();
+  std::vector<uint8_t> magic(4, 0);
+  in.read(reinterpret_cast<char*>(magic.data()), 4);
+  magic.resize(static_cast<size_t>(in.gcount()));
+  return magic;
+}
+
+Result<BodyModel> loadModel(const std::string& path) {
+  Result<std::vector<uint8_t>> magic = fileMagic(path);
+  if (!magic) return magic.error();
+  const std::vector<uint8_t>& b = *magic;
   Result<ArrayDict> arrays = makeError(path + ": not a model file (expected .npz or .pkl contents)");
-  if (got >= 4 && std::memcmp(magic, "PK", 2) == 0) {
-    arrays = readNpzArrays(path, modelKeys(), path);
-  } else if (got > 0 && (magic[0] == 0x80 || magic[0] == '(' || magic[0] == '}' || magic[0] == ']')) {
+  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) {
+    arrays = readNpzArrays(path, modelKeys(), path);  // lazy: only the model's keys are read
+  } else if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']')) {
     Result<std::vector<uint8_t>> bytes = readFileBytes(path);
     if (!bytes) return bytes.error();
     arrays = parsePickle(bytes->data(), bytes->size(), path);

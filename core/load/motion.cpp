@@ -6,8 +6,10 @@
 
 #include "core/io/file_io.h"
 #include "core/joint_names.h"
+#include "core/io/printable.h"
 #include "core/load/betas_rows.h"
 #include "core/load/npz_arrays.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace {
@@ -29,9 +31,13 @@ Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
 }
 
 Result<ArrayDict> readJsonArrays(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return makeError(path + ": cannot open");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path);  // devices refused, size budgeted
+  if (!bytes) return bytes.error();
+  // A parsed JSON value takes 16 bytes and a number at least 2 characters ("0,"),
+  // and each number is then copied into a double: at most 12 bytes per byte of text.
+  MemoryCharge parse;
+  if (Status st = parse.add(bytes->size() * 12, path, "parsing the JSON"); !st) return st.error();
+  nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
   ArrayDict arrays;
   for (const auto& [key, value] : j.items()) {
@@ -40,9 +46,9 @@ Result<ArrayDict> readJsonArrays(const std::string& path) {
       a.dtype = "<U";
       a.strings = {value.get<std::string>()};
     } else if (Status s = jsonToArray(value, &a); !s) {
-      return makeError(path + ": '" + key + "': " + s.message());
+      return makeError(path + ": '" + printable(key, 64) + "': " + s.message());
     } else if (a.size() != static_cast<int64_t>(a.data.size())) {
-      return makeError(path + ": '" + key + "': ragged array");
+      return makeError(path + ": '" + printable(key, 64) + "': ragged array");
     }
     arrays[key] = std::move(a);
   }
@@ -62,6 +68,8 @@ Result<Array> joinSplitPoses(const ArrayDict& d, const std::string& path) {
   const int64_t t = root->shape.empty() ? 0 : root->shape[0];
   Array joined;
   joined.shape = {t, 165};
+  if (Status st = joined.charge.add(static_cast<uint64_t>(t) * 165 * sizeof(double), path, "joining the pose keys"); !st)
+    return st.error();
   joined.data.assign(t * 165, 0.0);
   int64_t column = 0;
   for (int i = 0; i < 5; ++i) {
@@ -90,6 +98,9 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
                      " joints; expected 24 (SMPL), 52 (SMPL-H), 55 (SMPL-X) or 16 (MANO)");
   for (double v : poses.data)
     if (!std::isfinite(v)) return makeError(path + ": 'poses' contains NaN or infinite values");
+  const uint64_t frame_bytes = sizeof(Rotations) + j * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
+  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path, std::to_string(t) + " frames"); !st)
+    return st;
   m->frames.resize(t);
   const int64_t stride = matrices ? 9 * j : 3 * j;
   for (int64_t f = 0; f < t; ++f) {
@@ -127,8 +138,7 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, double fps_fall
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
     const Array* rate = find(d, key);
     if (!rate || rate->isString() || rate->data.size() != 1) continue;
-    if (!(rate->data[0] > 0 && rate->data[0] < 10000))
-      return makeError(path + ": '" + key + "' is not a usable frame rate");
+    if (Status st = checkFrameRate(rate->data[0], path, "'" + std::string(key) + "'"); !st) return st;
     m->fps = rate->data[0];
     m->amass = m->amass || std::string(key) != "fps";
     break;
@@ -167,6 +177,7 @@ Result<Motion> loadMotion(const std::string& path, double fps_fallback) {
   if (poses.isString()) return makeError(path + ": 'poses' holds text, expected numbers");
   if (Status s = decodeRotations(poses, path, &m); !s) return s.error();
   if (Status s = decodeExtras(d, path, fps_fallback, &m); !s) return s.error();
+  if (Status s = checkMotionValues(&m, path); !s) return s.error();
   return m;
 }
 

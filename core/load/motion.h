@@ -12,6 +12,7 @@
 
 #include "core/body_model.h"
 #include "core/math/forward.h"
+#include "core/memory_budget.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -26,6 +27,7 @@ struct Motion {
   std::string gender;               // "" if absent
   bool amass = false;               // AMASS-style file (Z-up world)
   std::vector<std::string> notes;   // for the user, e.g. per-frame betas averaged
+  MemoryCharge charge;              // `frames` and `translation` against the memory budget
 };
 
 // `path` names the file in errors. fps_fallback is used when the file has no rate.

@@ -3,17 +3,18 @@
 #include <utility>
 
 #include "core/io/npy.h"
+#include "core/io/printable.h"
 #include "core/io/pickle/pickle.h"
 
 namespace smpl {
 
 Result<Array> readNpzMember(const NpzArchive& npz, const std::string& key) {
-  Result<std::vector<uint8_t>> bytes = npz.memberBytes(key);
-  if (!bytes) return bytes.error();
-  const std::string mctx = npz.context() + ": '" + key + "'";
-  Result<NpyHeaderInfo> h = parseNpyHeader(bytes->data(), bytes->size(), mctx);
+  Result<ZipEntry> e = npz.memberBytes(key);
+  if (!e) return e.error();
+  const std::string mctx = npz.context() + ": '" + printable(key) + "'";
+  Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
   if (!h) return h.error();
-  if (isObjectDescr(h->descr)) return parseObjectNpy(bytes->data(), bytes->size(), mctx);
+  if (isObjectDescr(h->descr)) return parseObjectNpy(e->data.data(), e->data.size(), mctx);
   return npz.get(key);
 }
 

@@ -1,7 +1,7 @@
 #include "core/load/uv_npy.h"
 
 #include <cmath>
-#include <fstream>
+#include <filesystem>
 
 #include "core/io/file_io.h"
 #include "core/io/npy.h"
@@ -9,7 +9,11 @@
 namespace smpl {
 namespace {
 
-bool exists(const std::string& path) { return std::ifstream(path).good(); }
+// Without opening it: a FIFO must not block here (readNpyFile refuses special files).
+bool exists(const std::string& path) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
 
 Result<Eigen::MatrixXd> readMatrix(const std::string& path, int64_t rows, int64_t cols, const char* what) {
   Result<Array> a = readNpyFile(path);

@@ -1,9 +1,12 @@
 #include "core/load/uv_obj.h"
 
+#include <climits>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <utility>
+
+#include "core/io/file_io.h"
+#include "core/io/printable.h"
 
 namespace smpl {
 namespace {
@@ -21,15 +24,19 @@ bool parseCorner(const std::string& token, const ObjData& obj, std::pair<int, in
   char* end = nullptr;
   long v = std::strtol(token.c_str(), &end, 10);
   long vt = std::strtol(token.c_str() + slash + 1, &end, 10);
-  if (v == 0 || vt == 0) return false;
+  // Indices beyond the int range would wrap into a valid-looking vertex.
+  if (v == 0 || vt == 0 || std::labs(v) > INT_MAX || std::labs(vt) > INT_MAX) return false;
   corner->first = static_cast<int>(v > 0 ? v - 1 : obj.positions + v);
   corner->second = static_cast<int>(vt > 0 ? vt - 1 : static_cast<long>(obj.uvs.size()) + vt);
   return true;
 }
 
 Result<ObjData> parseObj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return makeError(path + ": cannot open");
+  // Through readFileBytes: devices are refused and the size is charged to the memory budget.
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+  if (!bytes) return bytes.error();
+  std::istringstream in(std::string(bytes->begin(), bytes->end()));
+  bytes = std::vector<uint8_t>();
   ObjData obj;
   std::string line, tag;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
@@ -46,7 +53,8 @@ Result<ObjData> parseObj(const std::string& path) {
       for (std::string token; ls >> token;) {
         std::pair<int, int> corner;
         if (!parseCorner(token, obj, &corner))
-          return makeError(path + ":" + std::to_string(line_no) + ": face corner '" + token + "' has no texture coordinate");
+          return makeError(path + ":" + std::to_string(line_no) + ": face corner '" + printable(token, 64) +
+                           "' is not v/vt with indices in the int range");
         face.push_back(corner);
       }
       if (face.size() < 3) return makeError(path + ":" + std::to_string(line_no) + ": face with fewer than 3 corners");

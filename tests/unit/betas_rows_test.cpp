@@ -25,6 +25,15 @@ void expectNear(const std::vector<double>& got, const std::vector<double>& want)
   for (size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-12) << "beta " << i;
 }
 
+// A float64 Array of `shape` holding `data` (C order).
+Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
+  Array a;
+  a.shape = std::move(shape);
+  a.data = std::move(data);
+  a.dtype = "<f8";
+  return a;
+}
+
 TEST(BetasRows, IdenticalRowsGiveTheRowWithoutNote) {
   Result<Motion> m = loadMotion(kReleased + "betas_rows_same.npz");
   ASSERT_TRUE(m.ok()) << m.message();
@@ -51,15 +60,15 @@ TEST(BetasRows, BetasFileFollowsTheSameRule) {
   ASSERT_TRUE(b.ok()) << b.message();
   expectNear(*b, e.at("mean").data);
   EXPECT_NE(note.find("rows differ"), std::string::npos) << note;
-  Result<BetasRows> same = collapseBetasRows(Array{{3, 2}, {1, 2, 1, 2, 1, 2}, {}, "<f8", {}}, "b.npy");
+  Result<BetasRows> same = collapseBetasRows(numbers({3, 2}, {1, 2, 1, 2, 1, 2}), "b.npy");
   ASSERT_TRUE(same.ok());
   EXPECT_EQ(same->betas, (std::vector<double>{1, 2}));
   EXPECT_FALSE(same->averaged);
-  Result<BetasRows> mixed = collapseBetasRows(Array{{2, 2}, {1, 2, 3, 6}, {}, "<f8", {}}, "b.npy");
+  Result<BetasRows> mixed = collapseBetasRows(numbers({2, 2}, {1, 2, 3, 6}), "b.npy");
   ASSERT_TRUE(mixed.ok());
   EXPECT_EQ(mixed->betas, (std::vector<double>{2, 4}));  // flattening would give (1, 2)
   EXPECT_DOUBLE_EQ(mixed->max_deviation, 2.0);
-  Result<BetasRows> cube = collapseBetasRows(Array{{1, 1, 2}, {1, 2}, {}, "<f8", {}}, "b.npy");
+  Result<BetasRows> cube = collapseBetasRows(numbers({1, 1, 2}, {1, 2}), "b.npy");
   ASSERT_FALSE(cube.ok());
   EXPECT_EQ(cube.message(), "b.npy: 'betas' has shape (1,1,2); expected (B,) or (T,B) numbers");
 }

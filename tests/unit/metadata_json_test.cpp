@@ -82,5 +82,22 @@ TEST(MetadataJson, InvalidUtf8NameDoesNotThrow) {
   EXPECT_EQ(j["joint_names"].size(), 3u);
 }
 
+// The sidecar is the metadata plus, last, the producer hash; the hash reads
+// back, and anything else reads back as "" (rebuild).
+TEST(MetadataJson, SidecarAddsProducerLast) {
+  const Asset a = metadataAsset();
+  const std::string sidecar = sidecarJson(a, "0123456789abcdef");
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(sidecar);
+  EXPECT_EQ(std::prev(j.end()).key(), "producer");
+  EXPECT_EQ(j["producer"]["hash"], "0123456789abcdef");
+  j.erase("producer");
+  EXPECT_EQ(j.dump(), nlohmann::ordered_json::parse(metadataJson(a)).dump());
+  EXPECT_EQ(producerHashOf(sidecar), "0123456789abcdef");
+  EXPECT_EQ(producerHashOf(metadataJson(a)), "");
+  EXPECT_EQ(producerHashOf("{\"producer\": {\"hash\": 7}}"), "");
+  EXPECT_EQ(producerHashOf("[1, 2"), "");
+  EXPECT_EQ(producerHashOf(""), "");
+}
+
 }  // namespace
 }  // namespace smpl

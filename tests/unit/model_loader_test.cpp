@@ -24,6 +24,15 @@ std::string errorOf(const ArrayDict& arrays) {
   return m.ok() ? std::string("(loaded)") : m.message();
 }
 
+// A float64 Array of `shape` holding `data` (C order).
+Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
+  Array a;
+  a.shape = std::move(shape);
+  a.data = std::move(data);
+  a.dtype = "<f8";
+  return a;
+}
+
 TEST(ModelLoader, DetectsFamiliesAndSplitsSmplxShapedirs) {
   struct Expect { const char* file; ModelKind kind; int joints, betas, expr; };
   for (const Expect& e : {Expect{"smpl_small.npz", ModelKind::Smpl, 24, 10, 0},
@@ -150,7 +159,7 @@ TEST(ModelLoader, UvIndexOutOfRangeIsOneLine) {
   EXPECT_NE(m.message().find("smpl_bad_ft.npz: 'ft' has index "), std::string::npos) << m.message();
   EXPECT_NE(m.message().find("('vt' has "), std::string::npos) << m.message();
   ArrayDict a = loadArrays("smpl_small.npz");
-  a["vt"] = Array{{4, 2}, std::vector<double>(8, 0.5), {}, "<f8", {}};
+  a["vt"] = numbers({4, 2}, std::vector<double>(8, 0.5));
   EXPECT_EQ(errorOf(a), "model.npz: has 'vt' but not 'ft'; UVs need both");
 }
 

@@ -13,6 +13,7 @@ namespace UnityEngine
     {
         public float x, y, z;
         public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
+        public static Vector3 right { get { return new Vector3(1, 0, 0); } }
     }
 
     public struct Quaternion
@@ -31,6 +32,23 @@ namespace UnityEngine
         }
 
         public static Quaternion Inverse(Quaternion q) { return new Quaternion(-q.x, -q.y, -q.z, q.w); }
+
+        // Rotates v by q (unit q): v + 2 w (u x v) + 2 u x (u x v), u = (x, y, z).
+        public static Vector3 operator *(Quaternion q, Vector3 v)
+        {
+            float tx = 2 * (q.y * v.z - q.z * v.y), ty = 2 * (q.z * v.x - q.x * v.z), tz = 2 * (q.x * v.y - q.y * v.x);
+            return new Vector3(v.x + q.w * tx + q.y * tz - q.z * ty,
+                               v.y + q.w * ty + q.z * tx - q.x * tz,
+                               v.z + q.w * tz + q.x * ty - q.y * tx);
+        }
+
+        // Unity: angle in degrees, about the normalised axis.
+        public static Quaternion AngleAxis(float angle, Vector3 axis)
+        {
+            double n = Math.Sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+            double h = angle * Math.PI / 360.0, s = n > 0 ? Math.Sin(h) / n : 0;
+            return new Quaternion((float)(s * axis.x), (float)(s * axis.y), (float)(s * axis.z), (float)Math.Cos(h));
+        }
     }
 
     public struct Matrix4x4
@@ -41,11 +59,18 @@ namespace UnityEngine
     public class Object
     {
         public string name = "";
+        // A component is removed from its GameObject, as in Unity; other objects
+        // are only dropped by the tests (no scene to remove them from).
+        public static void DestroyImmediate(Object obj)
+        {
+            var c = obj as Component;
+            if (c != null && c.gameObject != null) c.gameObject.components.Remove(c);
+        }
     }
 
     public class GameObject : Object
     {
-        readonly List<Component> components = new List<Component>();
+        internal readonly List<Component> components = new List<Component>();
         public readonly Transform transform;
 
         public GameObject(string name)
@@ -74,6 +99,27 @@ namespace UnityEngine
             foreach (Component c in components)
                 if (c is T) return (T)c;
             return null;
+        }
+
+        // Depth first, this object first, as Unity.
+        public T[] GetComponentsInChildren<T>(bool includeInactive) where T : Component
+        {
+            var found = new List<T>();
+            Collect(transform, found);
+            return found.ToArray();
+        }
+
+        public T GetComponentInChildren<T>(bool includeInactive) where T : Component
+        {
+            T[] all = GetComponentsInChildren<T>(includeInactive);
+            return all.Length > 0 ? all[0] : null;
+        }
+
+        static void Collect<T>(Transform t, List<T> found) where T : Component
+        {
+            foreach (Component c in t.gameObject.components)
+                if (c is T) found.Add((T)c);
+            for (int i = 0; i < t.childCount; ++i) Collect(t.GetChild(i), found);
         }
     }
 
@@ -120,10 +166,27 @@ namespace UnityEngine
 
     public class Mesh : Object
     {
-        public List<string> blendShapeNames = new List<string>();
+        readonly List<string> blendShapeNames = new List<string>();
         Matrix4x4[] bindposeArray = new Matrix4x4[0];
+        Vector3[] vertexArray = new Vector3[0];
         public int blendShapeCount { get { return blendShapeNames.Count; } }
         public string GetBlendShapeName(int index) { return blendShapeNames[index]; }
+        public Vector3[] vertices
+        {
+            get { return (Vector3[])vertexArray.Clone(); }
+            set { vertexArray = (Vector3[])value.Clone(); }
+        }
+        public int vertexCount { get { return vertexArray.Length; } }
+
+        // Unity's signature; as Unity, one delta per vertex and a new name per shape.
+        public void AddBlendShapeFrame(string shapeName, float frameWeight, Vector3[] deltaVertices,
+                                       Vector3[] deltaNormals, Vector3[] deltaTangents)
+        {
+            if (deltaVertices == null || deltaVertices.Length != vertexArray.Length)
+                throw new ArgumentException("deltaVertices must have one entry per vertex");
+            if (blendShapeNames.Contains(shapeName)) throw new ArgumentException("blend shape exists: " + shapeName);
+            blendShapeNames.Add(shapeName);
+        }
         // Unity returns a copy, as here.
         public Matrix4x4[] bindposes
         {
@@ -157,14 +220,21 @@ namespace UnityEngine
 
     public class TextAsset : Object
     {
-        public string text = "";
+        readonly string content;
+        public TextAsset() : this("") { }
+        public TextAsset(string text) { content = text; }
+        public string text { get { return content; } }
     }
 
     public static class Debug
     {
-        public static readonly List<string> Log = new List<string>();
-        public static void LogWarning(object message, Object context) { Log.Add("warning: " + message); }
-        public static void LogError(object message, Object context) { Log.Add("error: " + message); }
+        public static readonly List<string> Messages = new List<string>();
+        public static void Log(object message, Object context) { Messages.Add("info: " + message); }
+        public static void LogWarning(object message, Object context) { Messages.Add("warning: " + message); }
+        public static void LogError(object message, Object context) { Messages.Add("error: " + message); }
+        public static void Log(object message) { Log(message, null); }
+        public static void LogWarning(object message) { LogWarning(message, null); }
+        public static void LogError(object message) { LogError(message, null); }
     }
 
     [AttributeUsage(AttributeTargets.Class)]
@@ -181,4 +251,19 @@ namespace UnityEngine
 
     [AttributeUsage(AttributeTargets.Field)]
     public sealed class TooltipAttribute : Attribute { public TooltipAttribute(string tooltip) { } }
+
+    [AttributeUsage(AttributeTargets.Field)]
+    public sealed class RangeAttribute : Attribute { public RangeAttribute(float min, float max) { } }
+
+    public static class Mathf
+    {
+        public const float PI = (float)Math.PI;
+        public static float Sin(float f) { return (float)Math.Sin(f); }
+    }
+
+    // Settable here so tests can step time; read-only in Unity.
+    public static class Time
+    {
+        public static float time;
+    }
 }

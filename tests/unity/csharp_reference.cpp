@@ -1,6 +1,6 @@
 // Reference data for the C# runtime test (unity/Tests): for a few random poses
 // of each model, the local rotations R_k, the features poseFeatures(R) of
-// core/forward.h, and the world rotations of the bones as Unity would report
+// core/math/forward.h, and the world rotations of the bones as Unity would report
 // them for two imported skeletons:
 //   identity_rest: bones with identity rest orientation, Unity axes
 //                  (C = mirror X: model (x,y,z) -> Unity (-x,y,z)), so the

@@ -1,5 +1,6 @@
 # Unity runtime (unity/Runtime/*.cs) tested without Unity: compiled by mono's
-# mcs against a hand-written stub of the UnityEngine types it uses, and checked
+# mcs with unity/Tests/*.cs (not Tests/Editor: the NUnit wrappers) against a
+# hand-written stub of the UnityEngine types it uses, and checked
 # against features from the C++ reference (core/math/forward.h) for world rotations
 # as Unity reports them. Included from tests/CMakeLists.txt.
 
@@ -36,3 +37,48 @@ else()
   message(WARNING "mcs/mono not found: test unity_csharp will fail (apt-get install mono-mcs mono-runtime)")
 endif()
 set_tests_properties(unity_csharp PROPERTIES LABELS csharp FIXTURES_REQUIRED csharp_reference)
+
+# The package's EditMode tests (unity/Tests/Editor), Editor code (unity/Editor)
+# and sample (unity/Samples~) compiled by mcs against the UnityEngine,
+# UnityEditor and NUnit stubs, and run by a small [Test] runner
+# (EditModeRunner.cs) with the reference data shipped in the package. Not
+# Unity's Test Runner: no Unity on CI. Without -define:SMPL_EXPORT_MONO_TESTS
+# (the console harness and benchmark are left out, as in Unity).
+if(SMPL_MCS AND SMPL_MONO)
+  file(GLOB SMPL_UNITY_EDITOR_SOURCES CONFIGURE_DEPENDS
+       ${PROJECT_SOURCE_DIR}/unity/Editor/*.cs ${PROJECT_SOURCE_DIR}/unity/Tests/Editor/*.cs
+       ${PROJECT_SOURCE_DIR}/unity/Samples~/Demo/*.cs)
+  set(SMPL_EDITMODE_STUB_SOURCES ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs ${CMAKE_CURRENT_LIST_DIR}/UnityEditorStub.cs
+      ${CMAKE_CURRENT_LIST_DIR}/EditModeRunner.cs ${CMAKE_CURRENT_LIST_DIR}/DemoTests.cs)
+  set(SMPL_EDITMODE_EXE ${SMPL_CSHARP_DIR}/SmplEditModeTests.exe)
+  add_custom_command(OUTPUT ${SMPL_EDITMODE_EXE}
+    COMMAND ${SMPL_MCS} -nologo -warnaserror+ -out:${SMPL_EDITMODE_EXE} -r:System.Core.dll
+            ${SMPL_EDITMODE_STUB_SOURCES} ${SMPL_UNITY_RUNTIME} ${SMPL_UNITY_TEST_SOURCES} ${SMPL_UNITY_EDITOR_SOURCES}
+    DEPENDS ${SMPL_EDITMODE_STUB_SOURCES} ${SMPL_UNITY_RUNTIME} ${SMPL_UNITY_TEST_SOURCES} ${SMPL_UNITY_EDITOR_SOURCES}
+    COMMENT "Compiling the Unity package's EditMode tests, Editor code and sample with mcs")
+  add_custom_target(smpl-csharp-editmode ALL DEPENDS ${SMPL_EDITMODE_EXE})
+  add_test(NAME unity_editmode_stub COMMAND ${SMPL_MONO} ${SMPL_EDITMODE_EXE} ${PROJECT_SOURCE_DIR}/unity)
+else()
+  add_test(NAME unity_editmode_stub COMMAND ${CMAKE_COMMAND} -E false)
+endif()
+set_tests_properties(unity_editmode_stub PROPERTIES LABELS csharp)
+
+# The C++ reference data shipped for Unity's Test Runner
+# (unity/Tests/Data/csharp_reference_smpl.json) must equal a fresh run on the
+# smpl_small fixture. To update it after changing csharp_reference.cpp:
+#   build/tests/smpl-csharp-reference unity/Tests/Data/csharp_reference_smpl.json \
+#       build/fixtures/models/smpl_small.npz
+set(SMPL_CSHARP_REFERENCE_SMPL ${SMPL_CSHARP_DIR}/reference_smpl.json)
+add_test(NAME unity_reference_data_generate
+  COMMAND $<TARGET_FILE:smpl-csharp-reference> ${SMPL_CSHARP_REFERENCE_SMPL} ${SMPL_FIXTURE_DIR}/models/smpl_small.npz)
+set_tests_properties(unity_reference_data_generate PROPERTIES LABELS csharp FIXTURES_SETUP csharp_reference_smpl)
+add_test(NAME unity_reference_data_current
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/compare_reference.py
+          ${SMPL_CSHARP_REFERENCE_SMPL} ${PROJECT_SOURCE_DIR}/unity/Tests/Data/csharp_reference_smpl.json)
+set_tests_properties(unity_reference_data_current PROPERTIES LABELS csharp FIXTURES_REQUIRED csharp_reference_smpl)
+
+# Every asset of the Unity package has its committed, current .meta file
+# (scripts/unity-meta.py; Unity ignores assets without one in a git package).
+add_test(NAME unity_meta_files COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/unity-meta.py --check
+         ${PROJECT_SOURCE_DIR}/unity)
+set_tests_properties(unity_meta_files PROPERTIES LABELS unit)

@@ -1,4 +1,4 @@
-// Pose features of DESIGN.md ("The robust runtime formula") from the world
+// Pose features of docs/file-contract.md ("The robust runtime formula") from the world
 // rotations an engine reports, in plain C# doubles with no UnityEngine
 // dependency, so the exact same file runs inside Unity and under mono in CI.
 //

@@ -1,6 +1,6 @@
-// The part of the exporter's metadata (DESIGN.md, "Metadata the exporter
-// writes") the runtime needs: joint names, parents, and which blend shape
-// carries which feature with what scale/offset. Read from the sidecar
+// The part of the exporter's metadata (docs/file-contract.md, "Metadata")
+// the runtime needs: joint names, parents, and which blend shape carries
+// which feature with what scale/offset. Read from the sidecar
 // <asset>.smpl.json, or from a glTF file's asset.extras.smpl; without either,
 // the SMPL body layout with the exporter's default names is used.
 // An export with --corrective-basis K carries "corrective_basis" instead of

@@ -1,6 +1,6 @@
 // Drives the pose-corrective blend shapes of an exported SMPL-family body
 // from its bones every frame, so Unity reproduces the model's own output
-// (DESIGN.md, "The robust runtime formula").
+// (docs/file-contract.md, "The robust runtime formula").
 //
 // Rotations are measured in the mesh's space (the SkinnedMeshRenderer's
 // transform), the space the bind poses are stored in, so moving or turning
@@ -60,6 +60,14 @@ namespace SmplExport.Correctives
 
         public Transform BoneForJoint(int joint) { return jointBones[joint]; }
 
+        /// <summary>The bone found for the joint with this name (the model's joint name, e.g. "left_knee"); null if none or not initialized.</summary>
+        public Transform BoneForJoint(string jointName)
+        {
+            if (math == null) return null;
+            int k = Array.IndexOf(layout.JointNames, jointName);
+            return k < 0 ? null : jointBones[k];
+        }
+
         void Start()
         {
             if (!Initialize()) enabled = false;
@@ -109,6 +117,14 @@ namespace SmplExport.Correctives
             CorrectiveMath.ProjectBasis(layout.Basis, basisRow, features, basisWeights);
             for (int i = 0; i < basisRow.Length; ++i)
                 skin.SetBlendShapeWeight(basisShapeIndex[i], (float)(100.0 * basisWeights[i]));
+        }
+
+        /// <summary>Sets the weights of the corrective (and basis) blend shapes this component drives to 0, e.g. to compare with plain skinning; other blend shapes keep theirs.</summary>
+        public void ClearWeights()
+        {
+            if (math == null) return;
+            foreach (int i in shapeIndex) skin.SetBlendShapeWeight(i, 0f);
+            foreach (int i in basisShapeIndex) skin.SetBlendShapeWeight(i, 0f);
         }
 
         bool Fail(string message)

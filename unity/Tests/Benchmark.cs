@@ -2,6 +2,7 @@
 // vary). CorrectiveMath.Compute alone is the runtime's own cost; the
 // SmplCorrectives line adds the stub's Transform.rotation (which walks the
 // parent chain, unlike Unity's cached world rotation) and weight setting.
+// Mono harness only (Unity's Test Runner does not print).
 #if SMPL_EXPORT_MONO_TESTS
 using System;
 using System.Diagnostics;
@@ -39,6 +40,7 @@ namespace SmplExport.Correctives.Tests
             clock = Stopwatch.StartNew();
             for (int i = 0; i < Frames; ++i) rig.Driver.Evaluate();
             double driverMicros = clock.Elapsed.TotalMilliseconds * 1000.0 / Frames;
+            TestRig.DestroyAll();
 
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
                 "benchmark {0}: {1} non-root joints, {2} features: CorrectiveMath.Compute {3:F2} us/frame; " +

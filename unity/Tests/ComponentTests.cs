@@ -3,7 +3,8 @@
 // rotated character, rest from bind poses (in centimetres) or from Start, a
 // sidecar with scale/offset, a missing bone, a wrong axis convention
 // that must be detected, and a --corrective-basis sidecar.
-#if SMPL_EXPORT_MONO_TESTS
+// Uses only UnityEngine API that exists in Unity (and in the mono stub
+// tests/unity/UnityEngineStub.cs), so Unity's Test Runner runs it too.
 using System;
 using System.Collections.Generic;
 using System.Globalization;
@@ -18,6 +19,7 @@ namespace SmplExport.Correctives.Tests
     //   Armature/   bones named prefix + joint name, parented as the model
     public sealed class TestRig
     {
+        static readonly List<TestRig> live = new List<TestRig>();
         public readonly GameObject Model, Body;
         public readonly Transform[] Bones;
         public readonly SkinnedMeshRenderer Skin;
@@ -40,16 +42,38 @@ namespace SmplExport.Correctives.Tests
             }
             Skin = Body.AddComponent<SkinnedMeshRenderer>();
             Skin.sharedMesh = new Mesh { name = "BodyMesh" };
+            Skin.sharedMesh.vertices = new Vector3[1];  // Unity's blend shapes need vertices
             // Reverse order and unrelated shapes: lookup must go by name.
-            Skin.sharedMesh.blendShapeNames.Add("Smile");
+            AddBlendShape("Smile");
             SidecarLayout layout = SidecarLayout.FromSkeleton(model.JointNames, model.Parents);
             for (int i = layout.Correctives.Length - 1; i >= 0; --i)
             {
                 ShapeIndex[layout.Correctives[i].Target] = Skin.sharedMesh.blendShapeCount;
-                Skin.sharedMesh.blendShapeNames.Add(shapePrefix + layout.Correctives[i].Target);
+                AddBlendShape(shapePrefix + layout.Correctives[i].Target);
             }
             Driver = Body.AddComponent<SmplCorrectives>();
-            Driver.sidecar = new TextAsset { name = "body.glb.smpl.json", text = Sidecar(model, 1.0, 0.0) };
+            Driver.sidecar = Text("body.glb.smpl.json", Sidecar(model, 1.0, 0.0));
+            live.Add(this);
+        }
+
+        /// <summary>Adds a one-frame blend shape (zero deltas) to the rig's mesh.</summary>
+        public void AddBlendShape(string name)
+        {
+            Mesh mesh = Skin.sharedMesh;
+            mesh.AddBlendShapeFrame(name, 100f, new Vector3[mesh.vertexCount], null, null);
+        }
+
+        public static TextAsset Text(string name, string text) { return new TextAsset(text) { name = name }; }
+
+        /// <summary>Destroys the objects of every rig made so far (in Unity they would stay in the open scene).</summary>
+        public static void DestroyAll()
+        {
+            foreach (TestRig rig in live)
+            {
+                UnityEngine.Object.DestroyImmediate(rig.Skin.sharedMesh);
+                UnityEngine.Object.DestroyImmediate(rig.Model);
+            }
+            live.Clear();
         }
 
         public void Pose(Quat[] world)
@@ -103,6 +127,7 @@ namespace SmplExport.Correctives.Tests
             WrongAxisConventionIsDetected(model);
             MissingBone(model);
             BasisSidecar(model);
+            TestRig.DestroyAll();
         }
 
         // The exporter's --corrective-basis metadata (K = 16, unit weights):
@@ -119,9 +144,9 @@ namespace SmplExport.Correctives.Tests
             for (int k = layout.Basis.Targets.Length - 1; k >= 0; --k)  // reverse order: lookup goes by name
             {
                 basisIndex[k] = rig.Skin.sharedMesh.blendShapeCount;
-                rig.Skin.sharedMesh.blendShapeNames.Add(model.Name + "." + layout.Basis.Targets[k]);
+                rig.AddBlendShape(model.Name + "." + layout.Basis.Targets[k]);
             }
-            rig.Driver.sidecar = new TextAsset { name = "basis.glb.smpl.json", text = model.BasisSidecar };
+            rig.Driver.sidecar = TestRig.Text("basis.glb.smpl.json", model.BasisSidecar);
             rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
             rig.Pose(Identities(model.JointCount));
             bool ready = rig.Driver.Initialize();
@@ -160,6 +185,9 @@ namespace SmplExport.Correctives.Tests
                 weight = Math.Max(weight, WeightError(rig, model, pose.Features, 1.0, 0.0));
             }
             CorrectivesTests.CheckClose(feature, CorrectivesTests.FloatTolerance, model.Name + ": SmplCorrectives features, rest at Start");
+            string last = model.JointNames[model.JointCount - 1];
+            CorrectivesTests.Check(rig.Driver.BoneForJoint(last) == rig.Bones[model.JointCount - 1] &&
+                                   rig.Driver.BoneForJoint("no_such_joint") == null, model.Name + ": BoneForJoint by name");
             CorrectivesTests.CheckClose(weight, CorrectivesTests.FloatTolerance, model.Name + ": blend shape weights / 100, rest at Start");
         }
 
@@ -174,7 +202,7 @@ namespace SmplExport.Correctives.Tests
             for (int k = model.JointCount - 1; k >= 0; --k) order.Add(k);  // renderer order != model order
             rig.Skin.bones = order.ConvertAll(k => rig.Bones[k]).ToArray();
             rig.Skin.sharedMesh.bindposes = order.ConvertAll(k => TestRig.BindPose(model.BindRest[k])).ToArray();
-            rig.Driver.sidecar = new TextAsset { name = "body.glb.smpl.json", text = TestRig.Sidecar(model, 0.5, 0.5) };
+            rig.Driver.sidecar = TestRig.Text("body.glb.smpl.json", TestRig.Sidecar(model, 0.5, 0.5));
             rig.Pose(model.Poses[0].BindRestWorld);
             bool ready = rig.Driver.Initialize();
             CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
@@ -190,6 +218,13 @@ namespace SmplExport.Correctives.Tests
             }
             CorrectivesTests.CheckClose(feature, CorrectivesTests.FloatTolerance, model.Name + ": SmplCorrectives features, bind poses");
             CorrectivesTests.CheckClose(weight, CorrectivesTests.FloatTolerance, model.Name + ": weights with sidecar scale/offset");
+            // ClearWeights zeroes the driven shapes (here 0.5 f + 0.5, rarely 0) and leaves others alone.
+            rig.Skin.SetBlendShapeWeight(0, 42f);  // "Smile"
+            rig.Driver.ClearWeights();
+            double cleared = 0;
+            foreach (int index in rig.ShapeIndex.Values) cleared = Math.Max(cleared, Math.Abs(rig.Skin.GetBlendShapeWeight(index)));
+            CorrectivesTests.Check(cleared == 0 && rig.Skin.GetBlendShapeWeight(0) == 42f,
+                                   model.Name + ": ClearWeights left weight " + cleared + ", Smile " + rig.Skin.GetBlendShapeWeight(0));
         }
 
         static void WrongAxisConventionIsDetected(ReferenceModel model)
@@ -256,4 +291,3 @@ namespace SmplExport.Correctives.Tests
         }
     }
 }
-#endif

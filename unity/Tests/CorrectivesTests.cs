@@ -1,17 +1,18 @@
-// Tests of unity/Runtime under mono (tests/unity/tests.cmake), never compiled
-// by Unity (the asmdef next to this file requires SMPL_EXPORT_MONO_TESTS).
-//
-// usage: mono SmplCorrectivesTests.exe reference.json
+// Checks of unity/Runtime against the C++ reference, shared by two runners:
+//  - the mono harness (tests/unity/tests.cmake): mcs compiles unity/Runtime,
+//    unity/Tests/*.cs and tests/unity/UnityEngineStub.cs with
+//    -define:SMPL_EXPORT_MONO_TESTS; Main below runs everything.
+//    usage: mono SmplCorrectivesTests.exe reference.json
+//  - Unity's Test Runner: the EditMode assembly of this folder
+//    (SmplExport.Correctives.Tests.asmdef, UNITY_INCLUDE_TESTS) with the
+//    NUnit wrappers in Editor/, which call the same Run methods.
 // reference.json comes from tests/unity/csharp_reference.cpp: the C++
 // reference features poseFeatures(R) for random poses, and the world
-// rotations Unity would report for two imported skeletons. Exit code 0 only
-// if every check passes.
-#if SMPL_EXPORT_MONO_TESTS
+// rotations Unity would report for two imported skeletons. A check that
+// fails is counted and printed; the runners fail if any did.
 using System;
 using System.Collections.Generic;
-using System.Diagnostics;
 using System.Globalization;
-using System.IO;
 using SmplExport.Correctives;
 using UnityEngine;
 
@@ -21,8 +22,12 @@ namespace SmplExport.Correctives.Tests
     {
         public const double DoubleTolerance = 1e-9;
         public const double FloatTolerance = 1e-5;
-        static int failures, checks;
+        static int checks;
+        /// <summary>Messages of the failed checks since the last Reset.</summary>
+        public static readonly List<string> Failures = new List<string>();
+        public static int CheckCount { get { return checks; } }
 
+#if SMPL_EXPORT_MONO_TESTS
         public static int Main(string[] args)
         {
             if (args.Length != 1)
@@ -30,32 +35,37 @@ namespace SmplExport.Correctives.Tests
                 Console.Error.WriteLine("usage: SmplCorrectivesTests.exe reference.json");
                 return 2;
             }
-            object root;
             string error;
-            if (!MiniJson.TryParse(File.ReadAllText(args[0]), out root, out error))
+            List<ReferenceModel> models = ReferenceModel.LoadAll(System.IO.File.ReadAllText(args[0]), args[0], out error);
+            if (models == null)
             {
-                Console.Error.WriteLine(args[0] + ": " + error);
+                Console.Error.WriteLine(error);
                 return 2;
             }
-            var models = (List<object>)((Dictionary<string, object>)root)["models"];
             Check(models.Count >= 2, "reference has " + models.Count + " models; expected at least 2");
-            foreach (object m in models)
+            foreach (ReferenceModel model in models)
             {
-                var model = new ReferenceModel((Dictionary<string, object>)m);
                 MathTests.Run(model);
                 ComponentTests.Run(model);
             }
             UnitTests.Run();
-            foreach (object m in models) Benchmark.Run(new ReferenceModel((Dictionary<string, object>)m));
-            Console.WriteLine(checks + " checks, " + failures + " failed");
-            return failures == 0 ? 0 : 1;
+            foreach (ReferenceModel model in models) Benchmark.Run(model);
+            Console.WriteLine(checks + " checks, " + Failures.Count + " failed");
+            return Failures.Count == 0 ? 0 : 1;
+        }
+#endif
+
+        public static void Reset()
+        {
+            checks = 0;
+            Failures.Clear();
         }
 
         public static void Check(bool ok, string what)
         {
             ++checks;
             if (ok) return;
-            ++failures;
+            Failures.Add(what);
             Console.WriteLine("FAIL: " + what);
         }
 
@@ -112,6 +122,29 @@ namespace SmplExport.Correctives.Tests
         }
 
         public int JointCount { get { return Parents.Length; } }
+
+        /// <summary>The models of a reference.json text; null and a one-line error if it is not one.</summary>
+        public static List<ReferenceModel> LoadAll(string json, string context, out string error)
+        {
+            object root;
+            if (!MiniJson.TryParse(json, out root, out error))
+            {
+                error = context + ": " + error;
+                return null;
+            }
+            var result = new List<ReferenceModel>();
+            try
+            {
+                foreach (object m in (List<object>)((Dictionary<string, object>)root)["models"])
+                    result.Add(new ReferenceModel((Dictionary<string, object>)m));
+            }
+            catch (Exception e)
+            {
+                error = context + ": not reference data of csharp_reference.cpp (" + e.GetType().Name + ": " + e.Message + ")";
+                return null;
+            }
+            return result;
+        }
 
         static double[] Numbers(object v) { return ((List<object>)v).ConvertAll(x => (double)x).ToArray(); }
 
@@ -170,4 +203,3 @@ namespace SmplExport.Correctives.Tests
         }
     }
 }
-#endif

@@ -1,7 +1,6 @@
 // Small pieces checked on their own: name matching, sidecar parsing and its
 // errors, the JSON reader on hostile input, axis map validation, and the
-// bind pose rotation extraction.
-#if SMPL_EXPORT_MONO_TESTS
+// bind pose rotation extraction. Needs no reference data.
 using System;
 using System.Collections.Generic;
 using SmplExport.Correctives;
@@ -132,4 +131,3 @@ namespace SmplExport.Correctives.Tests
         static void Check(bool ok, string what) { CorrectivesTests.Check(ok, "unit: " + what); }
     }
 }
-#endif

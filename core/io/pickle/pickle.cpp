@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/io/pickle/pickle_internal.h"
+#include "core/io/printable.h"
 
 namespace smpl {
 namespace pickle {
@@ -153,7 +154,7 @@ Result<ArrayDict> parsePickle(const uint8_t* data, size_t size, const std::strin
     if (!stringValue(heap, items[i], &key)) continue;
     Array a;
     Result<bool> got = toArray(heap, items[i + 1], &a);
-    if (!got) return makeError(got.message() + " (key '" + key.substr(0, 100) + "')");
+    if (!got) return makeError(got.message() + " (key '" + printable(key, 100) + "')");
     if (*got) {
       result[key] = std::move(a);
     } else {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/array.h"
+#include "core/memory_budget.h"
 #include "core/io/pickle/pickle.h"
 #include "core/result.h"
 
@@ -78,6 +79,7 @@ class Heap {
   std::string context_;
   uint64_t used_ = 0;
   uint64_t limit_;
+  MemoryCharge budget_;  // the same bytes, against the run's memory budget
 };
 
 // Name of an object's type for errors ("list", "numpy.ndarray", ...).

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/io/pickle/pickle_internal.h"
+#include "core/io/printable.h"
 
 namespace smpl {
 namespace pickle {
@@ -20,6 +21,7 @@ Status Heap::charge(uint64_t bytes, const char* what) {
     return fail(std::string(what) + " of " + std::to_string(bytes) + " bytes exceeds the limit of " +
                 std::to_string(limit_) + " bytes for one pickle");
   }
+  if (Status st = budget_.add(bytes, context_, std::string("unpickling (") + what + ")"); !st) return st;
   used_ += bytes;
   return Status::success();
 }
@@ -128,8 +130,7 @@ Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module, cons
     if (name == "csr_matrix" || name == "csr_array") return GlobalId::Csr;
     if (name == "coo_matrix" || name == "coo_array") return GlobalId::Coo;
   }
-  std::string full = module + "." + name;
-  if (full.size() > 200) full = full.substr(0, 200) + "...";
+  const std::string full = printable(module + "." + name, 200);
   return heap.fail("refusing pickle global '" + full + "' (not model data)");
 }
 

@@ -1,0 +1,115 @@
+// planBatch: listing (error_code overloads only: nothing here throws),
+// collisions, input protection, stale temporaries, up-to-date decisions.
+#include "cli/batch_plan.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "core/io/file_io.h"
+#include "cli/output_guard.h"
+#include "cli/producer.h"
+#include "exporter/metadata_json.h"
+
+namespace smpl {
+namespace fs = std::filesystem;
+namespace {
+
+bool isMotionName(const std::string& name) {
+  return (hasSuffix(name, ".npz") || hasSuffix(name, ".json")) && !hasSuffix(name, ".smpl.json");
+}
+
+// The motions in `dir`; unreadable entries become errors/notes of `plan`.
+Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* plan, JobFailure* failure) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);
+  if (ec || !fs::is_directory(st)) {
+    failure->code = kExitLoad;
+    failure->message = errorLine("loading", dir, fs::exists(st) ? "not a directory (--motion-dir)"
+                                                                : "no such directory (--motion-dir)");
+    return makeError(failure->message);
+  }
+  std::vector<std::string> motions;
+  auto it = fs::directory_iterator(dir, ec);
+  for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    const std::string path = it->path().string();
+    if (!isMotionName(it->path().filename().string())) continue;
+    std::error_code entry_ec;
+    const fs::file_status entry = it->status(entry_ec);  // follows symbolic links, once
+    if (entry_ec) plan->errors.push_back(errorLine("loading", path, "cannot read: " + entry_ec.message()));
+    else if (!fs::is_regular_file(entry)) plan->notes.push_back(path + ": not a regular file; skipped");
+    else motions.push_back(path);
+  }
+  if (ec) plan->errors.push_back(errorLine("loading", dir, "cannot list: " + ec.message()));
+  std::sort(motions.begin(), motions.end());
+  return motions;
+}
+
+bool olderThan(const std::string& a, const std::string& b) {
+  std::error_code ec1, ec2;
+  const auto ta = fs::last_write_time(a, ec1), tb = fs::last_write_time(b, ec2);
+  return ec1 || ec2 || ta < tb;
+}
+
+bool upToDate(const PlannedOutput& p) {
+  const std::string sidecar = p.out + ".smpl.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(p.out, ec) || !fs::is_regular_file(sidecar, ec)) return false;
+  if (olderThan(p.out, p.motion) || olderThan(sidecar, p.motion)) return false;
+  if (fs::file_size(sidecar, ec) > (64u << 20) || ec) return false;
+  Result<std::vector<uint8_t>> text = readFileBytes(sidecar);
+  return text && producerHashOf(std::string(text->begin(), text->end())) == p.producer_hash;
+}
+
+Status checkCollisions(const std::vector<PlannedOutput>& outputs) {
+  std::map<std::string, std::string> first;  // output -> motion
+  for (const PlannedOutput& p : outputs) {
+    auto [it, fresh] = first.emplace(p.out, p.motion);
+    if (!fresh)
+      return makeError(it->second + " and " + p.motion + " would both write " + p.out +
+                       "; rename one of them (batch outputs are named after the motion's stem)");
+  }
+  return Status();
+}
+
+Error usage(JobFailure* failure, const std::string& message) {
+  failure->code = kExitUsage;
+  failure->message = "Error in arguments: " + message;
+  return makeError(failure->message);
+}
+
+}  // namespace
+
+Result<BatchPlan> planBatch(const Settings& s, JobFailure* failure) {
+  BatchPlan plan;
+  Result<std::vector<std::string>> motions = listMotions(s.motion_dir, &plan, failure);
+  if (!motions) return motions.error();
+  for (const std::string& m : *motions) {
+    PlannedOutput p;
+    p.motion = m;
+    p.out = (fs::path(s.out_dir) / (fs::path(m).stem().string() + "." + s.format)).string();
+    plan.outputs.push_back(p);
+  }
+  if (Status st = checkCollisions(plan.outputs); !st) return usage(failure, st.message());
+  std::vector<std::string> outs, names;
+  for (const PlannedOutput& p : plan.outputs) {
+    outs.push_back(p.out);
+    names.push_back(baseName(p.out));
+    names.push_back(baseName(p.out) + ".smpl.json");
+  }
+  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st) return usage(failure, st.message());
+  Result<ContentHash> base = producerBase(s);
+  if (!base) {
+    failure->code = kExitLoad;
+    failure->message = "Error loading " + base.message();  // names the input file
+    return makeError(failure->message);
+  }
+  removeStaleTemps(s.out_dir, names);
+  for (PlannedOutput& p : plan.outputs) {
+    p.producer_hash = producerHash(*base, {p.motion});
+    p.up_to_date = !s.force && upToDate(p);
+  }
+  return plan;
+}
+
+}  // namespace smpl

@@ -1,0 +1,46 @@
+// Batch planning (--motion-dir DIR --out-dir DIR), done before any work:
+// list the motions, map each to its output, refuse name collisions and
+// outputs that are inputs, remove stale temporaries of these outputs, and
+// decide which outputs are up to date. runBatch (batch.h) then converts.
+//
+// Rules (README "Batch mode"):
+// - DIR missing or not a folder: error naming it, exit 2.
+// - Motions are the regular files named *.npz / *.json (not our sidecars
+//   *.smpl.json) directly in DIR; subfolders are not entered, so a symbolic
+//   link loop cannot recurse. A motion-named entry that cannot be examined
+//   (symbolic link loop, dangling link, permission) is an error line of its
+//   own (counted as failed); a motion-named entry that is not a regular file
+//   (a folder, a FIFO) is a note and skipped.
+// - Two motions mapping to one output (walk.npz and walk.json -> walk.glb):
+//   the run is refused before any work, exit 1, naming both.
+// - Up to date: the output and its sidecar exist, are not older than the
+//   motion, and the sidecar's producer hash (producer.h) equals this run's;
+//   --force rebuilds everything.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cli/export_job.h"
+#include "cli/settings.h"
+
+namespace smpl {
+
+struct PlannedOutput {
+  std::string motion;         // DIR/walk.npz
+  std::string out;            // OUT/walk.glb
+  std::string producer_hash;  // recorded in OUT/walk.glb.smpl.json
+  bool up_to_date = false;
+};
+
+struct BatchPlan {
+  std::vector<PlannedOutput> outputs;     // sorted by motion path
+  std::vector<std::string> errors;        // "Error loading DIR/x.npz: ..." per unreadable entry
+  std::vector<std::string> notes;         // "DIR/x.npz: not a regular file; skipped"
+};
+
+// Fills `failure` (code and one-line message) and returns an Error when the
+// run must not start.
+Result<BatchPlan> planBatch(const Settings& settings, JobFailure* failure);
+
+}  // namespace smpl

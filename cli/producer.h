@@ -1,0 +1,34 @@
+// What produced an output, as one hash recorded in its sidecar
+// ("producer": {"hash": ...}, exporter/metadata_json.h). Batch mode rebuilds
+// an output whose recorded hash differs from the one this run would record,
+// so "up to date" means "same inputs and same options" (issue 16).
+//
+// The hash covers: a schema tag and the exporter version (SMPL_EXPORT_VERSION);
+// every option as given on the command line (name and value, sorted), except
+// those that do not change the output's bytes (--threads, --quiet, --force,
+// --out, --out-dir, --motion-dir, --memory-limit, --shard, --manifest) and
+// those naming input files (--model, --motion, --betas-file, --uv), which
+// enter by identity instead: the model's base name and content (or, for a
+// model folder, each file's name, size and modification time; "builtin" for
+// the demo body), the betas and UV files' content, each motion's base name
+// and size. A motion edited in place is caught by the batch's time check
+// (output older than its motion), so motions are not read to hash them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/io/content_hash.h"
+#include "core/result.h"
+#include "cli/settings.h"
+
+namespace smpl {
+
+// The part shared by every output of a run: options, model, betas/UV files.
+// Reads the model once (1 MB at a time). Error: the unreadable input file.
+Result<ContentHash> producerBase(const Settings& settings);
+
+// The hash of one output: `base` plus its motions' base names and sizes.
+std::string producerHash(ContentHash base, const std::vector<std::string>& motions);
+
+}  // namespace smpl

@@ -1,0 +1,92 @@
+// Input range checks (see the header for the bounds and why).
+#include "core/load/validate_inputs.h"
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+
+#include "core/joint_names.h"
+
+namespace smpl {
+namespace {
+
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// Nearest rotation to `r`, or an error naming frame and joint.
+Status checkRotation(Eigen::Matrix3d* r, const Motion& m, size_t frame, size_t joint,
+                     const std::string& path) {
+  const double error = (r->transpose() * *r - Eigen::Matrix3d::Identity()).norm();
+  const double det = r->determinant();
+  if (error <= kRotationTolerance && det > 0) {
+    if (error > 1e-12) {
+      Eigen::JacobiSVD<Eigen::Matrix3d> svd(*r, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      *r = svd.matrixU() * svd.matrixV().transpose();
+    }
+    return Status();
+  }
+  const std::vector<std::string>& names = canonicalJointNames(m.layout);
+  const std::string name = joint < names.size() ? " (" + names[joint] + ")" : "";
+  return makeError(path + ": 'poses' frame " + std::to_string(frame) + " joint " + std::to_string(joint) +
+                   name + " is not a rotation matrix: ||R^T R - I|| = " + number(error) + ", det = " +
+                   number(det) + "; expected orthonormal with det +1 within " + number(kRotationTolerance));
+}
+
+}  // namespace
+
+Status checkCoefficients(const std::vector<double>& values, const std::string& context, const std::string& what) {
+  for (size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]) || std::abs(values[i]) > kMaxCoefficient)
+      return makeError(context + ": " + what + "[" + std::to_string(i) + "] is " + number(values[i]) +
+                       "; expected a finite value with magnitude at most " + number(kMaxCoefficient));
+  return Status();
+}
+
+Status checkFloatRange(const Array& a, const std::string& context, const std::string& key) {
+  for (size_t i = 0; i < a.data.size(); ++i) {
+    const double v = a.data[i];
+    if (!std::isfinite(v)) return makeError(context + ": '" + key + "' contains NaN or infinite values");
+    if (std::abs(v) > FLT_MAX)
+      return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " + number(v) +
+                       ", beyond the float32 range the output is written in");
+  }
+  return Status();
+}
+
+Status checkIndices(const Array& a, const std::string& context, const std::string& key) {
+  for (size_t i = 0; i < a.data.size(); ++i) {
+    const double v = a.data[i];
+    if (!(v >= 0 && v < 2147483648.0) || v != std::floor(v))
+      return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " + number(v) +
+                       "; expected a non-negative integer index");
+  }
+  return Status();
+}
+
+Status checkFrameRate(double fps, const std::string& context, const std::string& key) {
+  if (!(fps >= kMinFrameRate && fps <= kMaxFrameRate))
+    return makeError(context + ": " + key + " is " + number(fps) + " frames per second; expected " +
+                     number(kMinFrameRate) + " to " + number(kMaxFrameRate));
+  return Status();
+}
+
+Status checkMotionValues(Motion* m, const std::string& path) {
+  if (Status st = checkFrameRate(m->fps, path, "the frame rate"); !st) return st;
+  if (Status st = checkCoefficients(m->betas, path, "'betas'"); !st) return st;
+  for (size_t f = 0; f < m->translation.size(); ++f)
+    for (int c = 0; c < 3; ++c)
+      if (!(std::abs(m->translation[f][c]) <= kMaxTranslation))
+        return makeError(path + ": 'trans' frame " + std::to_string(f) + " is " + number(m->translation[f][c]) +
+                         " m; expected finite values within " + number(kMaxTranslation) + " m");
+  for (size_t f = 0; f < m->frames.size(); ++f)
+    for (size_t j = 0; j < m->frames[f].size(); ++j)
+      if (Status st = checkRotation(&m->frames[f][j], *m, f, j, path); !st) return st;
+  return Status();
+}
+
+}  // namespace smpl

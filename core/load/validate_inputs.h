@@ -1,0 +1,58 @@
+// Range checks for every number that enters from a file or the command line,
+// applied where it enters, so a bad value is reported as a load error (exit 2)
+// naming the file and the key rather than surfacing later as NaN vertices, an
+// +Inf key in the output or an export error naming the output.
+//
+// Bounds (documented in the README):
+//   betas, expression   finite, |value| <= 1000 (kMaxCoefficient). Fitted
+//                       bodies stay within a few units; 1000 standard
+//                       deviations is far beyond any body and still keeps the
+//                       float32 output finite.
+//   model arrays        finite and within float32 range (|v| <= FLT_MAX): the
+//                       writers store float32, so 1e300 would become Inf.
+//   face indices        integral (1.5 is refused, not truncated), >= 0, < 2^31.
+//   frame rates         1 to 10000 frames per second (kMinFrameRate..kMaxFrameRate).
+//   translations        |component| <= 10000 m (kMaxTranslation).
+//   rotation matrices   orthonormal with det +1: ||R^T R - I||_F <= 1e-3
+//                       (kRotationTolerance, float32 storage is ~1e-7). Within
+//                       the tolerance R is replaced by its nearest rotation
+//                       (polar decomposition, U V^T of the SVD), so later math
+//                       sees an exact rotation; beyond it the file is refused
+//                       with the frame and joint named (a zero or scaled matrix
+//                       is not a rotation: guessing one would hide a bug in
+//                       whatever wrote the file).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/array.h"
+#include "core/load/motion.h"
+#include "core/result.h"
+
+namespace smpl {
+
+constexpr double kMaxCoefficient = 1e3;
+constexpr double kMaxTranslation = 1e4;      // metres
+constexpr double kMinFrameRate = 1.0;        // frames per second
+constexpr double kMaxFrameRate = 10000.0;
+constexpr double kRotationTolerance = 1e-3;  // Frobenius norm of R^T R - I
+
+// Betas or expression coefficients; `what` names them in errors ("'betas'").
+Status checkCoefficients(const std::vector<double>& values, const std::string& context,
+                         const std::string& what);
+
+// Every value finite and representable as float32.
+Status checkFloatRange(const Array& a, const std::string& context, const std::string& key);
+
+// Every value an integer in [0, 2^31): face and other index arrays.
+Status checkIndices(const Array& a, const std::string& context, const std::string& key);
+
+// A frame rate in [kMinFrameRate, kMaxFrameRate]; `key` names where it came from.
+Status checkFrameRate(double fps, const std::string& context, const std::string& key);
+
+// A loaded motion: frame rate, translations, betas and rotation matrices (the
+// latter re-orthonormalised within the tolerance, hence the pointer).
+Status checkMotionValues(Motion* motion, const std::string& path);
+
+}  // namespace smpl
