@@ -52,7 +52,7 @@ void printHeader(const Settings& s, const BatchPlan& plan) {
 
 }  // namespace
 
-BatchSummary runBatch(const BodyModel& model, const Settings& s, const BatchPlan& plan) {
+BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& plan) {
   BatchSummary summary;
   std::error_code ec;
   fs::create_directories(s.out_dir, ec);
@@ -88,8 +88,11 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s, const BatchPlan
         continue;
       }
       JobFailure failure{kExitOk, ""};
+      Result<ModelPick> pick = models.forMotion(motions[i].motion);  // per motion: a folder picks by gender
+      if (!pick) failure = JobFailure{kExitLoad, errorLine("loading", s.model, pick.message())};
       const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
-      Result<ExportReport> r = runExport(model, s, job, &failure);
+      Result<ExportReport> r = !pick ? Result<ExportReport>(makeError(failure.message))
+                                     : runExport(*pick->model, s, job, &failure);
       if (r) describeOutput(out, record, &entry);
       entry.status = r ? "converted" : "failed";
       entry.message = r ? "" : failure.message;
@@ -102,7 +105,8 @@ BatchSummary runBatch(const BodyModel& model, const Settings& s, const BatchPlan
       }
       ++summary.converted;
       if (s.quiet) continue;
-      std::printf("%s: %d frames, %.2f MB, %.0f ms\n", out.c_str(), r->frames, r->bytes / 1e6, r->seconds * 1e3);
+      std::printf("%s: %d frames, %.2f MB, %.0f ms, model %s%s%s\n", out.c_str(), r->frames, r->bytes / 1e6,
+                  r->seconds * 1e3, pick->path.c_str(), pick->note.empty() ? "" : "; note: ", pick->note.c_str());
       for (const std::string& note : r->notes) std::printf("note: %s\n", note.c_str());
     }
   };

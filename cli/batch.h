@@ -11,6 +11,7 @@
 
 #include "core/body_model.h"
 #include "cli/batch_plan.h"
+#include "cli/model_source.h"
 #include "cli/settings.h"
 
 namespace smpl {
@@ -22,7 +23,8 @@ struct BatchSummary {
 };
 
 // Converts `plan` (from planBatch with the same settings); prints its notes
-// and per-entry errors (counted as failed) and one line per output.
-BatchSummary runBatch(const BodyModel& model, const Settings& settings, const BatchPlan& plan);
+// and per-entry errors (counted as failed) and one line per output. `models`
+// gives each motion its model (one file, or per motion from a folder).
+BatchSummary runBatch(ModelSource& models, const Settings& settings, const BatchPlan& plan);
 
 }  // namespace smpl

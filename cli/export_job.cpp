@@ -62,7 +62,8 @@ Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& j
                    Asset* asset, ExportReport* report) {
   for (size_t i = 0; i < motions.size(); ++i) {
     const Motion& m = motions[i];
-    for (const std::string& note : m.notes) report->notes.push_back(m.name + ": " + note);
+    for (const std::string& note : m.notes)  // a betas note matters only where those betas are used
+      if (note.rfind("betas:", 0) != 0 || (!s.betas_given && i == 0)) report->notes.push_back(m.name + ": " + note);
     Progress progress;
     if (job.progress) progress = [&](double f) { drawProgress(m.name, f); };
     Result<AnimationClip> clip = bakeAnimation(model, *asset, m, s.animation, job.motions[i], progress);

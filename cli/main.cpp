@@ -15,11 +15,10 @@
 #include "cli/batch.h"
 #include "cli/batch_plan.h"
 #include "cli/export_job.h"
+#include "cli/model_source.h"
 #include "cli/output_guard.h"
 #include "cli/settings.h"
-#include "core/demo/demo_body.h"
 #include "core/io/printable.h"
-#include "core/load/model_loader.h"
 #include "core/load/validate_inputs.h"
 #include "core/memory_budget.h"
 #include "exporter/pruning_error.h"
@@ -50,14 +49,6 @@ void printSummary(const std::string& out, const ExportReport& r, const PruningEr
               r.max_influences, err.poses, err.mean_m * 1e3, err.max_m * 1e3);
 }
 
-// Bytes the model's arrays occupy, held against the budget for the whole run.
-uint64_t modelBytes(const BodyModel& m) {
-  const uint64_t doubles = m.v_template.size() + m.shapedirs.size() + m.exprdirs.size() + m.posedirs.size() +
-                           m.weights.size() + m.hands_components_l.size() + m.hands_components_r.size();
-  return doubles * sizeof(double) + m.j_regressor.nonZeros() * (sizeof(double) + sizeof(int)) +
-         m.faces.size() * sizeof(int);
-}
-
 int run(int argc, char** argv, Stage* stage) {
   Result<Settings> parsed = parseSettings(argc, argv);
   if (!parsed) return report("Error in arguments: " + parsed.message(), kExitUsage);
@@ -77,34 +68,41 @@ int run(int argc, char** argv, Stage* stage) {
 
   if (!s.betas_file.empty()) {
     stage->set("loading", s.betas_file, kExitLoad);
-    Result<std::vector<double>> betas = readBetasFile(s.betas_file);
+    std::string note;  // per-frame (T,B) betas that differ: their mean, with a note
+    Result<std::vector<double>> betas = readBetasFile(s.betas_file, &note);
     if (betas) {
       if (Status st = checkCoefficients(*betas, s.betas_file, "'betas'"); !st) betas = st.error();
     }
     if (!betas) return report(errorLine("loading", s.betas_file, betas.message()), kExitLoad);
+    if (!note.empty() && !s.quiet) std::printf("note: %s: %s\n", printable(s.betas_file).c_str(), note.c_str());
     s.export_options.betas = *betas;
   }
   stage->set("loading", s.model, kExitLoad);
-  Result<BodyModel> loaded = s.model == "builtin" ? Result<BodyModel>(demoBody()) : loadModel(s.model);
-  if (!loaded) return report(errorLine("loading", s.model, loaded.message()), kExitLoad);
-  MemoryCharge model_memory;
-  if (Status st = model_memory.add(modelBytes(*loaded), s.model, "the model"); !st)
-    return report(errorLine("loading", s.model, st.message()), kExitLoad);
-
-  stage->set("exporting", s.motion_dir.empty() ? s.out : s.motion_dir, kExitExport);
+  ModelSource models(s.model);  // a file, builtin, or a folder (picked per motion: kind and gender)
   if (!s.motion_dir.empty()) {
-    BatchSummary summary = runBatch(*loaded, s, *plan);
+    if (!models.isFolder()) {  // one model for the whole batch: load it before any motion
+      Result<ModelPick> one = models.forMotion("");
+      if (!one) return report(errorLine("loading", s.model, one.message()), kExitLoad);
+    }
+    stage->set("exporting", s.motion_dir, kExitExport);
+    BatchSummary summary = runBatch(models, s, *plan);
     if (summary.manifest_failed) return kExitSave;
     return summary.failed > 0 ? kExitExport : kExitOk;
   }
+  Result<ModelPick> pick = models.forMotion(s.motions.empty() ? "" : s.motions[0]);
+  if (!pick) return report(errorLine("loading", s.model, pick.message()), kExitLoad);
+  if (!pick->note.empty() && !s.quiet) std::printf("note: %s\n", printable(pick->note, 4096).c_str());
+  const BodyModel& loaded = *pick->model;
+  stage->set("exporting", s.out, kExitExport);
   JobFailure failure{kExitOk, ""};
   Result<ExportReport> result =
-      runExport(*loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""}, &failure);
+      runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""}, &failure);
   if (!result) return report(failure.message, failure.code);
   if (!s.quiet) {
-    Result<PruningError> err = measurePruningError(*loaded, result->options, s.error_poses);
+    Result<PruningError> err = measurePruningError(loaded, result->options, s.error_poses);
     if (!err) return report("Error measuring " + s.out + ": " + err.message(), kExitExport);
     printSummary(s.out, *result, *err);
+    std::printf("model: %s\n", printable(pick->path).c_str());
   }
   return kExitOk;
 }

@@ -8,6 +8,7 @@
 
 #include "core/io/npy.h"
 #include "core/io/npz.h"
+#include "core/load/betas_rows.h"
 #include "core/load/validate_inputs.h"
 #include "core/memory_budget.h"
 
@@ -226,7 +227,7 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
   return s;
 }
 
-Result<std::vector<double>> readBetasFile(const std::string& path) {
+Result<std::vector<double>> readBetasFile(const std::string& path, std::string* note) {
   if (endsWith(path, ".npy") || endsWith(path, ".npz")) {
     Array a;
     if (endsWith(path, ".npy")) {
@@ -234,15 +235,16 @@ Result<std::vector<double>> readBetasFile(const std::string& path) {
       if (!r) return r.error();
       a = std::move(*r);
     } else {
-      Result<ArrayDict> d = readNpzFile(path);
+      Result<ArrayDict> d = readNpzFile(path, {"betas"});  // lazy: other members are not read
       if (!d) return d.error();
       auto it = d->find("betas");
       if (it == d->end()) return makeError(path + ": missing key 'betas'");
       a = it->second;
     }
-    if (a.isString() || a.shape.size() > 2 || (a.shape.size() == 2 && a.shape[0] != 1))
-      return makeError(path + ": 'betas' has shape " + shapeString(a.shape) + "; expected (B,) or (1,B)");
-    return a.data;
+    Result<BetasRows> rows = collapseBetasRows(a, path);  // (B,), (1,B) or per frame (T,B)
+    if (!rows) return rows.error();
+    if (rows->averaged && note) *note = betasRowsNote(*rows);
+    return rows->betas;
   }
   std::ifstream in(path);
   if (!in) return makeError(path + ": cannot open");
@@ -263,10 +265,13 @@ std::string usageText() {
 
 Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
 
-  --model PATH|builtin   model file (.npz or .pkl from the model's authors), or the built-in demo body
+  --model PATH|DIR|builtin  model file (.npz or .pkl from the model's authors); a folder of released model
+                         files (picked per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz,
+                         AMASS smplh/male/model.npz, ...); or the built-in demo body
   --out FILE             output; format from the extension. Also writes FILE.smpl.json (metadata)
   --betas v,v,...        shape coefficients (fewer than the model has are zero-padded)
-  --betas-file FILE      betas from .npy, .npz (key 'betas') or .json
+  --betas-file FILE      betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas:
+                         identical rows -> that row, else their mean (a note gives the deviation)
   --expression v,v,...   SMPL-X expression coefficients
   --max-influences N     skin influences per vertex, 1..8 (default 4; >4 writes JOINTS_1/WEIGHTS_1)
   --correctives all|none pose-corrective morph targets (default all)
@@ -282,7 +287,9 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
   --draco                glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)
   --shape-keys N         also export the first N shape directions as morph targets shape_<i>
   --expression-keys N    also export the first N expression directions (SMPL-X) as expr_<i>
-  --uv OBJ               UVs from an OBJ sharing the model's vertex order (seams split vertices)
+  --uv OBJ|NPY|none      UVs (seams split vertices). Default: the model file's own vt/ft if it has
+                         them (SMPL-X release). OBJ sharing the model's vertex order, or a numpy pair
+                         <stem>_uv.npy (U,2) + <stem>_ft.npy (F,3) (give either); none: no UVs
   --name NAME            mesh name (default body)
   --fbx-units m|cm       FBX geometry units (default m)
   --fbx-version 7400|7500  FBX binary version (default 7400)

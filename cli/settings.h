@@ -46,6 +46,9 @@ Result<Settings> parseSettings(int argc, const char* const* argv);
 std::string usageText();
 
 // Betas from .npy, .npz (key 'betas') or .json ([..] or {"betas": [..]}).
-Result<std::vector<double>> readBetasFile(const std::string& path);
+// Arrays of shape (T,B) follow core/load/betas_rows.h: identical rows -> that
+// row; differing rows -> their mean, and `note` (if given) says so with the
+// largest deviation.
+Result<std::vector<double>> readBetasFile(const std::string& path, std::string* note = nullptr);
 
 }  // namespace smpl

@@ -18,9 +18,17 @@ struct Array {
   std::vector<int64_t> shape;        // empty for a 0-d array
   std::vector<double> data;          // numeric/bool values, C order; empty for strings
   std::vector<std::string> strings;  // string arrays ('U'/'S' dtypes), C order
-  std::string dtype;                 // numpy descr as read, e.g. "<f8", "|b1", "<U6"
+  std::string dtype;                 // numpy descr as read, e.g. "<f8", "|b1", "<U6", "|O"
+  // Object arrays ('|O', decoded by the data-only unpickler): elements that are
+  // numbers go to `data`, strings to `strings`; a 0-d array holding a dict of
+  // name -> number (e.g. SMPL-X's joint-name -> index map, AMASS's marker ->
+  // vertex id) has keys[i] naming data[i], shape (n,).
+  std::vector<std::string> keys;
   MemoryCharge charge;               // `data`/`strings` bytes held against the memory budget
-  bool isString() const { return !strings.empty() || (!dtype.empty() && (dtype[1] == 'U' || dtype[1] == 'S')); }
+  bool isObject() const { return dtype.size() >= 2 && dtype[1] == 'O'; }
+  bool isString() const {
+    return !isObject() && (!strings.empty() || (dtype.size() >= 2 && (dtype[1] == 'U' || dtype[1] == 'S')));
+  }
   int64_t size() const {
     int64_t n = 1;
     for (int64_t d : shape) n *= d;

@@ -33,6 +33,10 @@ struct BodyModel {
   // MANO hand pose PCA carried by SMPL-H / SMPL-X / MANO files (empty if absent).
   Eigen::MatrixXd hands_components_l, hands_components_r;  // C x 45
   Eigen::VectorXd hands_mean_l, hands_mean_r;              // 45
+  // Texture coordinates shipped in the model file (SMPL-X release: `vt`, `ft`);
+  // empty if absent. Face i of texcoord_faces gives the UVs of faces row i.
+  Eigen::MatrixXd texcoords;       // U x 2 (u, v), v up as in OBJ
+  Eigen::MatrixXi texcoord_faces;  // F x 3 indices < U (0 rows if absent)
 
   int numVertices() const { return static_cast<int>(v_template.rows()); }
   int numJoints() const { return static_cast<int>(parents.size()); }

@@ -36,8 +36,8 @@ std::vector<std::string> makeNames(ModelKind kind) {
     case ModelKind::SmplX:
       names = body();
       names.push_back("jaw");
-      names.push_back("left_eye");
-      names.push_back("right_eye");
+      names.push_back("left_eye_smplhf");   // the authors' names (smplx joint_names.py,
+      names.push_back("right_eye_smplhf");  // their Blender add-on)
       appendHand(&names, "left_");
       appendHand(&names, "right_");
       break;
@@ -55,6 +55,12 @@ const std::vector<std::string>& canonicalJointNames(ModelKind kind) {
   static const std::vector<std::string> tables[] = {makeNames(ModelKind::Smpl), makeNames(ModelKind::SmplH),
                                                     makeNames(ModelKind::SmplX), makeNames(ModelKind::Mano)};
   return tables[static_cast<int>(kind)];
+}
+
+std::string canonicalJointName(const std::string& name) {
+  if (name == "left_eye") return "left_eye_smplhf";
+  if (name == "right_eye") return "right_eye_smplhf";
+  return name;
 }
 
 bool modelKindFromJointCount(int joints, ModelKind* kind) {

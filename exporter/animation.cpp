@@ -104,11 +104,11 @@ void fillMorphWeights(const Asset& asset, const std::vector<int>& targets, const
 Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion, const std::string& context) {
   const std::vector<std::string>& source = canonicalJointNames(motion.layout);
   std::map<std::string, int> index;
-  for (size_t i = 0; i < source.size(); ++i) index[source[i]] = static_cast<int>(i);
+  for (size_t i = 0; i < source.size(); ++i) index[canonicalJointName(source[i])] = static_cast<int>(i);
   MotionMapping m;
   std::vector<bool> used(source.size(), false);
   for (const std::string& name : model.joint_names) {
-    auto it = index.find(name);
+    auto it = index.find(canonicalJointName(name));  // either eye spelling matches
     m.source_of_joint.push_back(it == index.end() ? -1 : it->second);
     if (it == index.end()) m.missing.push_back(name);
     else used[it->second] = true;

@@ -7,7 +7,7 @@
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
 #include "exporter/corrective_basis.h"
-#include "core/load/uv_obj.h"
+#include "core/load/uv_source.h"
 
 namespace smpl {
 namespace {
@@ -194,17 +194,13 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   if (Status s = checkOptions(model, o); !s) return s.error();
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
-  std::optional<UvLayout> uv;
-  if (!o.uv_obj.empty()) {
-    Result<UvLayout> layout = loadUvLayout(o.uv_obj, model);
-    if (!layout) return layout.error();
-    uv = std::move(*layout);
-  }
+  Result<std::optional<UvLayout>> uv = resolveUvLayout(o.uv_obj, model);  // model UVs, --uv FILE or none
+  if (!uv) return uv.error();
   Asset asset;
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);
   const int m = std::min(o.max_influences, model.numJoints());
-  buildMesh(model, body->v_shaped, pruneWeights(model.weights, m), uv ? &*uv : nullptr, &asset.mesh);
+  buildMesh(model, body->v_shaped, pruneWeights(model.weights, m), *uv ? &**uv : nullptr, &asset.mesh);
   AssetMetadata& meta = asset.metadata;
   meta.model_kind = modelKindName(model.kind);
   meta.model_name = model.name;

@@ -36,7 +36,8 @@ struct ExportOptions {
                                    // 9(K-1) corrective targets; weights = C f (C in the metadata)
   int shape_keys = 0;              // also export the first N shape directions
   int expression_keys = 0;         // also export the first N expression directions
-  std::string uv_obj;              // optional OBJ with UVs in the model's vertex order
+  std::string uv_obj;              // --uv: "" = the model file's vt/ft if any, "none" = no UVs,
+                                   // an OBJ in the model's vertex order, or <stem>_uv.npy/_ft.npy
   std::string name = "body";
 };
 

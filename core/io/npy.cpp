@@ -180,13 +180,27 @@ Result<std::string> readPreamble(const uint8_t* data, size_t size, const std::st
 
 }  // namespace
 
-Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& context) {
+Result<NpyHeaderInfo> parseNpyHeader(const uint8_t* data, size_t size, const std::string& context) {
   if (data == nullptr && size != 0) return makeError(context + ": no data");
-  size_t offset = 0;
-  Result<std::string> text = readPreamble(data, size, context, offset);
+  NpyHeaderInfo info;
+  Result<std::string> text = readPreamble(data, size, context, info.data_offset);
   if (!text) return text.error();
   Result<NpyHeader> h = parseHeaderDict(*text, context);
   if (!h) return h.error();
+  info.descr = h->descr;
+  info.fortran_order = h->fortran_order;
+  info.shape = std::move(h->shape);
+  return info;
+}
+
+bool isObjectDescr(const std::string& descr) {
+  return descr.size() == 2 && (descr[0] == '|' || descr[0] == '<' || descr[0] == '>') && descr[1] == 'O';
+}
+
+Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& context) {
+  Result<NpyHeaderInfo> h = parseNpyHeader(data, size, context);
+  if (!h) return h.error();
+  const size_t offset = h->data_offset;
   Result<NumpyDtype> t = parseNumpyDescr(h->descr, context);
   if (!t) return t.error();
   Result<size_t> need = numpyByteCount(*t, h->shape, context);

@@ -1,17 +1,39 @@
-// .npz = zip of .npy members (np.savez / np.savez_compressed). Each member is
-// parsed as it is reached and its raw bytes released, so peak memory is the
-// uncompressed archive plus the converted arrays, not two copies of both.
+// .npz = zip of .npy members (np.savez / np.savez_compressed). The archive is
+// memory-mapped (POSIX; a mapping of a regular file costs address space, not
+// memory, and its untouched pages are never read) or, where that fails, read
+// through readFileBytes (charged to the memory budget). Members are listed from
+// the central directory and inflated one at a time, only when asked for (each
+// inflated member is charged to the budget while it lives), and their raw bytes
+// released as soon as they are converted.
 #include "core/io/npz.h"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <set>
 #include <utility>
-#include <vector>
 
 #include "core/io/file_io.h"
-#include "core/io/npy.h"
+#include "core/io/numpy_dtype.h"
+#include "core/memory_budget.h"
 #include "core/io/printable.h"
-#include "core/io/zip.h"
 
 namespace smpl {
+
+// The archive's bytes: a read-only mapping of the file, or an owned copy.
+struct NpzArchive::Storage {
+  const uint8_t* data = nullptr;
+  size_t size = 0;
+  void* mapping = nullptr;
+  std::vector<uint8_t> owned;
+  ~Storage() {
+    if (mapping) munmap(mapping, size);
+  }
+};
+
 namespace {
 
 // np.load's NpzFile drops ".npy" from member names to form the keys.
@@ -19,29 +41,168 @@ std::string keyOf(const std::string& member) {
   return hasSuffix(member, ".npy") ? member.substr(0, member.size() - 4) : member;
 }
 
+// mmap the file read-only; an empty or unmappable file falls back to reading it.
+Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
+  auto storage = std::make_shared<NpzArchive::Storage>();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  struct stat st {};
+  if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+    if (m != MAP_FAILED) {
+      storage->mapping = m;
+      storage->data = static_cast<const uint8_t*>(m);
+      storage->size = static_cast<size_t>(st.st_size);
+    }
+  }
+  if (fd >= 0) ::close(fd);
+  if (storage->mapping) return storage;
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+  if (!bytes) return bytes.error();
+  storage->owned = std::move(*bytes);
+  storage->data = storage->owned.data();
+  storage->size = storage->owned.size();
+  return storage;
+}
+
 }  // namespace
 
-Result<ArrayDict> parseNpz(const uint8_t* data, size_t size, const std::string& context) {
-  Result<std::vector<ZipEntry>> entries = readZip(data, size, context);
-  if (!entries) return entries.error();
+Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storage, const std::string& context) {
+  Result<std::vector<ZipMember>> members = listZip(storage->data, storage->size, context);
+  if (!members) return members.error();
+  NpzArchive a;
+  a.storage_ = std::move(storage);
+  a.context_ = context;
+  std::set<std::string> seen;
+  for (ZipMember& m : *members) {
+    if (hasSuffix(m.name, "/") && m.usize == 0) continue;  // directory entry
+    const std::string key = keyOf(m.name);
+    if (!seen.insert(key).second)
+      return makeError(context + "/" + printable(m.name) + ": duplicate member '" + printable(key) + "'");
+    a.keys_.push_back(key);
+    a.members_.push_back(std::move(m));
+  }
+  return a;
+}
+
+Result<NpzArchive> NpzArchive::open(const std::string& path, const std::string& context) {
+  Result<std::shared_ptr<Storage>> storage = mapFile(path);
+  if (!storage) return storage.error();
+  return fromStorage(*storage, context.empty() ? baseName(path) : context);
+}
+
+Result<NpzArchive> NpzArchive::fromBytes(const uint8_t* data, size_t size, const std::string& context) {
+  auto storage = std::make_shared<Storage>();
+  if (data) storage->owned.assign(data, data + size);
+  storage->data = storage->owned.data();
+  storage->size = storage->owned.size();
+  return fromStorage(storage, context);
+}
+
+std::vector<std::string> NpzArchive::keys() const { return keys_; }
+
+bool NpzArchive::has(const std::string& key) const { return find(key) != nullptr; }
+
+const ZipMember* NpzArchive::find(const std::string& key) const {
+  for (size_t i = 0; i < keys_.size(); ++i)
+    if (keys_[i] == key) return &members_[i];
+  return nullptr;
+}
+
+Result<ZipEntry> NpzArchive::memberBytes(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  return extractZipMember(storage_->data, storage_->size, *m, context_);
+}
+
+Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
+  Result<ZipEntry> e = memberBytes(key);
+  if (!e) return e.error();
+  return parseNpyHeader(e->data.data(), e->data.size(), context_ + "/" + printable(find(key)->name));
+}
+
+// Before inflating a member: its header (from the first bytes only) tells how
+// large the decoded array will be; refuse it against the memory budget now,
+// so a small member that widens past the limit costs neither its inflated
+// bytes nor its mapped pages. Object arrays are charged by the unpickler.
+Status NpzArchive::checkDecodedSize(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  constexpr size_t kHeaderPeek = (1 << 20) + 16;  // the .npy reader's header limit plus its preamble
+  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kHeaderPeek, context_);
+  if (!prefix) return Status();  // extraction reports the problem in full
+  const std::string mctx = context_ + "/" + printable(m->name);
+  Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
+  if (!h || isObjectDescr(h->descr)) return Status();
+  Result<NumpyDtype> t = parseNumpyDescr(h->descr, mctx);
+  if (!t) return Status();
+  constexpr uint64_t kCap = 1ull << 60;  // saturate: anything this large is refused anyway
+  auto times = [&](uint64_t a, uint64_t b) { return a == 0 || b == 0 ? 0 : (a > kCap / b ? kCap : a * b); };
+  uint64_t count = 1;
+  for (int64_t d : h->shape) count = times(count, static_cast<uint64_t>(d));
+  const bool text = t->kind == 'S' || t->kind == 'U';
+  const uint64_t decoded = times(count, text ? sizeof(std::string) + t->itemsize : sizeof(double));
+  return checkMemory(m->usize + decoded, mctx,
+                     "the array " + shapeString(h->shape) + (text ? " as strings" : " as doubles"));
+}
+
+Result<Array> NpzArchive::get(const std::string& key) const {
+  if (Status st = checkDecodedSize(key); !st) return st.error();
+  Result<ZipEntry> e = memberBytes(key);
+  if (!e) return e.error();
+  const std::string mctx = context_ + "/" + printable(find(key)->name);
+  Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
+  if (!h) return h.error();
+  if (isObjectDescr(h->descr))
+    return makeError(context_ + ": '" + printable(key) + "' is an object array ('" + printable(h->descr) +
+                     "'); expected numbers or text");
+  return parseNpy(e->data.data(), e->data.size(), mctx);
+}
+
+Result<ArrayDict> NpzArchive::read(const std::vector<std::string>& keys) const {
   ArrayDict arrays;
-  for (ZipEntry& e : *entries) {
-    if (hasSuffix(e.name, "/") && e.data.empty()) continue;  // directory entry
-    const std::string key = keyOf(e.name);
-    if (arrays.count(key))
-      return makeError(context + "/" + printable(e.name) + ": duplicate member '" + key + "'");
-    Result<Array> a = parseNpy(e.data.data(), e.data.size(), context + "/" + printable(e.name));
+  for (const std::string& key : keys) {
+    if (!has(key) || arrays.count(key)) continue;
+    Result<Array> a = get(key);
     if (!a) return a.error();
-    std::vector<uint8_t>().swap(e.data);
     arrays.emplace(key, std::move(*a));
   }
   return arrays;
 }
 
+Result<ArrayDict> NpzArchive::readAllNumeric() const {
+  ArrayDict arrays;
+  for (size_t i = 0; i < keys_.size(); ++i) {
+    const std::string& key = keys_[i];
+    if (Status st = checkDecodedSize(key); !st) return st.error();
+    Result<ZipEntry> e = memberBytes(key);
+    if (!e) return e.error();
+    const std::string mctx = context_ + "/" + printable(members_[i].name);
+    Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
+    if (!h) return h.error();
+    if (isObjectDescr(h->descr)) continue;
+    Result<Array> a = parseNpy(e->data.data(), e->data.size(), mctx);
+    if (!a) return a.error();
+    arrays.emplace(key, std::move(*a));
+  }
+  return arrays;
+}
+
+Result<ArrayDict> parseNpz(const uint8_t* data, size_t size, const std::string& context) {
+  Result<NpzArchive> npz = NpzArchive::fromBytes(data, size, context);
+  if (!npz) return npz.error();
+  return npz->readAllNumeric();
+}
+
 Result<ArrayDict> readNpzFile(const std::string& path) {
-  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
-  if (!bytes) return bytes.error();
-  return parseNpz(bytes->data(), bytes->size(), baseName(path));
+  Result<NpzArchive> npz = NpzArchive::open(path);
+  if (!npz) return npz.error();
+  return npz->readAllNumeric();
+}
+
+Result<ArrayDict> readNpzFile(const std::string& path, const std::vector<std::string>& keys) {
+  Result<NpzArchive> npz = NpzArchive::open(path);
+  if (!npz) return npz.error();
+  return npz->read(keys);
 }
 
 }  // namespace smpl

@@ -44,12 +44,7 @@ struct Directory {
   uint64_t cd_limit = 0;  // where the central directory must end (EOCD or zip64 record)
 };
 
-struct CentralEntry {
-  std::string name;
-  uint16_t flags = 0, method = 0;
-  uint32_t crc = 0;
-  uint64_t csize = 0, usize = 0, local_offset = 0;
-};
+using CentralEntry = ZipMember;
 
 Result<size_t> findEocd(const uint8_t* data, size_t size, const std::string& ctx) {
   if (size < kEocdBytes) return makeError(ctx + ": not a zip archive (too short)");
@@ -139,7 +134,7 @@ Status checkSupported(const CentralEntry& c, const std::string& ectx) {
 
 // Parses the entry at `pos` (within [pos, end)) and advances `pos`.
 Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t end,
-                                      const std::string& ctx) {
+                                      const std::string& ctx, bool check_supported = true) {
   if (end - pos < kCentralBytes || le32(data + pos) != kCentralSig)
     return makeError(ctx + ": corrupt central directory at offset " + std::to_string(pos));
   const uint8_t* h = data + pos;
@@ -156,14 +151,15 @@ Result<CentralEntry> readCentralEntry(const uint8_t* data, size_t& pos, size_t e
   c.local_offset = le32(h + 42);
   const std::string ectx = ctx + "/" + printable(c.name);
   if (Status st = applyZip64Extra(h + kCentralBytes + n, x, c, ectx); !st) return st.error();
-  if (Status st = checkSupported(c, ectx); !st) return st.error();
+  if (check_supported)
+    if (Status st = checkSupported(c, ectx); !st) return st.error();
   pos += kCentralBytes + n + x + k;
   return c;
 }
 
 Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, const Directory& dir,
                                                        const ZipLimits& limits,
-                                                       const std::string& ctx) {
+                                                       const std::string& ctx, bool lazy = false) {
   if (dir.entries > limits.max_entries)
     return makeError(ctx + ": " + std::to_string(dir.entries) + " entries exceed the limit of " +
                      std::to_string(limits.max_entries));
@@ -172,8 +168,13 @@ Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, cons
   size_t pos = dir.cd_offset;
   uint64_t total = 0;
   for (uint64_t i = 0; i < dir.entries; ++i) {
-    Result<CentralEntry> c = readCentralEntry(data, pos, dir.cd_offset + dir.cd_size, ctx);
+    Result<CentralEntry> c = readCentralEntry(data, pos, dir.cd_offset + dir.cd_size, ctx, !lazy);
     if (!c) return c.error();
+    c->data_end = dir.cd_offset;
+    if (lazy) {
+      entries.push_back(std::move(*c));
+      continue;
+    }
     if (c->usize > limits.max_total_uncompressed - total)
       return makeError(ctx + ": declared uncompressed size exceeds the limit of " +
                        std::to_string(limits.max_total_uncompressed) + " bytes at '" + printable(c->name) +
@@ -280,6 +281,52 @@ Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64
 }
 
 }  // namespace
+
+Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const std::string& context,
+                                       const ZipLimits& limits) {
+  if (data == nullptr) size = 0;
+  Result<Directory> dir = readDirectory(data, size, context);
+  if (!dir) return dir.error();
+  return readCentralDirectory(data, *dir, limits, context, /*lazy=*/true);
+}
+
+Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
+                                  const std::string& context, const ZipLimits& limits) {
+  const std::string ectx = context + "/" + printable(member.name);
+  if (data == nullptr || member.data_end > size) return makeError(ectx + ": member lies outside the archive");
+  if (Status st = checkSupported(member, ectx); !st) return st.error();
+  if (member.usize > limits.max_total_uncompressed)
+    return makeError(ectx + ": declared uncompressed size " + std::to_string(member.usize) +
+                     " exceeds the limit of " + std::to_string(limits.max_total_uncompressed) + " bytes");
+  return extractEntry(data, member, member.data_end, context);  // charged to the memory budget
+}
+
+Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size, const ZipMember& member,
+                                                 size_t max_bytes, const std::string& context) {
+  const std::string ectx = context + "/" + printable(member.name);
+  if (data == nullptr || member.data_end > size) return makeError(ectx + ": member lies outside the archive");
+  if (Status st = checkSupported(member, ectx); !st) return st.error();
+  Result<size_t> start = locateData(data, member, member.data_end, ectx);
+  if (!start) return start.error();
+  std::vector<uint8_t> out(static_cast<size_t>(std::min<uint64_t>(max_bytes, member.usize)));
+  if (member.method == 0) {
+    std::memcpy(out.data(), data + *start, out.size());
+    return out;
+  }
+  z_stream zs{};
+  if (inflateInit2(&zs, -15) != Z_OK) return makeError(ectx + ": cannot initialise zlib");
+  zs.next_in = const_cast<Bytef*>(data + *start);  // zlib's API is not const-correct
+  zs.avail_in = static_cast<uInt>(std::min<uint64_t>(member.csize, kZlibChunk));
+  zs.next_out = out.data();
+  zs.avail_out = static_cast<uInt>(out.size());
+  int ret = Z_OK;
+  while (zs.avail_out > 0 && ret == Z_OK) ret = inflate(&zs, Z_NO_FLUSH);
+  const size_t produced = out.size() - zs.avail_out;
+  inflateEnd(&zs);
+  if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR) return makeError(ectx + ": corrupt deflate data");
+  out.resize(produced);
+  return out;
+}
 
 Result<std::vector<ZipEntry>> readZip(const uint8_t* data, size_t size, const std::string& context,
                                       const ZipLimits& limits) {

@@ -24,6 +24,33 @@ struct ZipLimits {
   uint64_t max_entries = 100000;
 };
 
+// One central-directory entry, listed but not extracted (lazy readers).
+struct ZipMember {
+  std::string name;
+  uint16_t flags = 0, method = 0;
+  uint32_t crc = 0;
+  uint64_t csize = 0, usize = 0, local_offset = 0;
+  uint64_t data_end = 0;  // where entry data must end (the central directory's offset)
+};
+
+// Lists the members without reading their data. Only the directory is
+// validated here (entry count limit, names, offsets); a member's compression
+// method and sizes are checked when it is extracted, so an odd or huge member
+// nobody asks for never makes the listing fail.
+Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const std::string& context,
+                                       const ZipLimits& limits = ZipLimits());
+
+// Extracts one listed member (CRC-checked); its uncompressed size must stay
+// within limits.max_total_uncompressed. `data`/`size` are the whole archive.
+Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
+                                              const std::string& context,
+                                              const ZipLimits& limits = ZipLimits());
+
+// The first min(max_bytes, size) uncompressed bytes of a listed member,
+// without CRC check (for peeking at a header before deciding to extract).
+Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size, const ZipMember& member,
+                                                 size_t max_bytes, const std::string& context);
+
 // `context` names the archive in errors.
 Result<std::vector<ZipEntry>> readZip(const uint8_t* data, size_t size, const std::string& context,
                                       const ZipLimits& limits = ZipLimits());

@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 #include "core/io/file_io.h"
 #include "core/joint_names.h"
-#include "core/io/npz.h"
+#include "core/load/npz_arrays.h"
 #include "core/io/pickle/pickle.h"
 #include "core/load/validate_inputs.h"
 
@@ -39,6 +41,8 @@ struct Arrays {
   Result<const Array*> require(const std::string& key) const {
     const Array* a = find(key);
     if (!a) return makeError(context + ": missing key '" + key + "'");
+    if (a->isObject())
+      return makeError(context + ": '" + key + "' is an object array ('|O'); expected numbers");
     if (a->isString()) return makeError(context + ": '" + key + "' holds text, expected numbers");
     return a;
   }
@@ -107,6 +111,27 @@ Status loadHands(const Arrays& in, BodyModel* m) {
   return Status();
 }
 
+// `vt` (U,2) + `ft` (F,3) as the SMPL-X release ships them: both or neither.
+Status loadTexcoords(const Arrays& in, BodyModel* m) {
+  const Array* vt = in.find("vt");
+  const Array* ft = in.find("ft");
+  if (!vt && !ft) return Status();
+  if (!vt || !ft) return makeError(in.context + ": has '" + std::string(vt ? "vt" : "ft") + "' but not '" +
+                                   (vt ? "ft" : "vt") + "'; UVs need both");
+  Result<const Array*> uv = in.get("vt", {-1, 2});
+  if (!uv) return uv.error();
+  Result<const Array*> f = in.get("ft", {m->faces.rows(), 3});
+  if (!f) return f.error();
+  const int64_t u = (*uv)->shape[0];
+  for (double v : (*f)->data)
+    if (v < 0 || v >= u || v != std::floor(v))
+      return makeError(in.context + ": 'ft' has index " + std::to_string(static_cast<long long>(v)) +
+                       "; expected integers in [0," + std::to_string(u) + ") ('vt' has " + std::to_string(u) + " rows)");
+  m->texcoords = toMatrix(**uv, u, 2);
+  m->texcoord_faces = toMatrix(**f, (*f)->shape[0], 3).cast<int>();
+  return Status();
+}
+
 Result<BodyModel> buildCore(const Arrays& in) {
   Result<const Array*> vt = in.get("v_template", {-1, 3});
   if (!vt) return vt.error();
@@ -137,6 +162,7 @@ Result<BodyModel> buildCore(const Arrays& in) {
   if (Status s = checkIndices(**f, in.context, "f"); !s) return s.error();
   m.faces = toMatrix(**f, (*f)->shape[0], 3).cast<int>();
   if (Status s = loadHands(in, &m); !s) return s.error();
+  if (Status s = loadTexcoords(in, &m); !s) return s.error();
   return m;
 }
 
@@ -172,15 +198,40 @@ Status validateModel(const BodyModel& m, const std::string& context) {
   return Status();
 }
 
+// The keys a model loader reads; every other member of an .npz is never decoded.
+const std::vector<std::string>& modelKeys() {
+  static const std::vector<std::string> keys = {
+      "v_template", "weights", "kintree_table", "shapedirs", "posedirs", "J_regressor", "f",
+      "hands_componentsl", "hands_meanl", "hands_componentsr", "hands_meanr", "hands_components",
+      "hands_mean", "vt", "ft"};
+  return keys;
+}
+
+// The first bytes of a regular file, without reading the rest (devices and
+// other special files go through readFileBytes, which refuses them).
+Result<std::vector<uint8_t>> fileMagic(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return readFileBytes(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return makeError(path + ": cannot open");
+  std::vector<uint8_t> magic(4, 0);
+  in.read(reinterpret_cast<char*>(magic.data()), 4);
+  magic.resize(static_cast<size_t>(in.gcount()));
+  return magic;
+}
+
 Result<BodyModel> loadModel(const std::string& path) {
-  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
-  if (!bytes) return bytes.error();
-  const std::vector<uint8_t>& b = *bytes;
+  Result<std::vector<uint8_t>> magic = fileMagic(path);
+  if (!magic) return magic.error();
+  const std::vector<uint8_t>& b = *magic;
   Result<ArrayDict> arrays = makeError(path + ": not a model file (expected .npz or .pkl contents)");
-  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0)
-    arrays = parseNpz(b.data(), b.size(), path);
-  else if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']'))
-    arrays = parsePickle(b.data(), b.size(), path);
+  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) {
+    arrays = readNpzArrays(path, modelKeys(), path);  // lazy: only the model's keys are read
+  } else if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']')) {
+    Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+    if (!bytes) return bytes.error();
+    arrays = parsePickle(bytes->data(), bytes->size(), path);
+  }
   if (!arrays) return arrays.error();
   return buildModel(*arrays, path);
 }

@@ -12,10 +12,12 @@
 #include "core/io/pickle/pickle.h"
 #include "core/io/printable.h"
 #include "core/joint_names.h"
+#include "core/load/betas_rows.h"
 #include "core/load/motion_aist.h"
 #include "core/load/motion_fit.h"
 #include "core/load/motion_internal.h"
 #include "core/load/motion_smplcodec.h"
+#include "core/load/npz_arrays.h"
 #include "core/load/validate_inputs.h"
 
 namespace smpl {
@@ -171,7 +173,12 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, Motion* m) {
     for (double v : trans->data)
       if (!std::isfinite(v)) return makeError(path + ": 'trans' contains NaN or infinite values");
   }
-  if (const Array* betas = find(d, "betas"); betas && !betas->isString()) m->betas = betas->data;
+  if (const Array* betas = find(d, "betas"); betas && !betas->isString()) {  // per-frame rows: betas_rows.h
+    Result<BetasRows> rows = collapseBetasRows(*betas, path);
+    if (!rows) return rows.error();
+    m->betas = rows->betas;
+    if (rows->averaged) m->notes.push_back(betasRowsNote(*rows));
+  }
   if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty()) m->gender = gender->strings[0];
   m->fps = 0.0;
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
@@ -222,13 +229,44 @@ void settleFps(const MotionOptions& o, double fallback, const char* why, Motion*
   m->notes.push_back(text);
 }
 
+// The keys the motion readers read from an .npz (NpzArchive is lazy: nothing
+// else is decoded).
+const std::vector<std::string>& motionKeys() {
+  static const std::vector<std::string> keys = {
+      "poses", "root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand", "trans", "betas",
+      "gender", "mocap_framerate", "mocap_frame_rate", "fps", "surface_model_type",
+      // SMPLCodec
+      "smplVersion", "shapeParameters", "frameCount", "frameRate", "bodyTranslation", "bodyPose", "headPose",
+      "leftHandPose", "rightHandPose", "expressionParameters", "globalOrient",
+      // fits
+      "global_orient", "body_pose", "left_hand_pose", "right_hand_pose", "jaw_pose", "leye_pose", "reye_pose",
+      "expression", "transl", "frame_rate",
+      // AIST++
+      "smpl_poses", "smpl_trans", "smpl_scaling"};
+  return keys;
+}
+
+}  // namespace
+
+namespace {
+
+// A zip (npz) by its first bytes, without reading the file.
+bool isZip(const std::string& path) {
+  char magic[2] = {0, 0};
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return false;
+  const size_t n = std::fread(magic, 1, 2, f);
+  std::fclose(f);
+  return n == 2 && magic[0] == 'P' && magic[1] == 'K';
+}
+
 }  // namespace
 
 Result<ArrayDict> readMotionArrays(const std::string& path) {
+  if (isZip(path)) return readNpzArrays(path, motionKeys());  // lazy: only the keys the readers use
   Result<std::vector<uint8_t>> bytes = readFileBytes(path);
   if (!bytes) return bytes.error();
   const std::vector<uint8_t>& b = *bytes;
-  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) return parseNpz(b.data(), b.size(), path);
   if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']'))
     return parsePickle(b.data(), b.size(), path);
   const size_t first = std::min(b.size(), static_cast<size_t>(std::find_if(b.begin(), b.end(), [](uint8_t c) {
@@ -239,6 +277,13 @@ Result<ArrayDict> readMotionArrays(const std::string& path) {
 }
 
 Result<bool> hasPoseData(const std::string& path) {
+  if (isZip(path)) {  // the member names decide; nothing is decoded
+    Result<NpzArchive> npz = NpzArchive::open(path);
+    if (!npz) return npz.error();
+    ArrayDict names;
+    for (const std::string& key : npz->keys()) names[key] = Array();
+    return motion_detail::detectFormat(names) != Format::NoPoses;
+  }
   Result<ArrayDict> arrays = readMotionArrays(path);
   if (!arrays) return arrays.error();
   return motion_detail::detectFormat(*arrays) != Format::NoPoses;
@@ -270,8 +315,8 @@ Result<Motion> loadMotion(const std::string& path, const MotionOptions& options)
       why = "AIST++ stores no frame rate; its documentation gives 60 fps";
       break;
     case Format::NoPoses:
-      return makeError(path + ": no pose data (no 'poses', 'root_orient', 'bodyPose', 'body_pose', 'global_orient' "
-                              "or 'smpl_poses' key): a shape file, not a motion");
+      return makeError(path + ": missing key 'poses': no pose data (none of 'poses', 'root_orient', 'bodyPose', "
+                              "'body_pose', 'global_orient', 'smpl_poses'): a shape file, not a motion");
   }
   if (!s) return s.error();
   settleFps(options, fallback, why, &m);

@@ -46,7 +46,7 @@ struct Motion {
   std::string gender;               // "" if absent
   bool amass = false;               // AMASS-style file (Z-up world)
   PendingHands hands;               // fits only: resolved by resolveFitHands()
-  std::vector<std::string> notes;   // what was assumed while reading, one line each
+  std::vector<std::string> notes;   // for the user: what was assumed or averaged, one line each
   MemoryCharge charge;              // `frames` and `translation` against the memory budget
 };
 

@@ -2,7 +2,6 @@
 
 #include <climits>
 #include <cstdlib>
-#include <map>
 #include <sstream>
 #include <utility>
 
@@ -75,29 +74,7 @@ Result<UvLayout> loadUvLayout(const std::string& path, const BodyModel& model) {
     return makeError(path + ": has " + std::to_string(obj->positions) + " vertices; the model has " + std::to_string(n) +
                      " (the UV mesh must share the model's vertex order)");
   if (obj->faces.empty()) return makeError(path + ": no faces with texture coordinates");
-  UvLayout layout;
-  std::map<std::pair<int, int>, int> index;  // (v, vt) -> asset vertex; ordered map keeps output deterministic
-  std::vector<Eigen::Vector2f> uvs;
-  std::vector<Eigen::Vector3i> triangles;
-  for (const auto& face : obj->faces) {
-    std::vector<int> ids;
-    for (const auto& [v, vt] : face) {
-      if (v < 0 || v >= n || vt < 0 || vt >= static_cast<int>(obj->uvs.size()))
-        return makeError(path + ": face index out of range (vertex " + std::to_string(v + 1) + ", uv " + std::to_string(vt + 1) + ")");
-      auto [it, added] = index.emplace(std::make_pair(v, vt), static_cast<int>(layout.source_vertex.size()));
-      if (added) {
-        layout.source_vertex.push_back(v);
-        uvs.push_back(obj->uvs[vt]);
-      }
-      ids.push_back(it->second);
-    }
-    for (size_t i = 1; i + 1 < ids.size(); ++i) triangles.emplace_back(ids[0], ids[i], ids[i + 1]);
-  }
-  layout.uvs.resize(static_cast<Eigen::Index>(uvs.size()), 2);
-  for (size_t i = 0; i < uvs.size(); ++i) layout.uvs.row(i) = uvs[i].transpose();
-  layout.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
-  for (size_t i = 0; i < triangles.size(); ++i) layout.triangles.row(i) = triangles[i].transpose();
-  return layout;
+  return splitUvSeams(obj->faces, obj->uvs, n, path);
 }
 
 }  // namespace smpl

@@ -9,15 +9,10 @@
 #include <vector>
 
 #include "core/body_model.h"
+#include "core/load/uv_split.h"
 #include "core/result.h"
 
 namespace smpl {
-
-struct UvLayout {
-  std::vector<int> source_vertex;  // V: model vertex of each asset vertex
-  Eigen::MatrixXf uvs;             // V x 2 (OBJ convention, v up)
-  Eigen::MatrixXi triangles;       // F x 3 asset-vertex indices
-};
 
 // The OBJ's faces must reference only model vertices (1-based, < N) and each
 // face a texture coordinate; polygons are fanned into triangles.

@@ -1,6 +1,9 @@
 add_test(NAME cli_behaviour
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/cli_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli_behaviour PROPERTIES LABELS cli)
+add_test(NAME cli_released_layouts
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/released_layouts_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli_released_layouts PROPERTIES LABELS cli)
 
 add_test(NAME cli.motion_formats
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/motion_formats_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})

@@ -22,7 +22,7 @@ def joint_names(num_joints):
     left = ["left_" + f for f in FINGERS]
     right = ["right_" + f for f in FINGERS]
     table = {24: BODY + ["left_hand", "right_hand"], 52: BODY + left + right,
-             55: BODY + ["jaw", "left_eye", "right_eye"] + left + right, 16: ["wrist"] + FINGERS}
+             55: BODY + ["jaw", "left_eye_smplhf", "right_eye_smplhf"] + left + right, 16: ["wrist"] + FINGERS}
     if num_joints not in table:
         raise ValueError("no canonical joint names for %d joints" % num_joints)
     return table[num_joints]

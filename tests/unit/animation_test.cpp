@@ -41,6 +41,21 @@ TEST(Animation, SmplhMotionOnSmplDropsFingers) {
   EXPECT_EQ(map->source_of_joint[21], 21);
 }
 
+// Bones are matched by name, either SMPL-X eye spelling: a model whose joints
+// still carry the old names (left_eye/right_eye) gets the eye rotations.
+TEST(Animation, SmplxEyesMatchEitherSpelling) {
+  Loaded l = load("smplx_small.npz", "amass_smplx.npz");
+  ASSERT_EQ(l.model.joint_names[23], "left_eye_smplhf");
+  l.model.joint_names[23] = "left_eye";
+  l.model.joint_names[24] = "right_eye";
+  Result<MotionMapping> map = mapMotion(l.model, l.motion, "walk.npz");
+  ASSERT_TRUE(map.ok()) << map.message();
+  EXPECT_EQ(map->source_of_joint[23], 23);
+  EXPECT_EQ(map->source_of_joint[24], 24);
+  EXPECT_TRUE(map->missing.empty());
+  EXPECT_TRUE(map->dropped.empty());
+}
+
 TEST(Animation, ManoMotionCannotDriveSmpl) {
   Loaded l = load("mano_small.npz", "amass_smplh.npz");
   Result<MotionMapping> map = mapMotion(l.model, l.motion, "walk.npz");

@@ -58,7 +58,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"smplh", "smplh_small_p4.pkl"}, Case{"smplx", "smplx_small.npz"},
                       Case{"smplx", "smplx_small_p2.pkl"}, Case{"smplx", "smplx_small_p4.pkl"},
                       Case{"mano", "mano_small.npz"}, Case{"mano", "mano_small_p2.pkl"},
-                      Case{"mano", "mano_small_p4.pkl"}),
+                      Case{"mano", "mano_small_p4.pkl"},
+                      // the SMPL-X release layout: object arrays, UVs, landmarks (same model arrays)
+                      Case{"smplx", "../released/smplx_release.npz"}),
     [](const ::testing::TestParamInfo<Case>& info) {
       std::string name = info.param.file;
       for (char& ch : name)

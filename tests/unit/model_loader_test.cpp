@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/io/npz.h"
+#include "core/joint_names.h"
 
 namespace smpl {
 namespace {
@@ -21,6 +22,15 @@ ArrayDict loadArrays(const std::string& file) {
 std::string errorOf(const ArrayDict& arrays) {
   Result<BodyModel> m = buildModel(arrays, "model.npz");
   return m.ok() ? std::string("(loaded)") : m.message();
+}
+
+// A float64 Array of `shape` holding `data` (C order).
+Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
+  Array a;
+  a.shape = std::move(shape);
+  a.data = std::move(data);
+  a.dtype = "<f8";
+  return a;
 }
 
 TEST(ModelLoader, DetectsFamiliesAndSplitsSmplxShapedirs) {
@@ -112,6 +122,47 @@ TEST(ModelLoader, TextWhereNumbersExpected) {
   EXPECT_EQ(errorOf(a), "model.npz: 'v_template' holds text, expected numbers");
 }
 
+TEST(ModelLoader, ObjectArrayWhereNumbersExpected) {
+  ArrayDict a = loadArrays("smpl_small.npz");
+  Array dict;
+  dict.dtype = "|O";
+  dict.keys = {"pelvis"};
+  dict.data = {0};
+  dict.shape = {1};
+  a["f"] = dict;
+  EXPECT_EQ(errorOf(a), "model.npz: 'f' is an object array ('|O'); expected numbers");
+}
+
+// The SMPL-X release layout: extra keys (object arrays, landmarks, a complex
+// member) are never decoded; vt/ft become the model's UVs.
+TEST(ModelLoader, SmplxReleaseLayoutLoadsWithItsUvs) {
+  const std::string released = std::string(SMPL_FIXTURE_DIR) + "/released/";
+  Result<BodyModel> m = loadModel(released + "smplx_release.npz");
+  ASSERT_TRUE(m.ok()) << m.message();
+  EXPECT_EQ(m->kind, ModelKind::SmplX);
+  Result<ArrayDict> uv = readNpzFile(released + "smplx_release.npz", {"vt", "ft"});
+  ASSERT_TRUE(uv.ok()) << uv.message();
+  ASSERT_EQ(m->texcoords.rows(), uv->at("vt").shape[0]);
+  ASSERT_EQ(m->texcoord_faces.rows(), m->faces.rows());
+  for (Eigen::Index i = 0; i < m->texcoord_faces.size(); ++i)
+    ASSERT_EQ(m->texcoord_faces(i / 3, i % 3), uv->at("ft").data[i]);
+  EXPECT_EQ(m->texcoords(5, 1), uv->at("vt").data[11]);
+  Result<BodyModel> plain = loadModel(kModels + "smplx_small.npz");
+  ASSERT_TRUE(plain.ok());
+  EXPECT_EQ(plain->texcoords.rows(), 0);
+  EXPECT_TRUE(m->v_template == plain->v_template && m->posedirs == plain->posedirs);
+}
+
+TEST(ModelLoader, UvIndexOutOfRangeIsOneLine) {
+  Result<BodyModel> m = loadModel(std::string(SMPL_FIXTURE_DIR) + "/released/smpl_bad_ft.npz");
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.message().find("smpl_bad_ft.npz: 'ft' has index "), std::string::npos) << m.message();
+  EXPECT_NE(m.message().find("('vt' has "), std::string::npos) << m.message();
+  ArrayDict a = loadArrays("smpl_small.npz");
+  a["vt"] = numbers({4, 2}, std::vector<double>(8, 0.5));
+  EXPECT_EQ(errorOf(a), "model.npz: has 'vt' but not 'ft'; UVs need both");
+}
+
 TEST(ModelLoader, NotAModelFile) {
   Result<BodyModel> m = loadModel(std::string(SMPL_SOURCE_DIR) + "/CMakeLists.txt");
   ASSERT_FALSE(m.ok());
@@ -119,6 +170,16 @@ TEST(ModelLoader, NotAModelFile) {
   Result<BodyModel> missing = loadModel("/nonexistent/model.pkl");
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.message().find("/nonexistent/model.pkl"), std::string::npos);
+}
+
+TEST(JointNames, SmplxEyesUseTheAuthorsNames) {
+  const std::vector<std::string>& names = canonicalJointNames(ModelKind::SmplX);
+  EXPECT_EQ(names[23], "left_eye_smplhf");
+  EXPECT_EQ(names[24], "right_eye_smplhf");
+  EXPECT_EQ(canonicalJointName("left_eye"), "left_eye_smplhf");
+  EXPECT_EQ(canonicalJointName("right_eye"), "right_eye_smplhf");
+  EXPECT_EQ(canonicalJointName("right_eye_smplhf"), "right_eye_smplhf");
+  EXPECT_EQ(canonicalJointName("jaw"), "jaw");
 }
 
 }  // namespace

@@ -261,9 +261,11 @@ TEST(Pickle, PayloadMustMatchDtypeAndShape) {
   object.raw("}").str("a").raw("cnumpy.core.multiarray\n_reconstruct\ncnumpy\nndarray\n").integer(0);
   object.raw("\x85").bytes("b").raw("\x87R(").integer(1).raw("(").integer(1).raw("t").dtype("O8", "|");
   object.raw("\x89]K\x01\x61tbs.");
+  // An object array in a model pickle is not model data: the key is dropped, the load goes on
+  // (parseObjectNpy decodes such arrays when a caller needs one).
   r = parse(object.s);
-  ASSERT_FALSE(r.ok());
-  EXPECT_NE(r.message().find("object arrays are not supported"), std::string::npos) << r.message();
+  ASSERT_TRUE(r.ok()) << r.message();
+  EXPECT_EQ(r->count("a"), 0u);
 }
 
 TEST(Pickle, SparseIndicesAreValidated) {

@@ -32,4 +32,13 @@ Result<ArrayDict> parsePickle(const uint8_t* data, size_t size, const std::strin
                               const PickleLimits& limits = PickleLimits());
 Result<ArrayDict> readPickleFile(const std::string& path);
 
+// An .npy image of dtype '|O' (what np.save/np.savez write for object arrays,
+// with allow_pickle): its data is a pickle of the array, decoded here by the
+// same data-only VM. Elements may be numbers, strings, array-likes (for 0-d
+// arrays) or, for a 0-d array, a dict of string -> number, which becomes an
+// Array with `keys` (core/array.h). Anything else is an error naming
+// `context`; nothing is executed.
+Result<Array> parseObjectNpy(const uint8_t* data, size_t size, const std::string& context,
+                             const PickleLimits& limits = PickleLimits());
+
 }  // namespace smpl

@@ -58,6 +58,8 @@ struct PyObj {
   Ref state = 0;                       // Instance: BUILD state (0 = none; 0 is always the None object)
   DtypeInfo dtype;                     // Dtype
   std::unique_ptr<Array> array;        // NdArray
+  bool object_array = false;           // NdArray of dtype 'O': elements in `items`, shape in `object_shape`
+  std::vector<int64_t> object_shape;
 };
 
 // Arena of objects. Index 0 is a shared None. Every allocation is charged to

@@ -359,6 +359,26 @@ Result<Ref> callGlobal(Heap& heap, Ref callable, Ref args_ref) {
 
 namespace {
 
+// Object arrays keep their elements (a list in the state) for parseObjectNpy;
+// converting them to numbers happens only if a caller asks for them.
+Status setObjectArrayState(Heap& heap, Ref obj, Ref shape_ref, const DtypeInfo& d, Ref raw_ref) {
+  if (d.kind != 'O' || heap.at(raw_ref).kind != Kind::List)
+    return heap.fail("ndarray state has list data for a non-object dtype");
+  Result<std::vector<int64_t>> shape = shapeOf(heap, shape_ref);
+  if (!shape) return shape.error();
+  uint64_t count = 1;  // saturates at 2^40 (more elements than any list can hold)
+  for (int64_t n : *shape) count = std::min<uint64_t>(count * std::min<uint64_t>(n, 1ull << 40), 1ull << 40);
+  std::vector<Ref> items = heap.at(raw_ref).items;
+  if (count != items.size())
+    return heap.fail("object array of shape " + shapeString(*shape) + " holds " + std::to_string(items.size()) +
+                     " elements");
+  PyObj& o = heap.at(obj);
+  o.object_array = true;
+  o.object_shape = std::move(*shape);
+  o.items = std::move(items);
+  return Status::success();
+}
+
 // ndarray.__setstate__((version, shape, dtype, is_fortran, rawdata)); the
 // version is missing in very old pickles.
 Status setArrayState(Heap& heap, Ref obj, Ref state) {
@@ -371,7 +391,7 @@ Status setArrayState(Heap& heap, Ref obj, Ref state) {
   if (heap.at(dtype_ref).kind != Kind::Dtype) return heap.fail("ndarray state has no dtype");
   DtypeInfo d = heap.at(dtype_ref).dtype;
   const PyObj& raw = heap.at(raw_ref);
-  if (d.kind == 'O' || raw.kind == Kind::List) return heap.fail("object arrays are not supported (not model data)");
+  if (d.kind == 'O' || raw.kind == Kind::List) return setObjectArrayState(heap, obj, shape_ref, d, raw_ref);
   if (raw.kind != Kind::Bytes) return heap.fail("ndarray data is a " + typeName(heap, raw_ref) + ", expected bytes");
   Result<std::vector<int64_t>> shape = shapeOf(heap, shape_ref);
   if (!shape) return shape.error();
@@ -411,7 +431,7 @@ Status buildObject(Heap& heap, Ref obj, Ref state) {
   PyObj& o = heap.at(obj);
   switch (o.kind) {
     case Kind::NdArray:
-      if (o.array) return heap.fail("BUILD on an ndarray that already has data");
+      if (o.array || o.object_array) return heap.fail("BUILD on an ndarray that already has data");
       return setArrayState(heap, obj, state);
     case Kind::Dtype: return setDtypeState(heap, obj, state);
     case Kind::Instance: {

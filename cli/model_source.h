@@ -1,0 +1,47 @@
+// Where each export's body model comes from: `--model FILE`, `--model builtin`
+// or `--model DIR` (core/load/model_folder.h picks the file per motion: its
+// model kind from the joint count or AMASS's `surface_model_type`, its gender
+// from `gender`). Loaded models are cached by path and shared by the batch
+// workers (thread-safe), so a mixed-gender AMASS folder loads each model once;
+// each cached model's arrays are charged to the memory budget.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/body_model.h"
+#include "core/memory_budget.h"
+#include "core/result.h"
+
+namespace smpl {
+
+struct ModelPick {
+  const BodyModel* model = nullptr;  // owned by the ModelSource
+  std::string path;                  // the model file used (for summaries)
+  std::string note;                  // e.g. "no female SMPL-X model in DIR; using SMPLX_NEUTRAL.npz"
+};
+
+class ModelSource {
+ public:
+  explicit ModelSource(std::string option) : option_(std::move(option)) {}
+  bool isFolder() const;
+  // The model for a motion file ("" = no motion). Errors name the file that failed.
+  Result<ModelPick> forMotion(const std::string& motion_path);
+
+ private:
+  Result<ModelPick> load(const std::string& path, const std::string& name);
+  std::string option_;
+  std::mutex mutex_;
+  struct Cached {
+    std::unique_ptr<BodyModel> model;
+    MemoryCharge memory;  // the model's arrays, held against the budget while cached
+  };
+  std::map<std::string, Cached> cache_;
+  std::vector<std::string> listing_;
+  bool listed_ = false;
+};
+
+}  // namespace smpl

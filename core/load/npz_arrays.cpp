@@ -1,0 +1,35 @@
+#include "core/load/npz_arrays.h"
+
+#include <utility>
+
+#include "core/io/npy.h"
+#include "core/io/printable.h"
+#include "core/io/pickle/pickle.h"
+
+namespace smpl {
+
+Result<Array> readNpzMember(const NpzArchive& npz, const std::string& key) {
+  Result<ZipEntry> e = npz.memberBytes(key);
+  if (!e) return e.error();
+  const std::string mctx = npz.context() + ": '" + printable(key) + "'";
+  Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
+  if (!h) return h.error();
+  if (isObjectDescr(h->descr)) return parseObjectNpy(e->data.data(), e->data.size(), mctx);
+  return npz.get(key);
+}
+
+Result<ArrayDict> readNpzArrays(const std::string& path, const std::vector<std::string>& keys,
+                                const std::string& context) {
+  Result<NpzArchive> npz = NpzArchive::open(path, context);
+  if (!npz) return npz.error();
+  ArrayDict arrays;
+  for (const std::string& key : keys) {
+    if (!npz->has(key) || arrays.count(key)) continue;
+    Result<Array> a = readNpzMember(*npz, key);
+    if (!a) return a.error();
+    arrays.emplace(key, std::move(*a));
+  }
+  return arrays;
+}
+
+}  // namespace smpl
