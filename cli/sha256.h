@@ -1,4 +1,4 @@
-// SHA-256 (FIPS 180-4) of bytes or of a file, as lowercase hex: the digest
+// SHA-256 (FIPS 180-4, computed by OpenSSL) of bytes or of a file, as lowercase hex: the digest
 // the batch manifest records for each output (`sha256sum` prints the same).
 #pragma once
 
