@@ -1,5 +1,5 @@
 // Canonical joint names per model family, in model order. These names become
-// bone names and morph target names (pose_<joint>_<r><c>, DESIGN.md), so they
+// bone names and morph target names (pose_<joint>_<r><c>, docs/file-contract.md), so they
 // are part of the exporter/runtime contract: do not rename.
 #pragma once
 

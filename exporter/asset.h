@@ -18,7 +18,7 @@ struct Skeleton {
   std::vector<int> parents;             // K; -1 for the root
   Eigen::MatrixXd rest_local;           // K x 3 local translation J_k - J_p(k) (root: J_0)
   Eigen::MatrixXd rest_world;           // K x 3 rest joint positions J_k
-  // Rest local rotations are identity by contract (DESIGN.md); inverse bind
+  // Rest local rotations are identity by contract (docs/file-contract.md); inverse bind
   // matrix of joint k is translation(-J_k).
 };
 
@@ -41,7 +41,7 @@ struct SkinnedMesh {
 
 // One entry per corrective morph target: weight = scale * f[feature] + offset.
 struct CorrectiveLayout {
-  int feature = 0;                      // index into f (DESIGN.md order)
+  int feature = 0;                      // index into f (docs/file-contract.md order)
   std::string target;                   // morph target name
   double scale = 1.0;
   double offset = 0.0;

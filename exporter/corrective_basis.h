@@ -36,7 +36,7 @@ struct CorrectiveBasisFit {
 // to the rank (callers read basis.cols()).
 Result<CorrectiveBasisFit> fitCorrectiveBasis(const Eigen::MatrixXd& posedirs, int k);
 
-// Exact range [lo_k, hi_k] of (C f)_k over all joint rotations (f of DESIGN.md,
+// Exact range [lo_k, hi_k] of (C f)_k over all joint rotations (f of docs/file-contract.md,
 // 9 features per joint). lo <= 0 <= hi (f = 0 at the rest pose).
 void weightRange(const Eigen::MatrixXd& projection, Eigen::VectorXd* lo, Eigen::VectorXd* hi);
 

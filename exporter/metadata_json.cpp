@@ -1,4 +1,4 @@
-// The metadata object of DESIGN.md, serialised with nlohmann::ordered_json so
+// The metadata object of docs/file-contract.md, serialised with nlohmann::ordered_json so
 // keys keep the documented order and doubles print as the shortest text that
 // reads back to the same value.
 //
@@ -8,7 +8,7 @@
 //                        "matrix": [...],                    C, K x P, row-major
 //                        "scale": [...], "offset": [...]}    K each
 // drives target k with weight_k = scale_k * sum_n matrix[k P + n] f[n] + offset_k
-// (f of DESIGN.md). The key is absent without a basis.
+// (f of docs/file-contract.md). The key is absent without a basis.
 //
 // The sidecar <out>.smpl.json adds, last,
 //   "producer": {"hash": "<16 hex digits>"}

@@ -1,4 +1,4 @@
-// The metadata object of DESIGN.md as JSON text: written into glTF
+// The metadata object of docs/file-contract.md as JSON text: written into glTF
 // (asset.extras.smpl) and as the sidecar <out>.smpl.json. One serialiser so
 // the two cannot drift.
 #pragma once

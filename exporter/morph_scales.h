@@ -4,7 +4,7 @@
 // [-1, 1] with a step of 1/32767. glTF has no per-accessor dequantisation
 // scale, and the spec's shared transform (folded into the skin's inverse bind
 // matrices) would give every target the grid of the largest one and put a
-// scale into the bind pose, which the runtime formula of DESIGN.md assumes is
+// scale into the bind pose, which the runtime formula of docs/file-contract.md assumes is
 // pure rotation/translation. Instead each corrective target n is stored as
 // d_n / s_n, s_n = max |component of d_n|, and s_n is folded into its weight:
 // the metadata mapping becomes weight = (s_n scale) f + (s_n offset), so

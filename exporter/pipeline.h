@@ -15,7 +15,7 @@
 
 namespace smpl {
 
-// How corrective weights are encoded (DESIGN.md "Pose correctives as morph targets").
+// How corrective weights are encoded (docs/file-contract.md "Pose correctives as morph targets").
 //   Signed: weight = f[n] (diagonal features in [-2, 0], off-diagonal in [-1, 1]).
 //   Unit:   weight = 0.5 f[n] + o, o = 1 (diagonal) or 0.5 (off-diagonal), so
 //           weights stay in [0, 1] for engines and importers that clamp; the
@@ -43,7 +43,7 @@ struct ExportOptions {
 
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& options);
 
-// Morph target name for pose feature n: pose_<joint>_<r><c> (DESIGN.md).
+// Morph target name for pose feature n: pose_<joint>_<r><c> (docs/file-contract.md).
 std::string correctiveTargetName(const BodyModel& model, int feature);
 
 }  // namespace smpl

@@ -1,6 +1,6 @@
 """Drive SMPL pose-corrective shape keys from an armature's pose.
 
-The "robust runtime formula" of DESIGN.md, in Blender terms. For joint k,
+The "robust runtime formula" of docs/file-contract.md, in Blender terms. For joint k,
 with rotations taken in armature space (pose_bone.matrix vs bone.matrix_local):
 
     D_k = Q_k(now) Q_k(rest)^-1      rotation change since the bind pose
@@ -387,7 +387,7 @@ def apply(armature_obj, mesh_obj, depsgraph=None):
     source = armature_obj.evaluated_get(depsgraph) if depsgraph is not None else None
     features = pose_features(armature_obj, binding, source)
     values = binding.scale * features[binding.key_joint, binding.key_row, binding.key_col] + binding.offset
-    if binding.basis_key_index.size:  # f in DESIGN.md order: joint k's R - I row-major
+    if binding.basis_key_index.size:  # f in docs/file-contract.md order: joint k's R - I row-major
         f = features[binding.basis_slots].reshape(-1)
         values = np.concatenate([values, binding.basis_scale * (binding.basis_matrix @ f) + binding.basis_offset])
     key = mesh_obj.data.shape_keys

@@ -1,6 +1,6 @@
 // Whole-file reads and atomic writes. Outputs go to a temporary file
 // "<dir>/.<name>.smpl.tmp-<pid>" and are renamed into place, so a failed run
-// leaves no partial file (DESIGN.md). A run killed mid-write (SIGKILL) leaves
+// leaves no partial file (docs/file-contract.md). A run killed mid-write (SIGKILL) leaves
 // at most such dot-prefixed temporaries, named after the output; the next run
 // writing that output removes them (removeStaleTemps).
 #pragma once

@@ -83,7 +83,7 @@ Result<std::vector<int>> parentsFromKintree(const Array& kintree, const std::str
   return parents;
 }
 
-// SMPL-X packs shape then expression columns in one shapedirs (DESIGN.md).
+// SMPL-X packs shape then expression columns in one shapedirs (docs/file-contract.md).
 void splitShapedirs(ModelKind kind, const Eigen::MatrixXd& all, BodyModel* m) {
   Eigen::Index shape_cols = all.cols();
   if (kind == ModelKind::SmplX) {

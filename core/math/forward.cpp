@@ -65,7 +65,7 @@ Result<ShapedBody> shapeBody(const BodyModel& model, const Eigen::VectorXd& beta
 
 namespace {
 
-// G_k = G_p(k) [R_k | J_k - J_p(k)] (DESIGN.md), root translated by J_0.
+// G_k = G_p(k) [R_k | J_k - J_p(k)] (docs/file-contract.md), root translated by J_0.
 std::vector<Eigen::Matrix4d> worldTransforms(const BodyModel& model, const Rotations& rotations,
                                              const Eigen::MatrixXd& joints) {
   const int k = model.numJoints();

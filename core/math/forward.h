@@ -1,4 +1,4 @@
-// The reference forward pass of DESIGN.md, in double precision:
+// The reference forward pass of docs/file-contract.md, in double precision:
 //   v_shaped = T + S beta (+ E psi)      J = J_regressor v_shaped
 //   f = [vec(R_k - I)], k >= 1           v_posed = v_shaped + P f
 //   G_k = G_p(k) [R_k | J_k - J_p(k)]    A_k = G_k [I | -J_k]

@@ -1,5 +1,5 @@
 // Skin weight pruning: keep the M largest influences per vertex, renormalise
-// to sum 1 (DESIGN.md "Baking a subject"). Ties break toward the lower joint
+// to sum 1 (docs/file-contract.md "Baking a subject"). Ties break toward the lower joint
 // index so output is deterministic.
 #pragma once
 

@@ -15,7 +15,7 @@ void addJointModel(SceneContext& ctx, int k) {
   node.add("Version").addInt32(232);
   FbxNode& p = node.add("Properties70");
   // Rest rotation is identity by contract, so a joint's animated local
-  // rotation is the model's own R_k (DESIGN.md).
+  // rotation is the model's own R_k (docs/file-contract.md).
   pVector(p, "Lcl Translation", "Lcl Translation", "", "A", s.rest_local(k, 0) * ctx.scale,
           s.rest_local(k, 1) * ctx.scale, s.rest_local(k, 2) * ctx.scale);
   pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", 0, 0, 0);

@@ -1,6 +1,6 @@
 // glTF 2.0 writer: one skinned mesh with morph targets (pose correctives and
 // any shape keys), one node per joint, optional animation clips, and the
-// metadata object of DESIGN.md in asset.extras.smpl. GLB when
+// metadata object of docs/file-contract.md in asset.extras.smpl. GLB when
 // options.binary, else .gltf with the buffer embedded as a data URI.
 //
 //   const Writer& w = gltfWriter();

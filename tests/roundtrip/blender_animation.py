@@ -340,7 +340,7 @@ def main():
 
 
 def read_max_influences(asset):
-    """M from the sidecar written next to the asset (DESIGN.md metadata)."""
+    """M from the sidecar written next to the asset (docs/file-contract.md metadata)."""
     import json
     with open(asset + ".smpl.json", encoding="utf-8") as fh:
         return int(json.load(fh)["max_influences"])

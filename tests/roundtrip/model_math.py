@@ -1,4 +1,4 @@
-"""The model's math in plain numpy (DESIGN.md "The math"), written from the
+"""The model's math in plain numpy (docs/file-contract.md "The math"), written from the
 equations and nothing else, so the round-trip tests can judge both Blender's
 output and smpl-reference's without trusting our C++ code.
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A tiny SMPL-layout model and a GLB written by hand with numpy, following the
-exporter contract (docs: DESIGN.md, cli.md). It lets the Blender add-on be
+exporter contract (docs/file-contract.md). It lets the Blender add-on be
 tested without smpl-export: if the add-on and this independent writer agree
 with numpy's forward pass, the add-on's math is right whatever the exporter
 does.

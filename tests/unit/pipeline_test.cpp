@@ -1,4 +1,4 @@
-// The asset the pipeline builds honours DESIGN.md: rest mesh v_shaped, local
+// The asset the pipeline builds honours docs/file-contract.md: rest mesh v_shaped, local
 // rest translations J_k - J_p(k), one morph target per posedirs column named
 // pose_<joint>_<r><c>, pruned weights, metadata.
 #include "exporter/pipeline.h"
