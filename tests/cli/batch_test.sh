@@ -10,7 +10,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0 failed=0
 
-check() {  # name, condition result
+check() {  # name, status (captured with st=$? before the name expands: a $(...) in it resets $?)
   if [ "$2" = 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $1"; fi
 }
 
@@ -22,11 +22,11 @@ for f in $good bad_trans.npz; do cp "$fixtures/motions/$f" "$motions/" || exit 1
 run() {  # out dir, expected exit, expected summary; leaves stdout/stderr in $work
   "$exe" --model builtin --motion-dir "$motions" --out-dir "$1" >"$work/stdout" 2>"$work/stderr"
   local got=$?
-  [ "$got" = "$2" ]; check "exit $got, expected $2 ($3)" $?
-  grep -qxF "$3" "$work/stdout"; check "stdout lacks '$3': $(tail -n 1 "$work/stdout")" $?
+  [ "$got" = "$2" ]; st=$?; check "exit $got, expected $2 ($3)" "$st"
+  grep -qxF "$3" "$work/stdout"; st=$?; check "stdout lacks '$3': $(tail -n 1 "$work/stdout")" "$st"
   grep -qF "Error loading $motions/bad_trans.npz: " "$work/stderr"
-  check "no 'Error loading $motions/bad_trans.npz: ...' line: $(cat "$work/stderr")" $?
-  [ "$(grep -c '^Error' "$work/stderr")" = 1 ]; check "expected exactly one Error line: $(cat "$work/stderr")" $?
+  st=$?; check "no 'Error loading $motions/bad_trans.npz: ...' line: $(cat "$work/stderr")" "$st"
+  [ "$(grep -c '^Error' "$work/stderr")" = 1 ]; st=$?; check "expected exactly one Error line: $(cat "$work/stderr")" "$st"
 }
 
 outputs() {  # the files an out dir must hold, sorted
@@ -35,7 +35,7 @@ outputs() {  # the files an out dir must hold, sorted
 
 # 1. First run: 3 converted, 1 failed, nothing written for the bad one.
 run "$out" 3 "batch: 3 converted, 0 up to date, 1 failed, 0 skipped (no pose data)"
-[ "$(ls "$out" | sort)" = "$(outputs)" ]; check "outputs: $(ls "$out" | tr '\n' ' ')" $?
+[ "$(ls "$out" | sort)" = "$(outputs)" ]; st=$?; check "outputs: $(ls "$out" | tr '\n' ' ')" "$st"
 (cd "$out" && sha256sum $(outputs)) >"$work/first.sha"
 
 # 2. Nothing changed: all up to date, the bad one still fails.
@@ -45,18 +45,18 @@ run "$out" 3 "batch: 0 converted, 3 up to date, 1 failed, 0 skipped (no pose dat
 sleep 1
 touch "$motions/smpl_72.npz"
 run "$out" 3 "batch: 1 converted, 2 up to date, 1 failed, 0 skipped (no pose data)"
-[ "$out/smpl_72.glb" -nt "$out/amass_smplh.glb" ]; check "smpl_72.glb was not rewritten" $?
-(cd "$out" && sha256sum -c --quiet "$work/first.sha"); check "outputs changed after reconverting" $?
+[ "$out/smpl_72.glb" -nt "$out/amass_smplh.glb" ]; st=$?; check "smpl_72.glb was not rewritten" "$st"
+(cd "$out" && sha256sum -c --quiet "$work/first.sha"); st=$?; check "outputs changed after reconverting" "$st"
 
 # 4. Determinism across out dirs (fresh run, any thread schedule).
 run "$work/out2" 3 "batch: 3 converted, 0 up to date, 1 failed, 0 skipped (no pose data)"
-(cd "$work/out2" && sha256sum -c --quiet "$work/first.sha"); check "a fresh out dir differs from the first" $?
+(cd "$work/out2" && sha256sum -c --quiet "$work/first.sha"); st=$?; check "a fresh out dir differs from the first" "$st"
 
 # 5. The outputs are real animated GLBs: glTF magic and an "animations" array.
 for f in $good; do
   glb=$out/${f%.*}.glb
-  [ "$(head -c 4 "$glb")" = "glTF" ]; check "$glb: not a GLB" $?
-  grep -qa '"animations"' "$glb"; check "$glb: no animations" $?
+  [ "$(head -c 4 "$glb")" = "glTF" ]; st=$?; check "$glb: not a GLB" "$st"
+  grep -qa '"animations"' "$glb"; st=$?; check "$glb: no animations" "$st"
 done
 
 echo "batch_test: $passed passed, $failed failed"
