@@ -25,10 +25,15 @@ _results = []  # (name, ok, detail)
 
 
 def args():
-    """(exe, fixture_dir, work_dir) from argv; work_dir is emptied."""
+    """(exe, fixture_dir, work_dir) from argv; work_dir is emptied. Exits with an
+    error when exe is built with AddressSanitizer: its memory use is not the
+    product's and it cannot run under an address-space limit (tests.cmake)."""
     if len(sys.argv) != 4:
         sys.exit(f"usage: {sys.argv[0]} SMPL_EXPORT FIXTURE_DIR WORK_DIR")
     exe, fixtures, work = sys.argv[1], pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3])
+    if b"__asan_init" in pathlib.Path(exe).read_bytes():
+        sys.exit(f"{exe}: built with AddressSanitizer; the reliability suite needs a product build "
+                 "(configure with -DSMPL_RELIABILITY_EXE=<build>/cli/smpl-export; scripts/test.sh does)")
     if work.exists():
         subprocess.run(["rm", "-rf", str(work)], check=True)
     work.mkdir(parents=True)
