@@ -310,7 +310,9 @@ Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t siz
   if (!start) return start.error();
   std::vector<uint8_t> out(static_cast<size_t>(std::min<uint64_t>(max_bytes, member.usize)));
   if (member.method == 0) {
-    std::memcpy(out.data(), data + *start, out.size());
+    if (*start > member.data_end || out.size() > member.data_end - *start)
+      return makeError(ectx + ": stored member is shorter than its declared size");
+    if (!out.empty()) std::memcpy(out.data(), data + *start, out.size());  // memcpy(nullptr, ..) is UB
     return out;
   }
   z_stream zs{};

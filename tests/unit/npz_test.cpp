@@ -175,5 +175,13 @@ TEST(Npz, UnusedMembersAreNeverDecoded) {
   EXPECT_NE(bad.message().find("unsupported compression method 99"), std::string::npos) << bad.message();
 }
 
+// Found by npz_fuzz: an empty stored member made the header probe call
+// memcpy(nullptr, ..., 0) (undefined behaviour; UBSan aborts the test build).
+TEST(Npz, EmptyStoredMemberIsAnErrorNotUndefinedBehaviour) {
+  Result<ArrayDict> d = parse(storedZip({{"betas.npy", ""}}));
+  ASSERT_FALSE(d.ok());
+  EXPECT_EQ(d.message().rfind("model.npz/betas.npy: ", 0), 0u) << d.message();
+}
+
 }  // namespace
 }  // namespace smpl
