@@ -8,6 +8,7 @@
 
 #include "core/io/npy.h"
 #include "core/io/npz.h"
+#include "core/io/printable.h"
 #include "core/load/betas_rows.h"
 #include "core/load/validate_inputs.h"
 #include "core/memory_budget.h"
@@ -202,7 +203,14 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
       value = arg.substr(eq + 1);
       arg = arg.substr(0, eq);
     } else if (std::find(std::begin(kFlags), std::end(kFlags), arg) == std::end(kFlags)) {
-      if (i + 1 >= argc) return makeError("option " + arg + " needs a value");
+      if (arg.rfind("-", 0) != 0)
+        return makeError("unexpected argument '" + printable(arg) + "': options start with -- (see --help)");
+      if (i + 1 >= argc) {  // an unknown option says so, rather than asking for a value
+        Settings probe;
+        Status known = applyOption(arg, "", &probe);
+        if (!known && known.message().rfind("unknown option", 0) == 0) return known.error();
+        return makeError("option " + arg + " needs a value");
+      }
       value = argv[++i];
     }
     if (arg != "--motion" && std::find(given.begin(), given.end(), arg) != given.end())

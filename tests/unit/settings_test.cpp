@@ -30,6 +30,10 @@ TEST(Settings, RejectsBeforeWork) {
   struct Bad { std::vector<const char*> args; const char* message; };
   const Bad cases[] = {
       {{"--model", "builtin", "--out", "a.glb", "--frobnicate", "1"}, "unknown option '--frobnicate'"},
+      {{"--model", "builtin", "--out", "a.glb", "--frobnicate"}, "unknown option '--frobnicate'"},
+      {{"-V"}, "unknown option '-V'"},
+      {{"--model", "builtin", "stray", "--out", "a.glb"}, "unexpected argument 'stray'"},
+      {{"--model", "builtin", "--out"}, "option --out needs a value"},
       {{"--out", "a.glb"}, "missing --model"},
       {{"--model", "builtin"}, "missing --out"},
       {{"--model", "builtin", "--out", "a.obj"}, "unknown format"},
