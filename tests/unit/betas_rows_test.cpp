@@ -9,8 +9,12 @@
 #include "core/io/npz.h"
 #include "core/load/motion.h"
 
+#include "tests/unit/test_util.h"
+
 namespace smpl {
 namespace {
+
+using test::numbers;
 
 const std::string kReleased = std::string(SMPL_FIXTURE_DIR) + "/released/";
 
@@ -23,15 +27,6 @@ ArrayDict expected() {
 void expectNear(const std::vector<double>& got, const std::vector<double>& want) {
   ASSERT_EQ(got.size(), want.size());
   for (size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-12) << "beta " << i;
-}
-
-// A float64 Array of `shape` holding `data` (C order).
-Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
-  Array a;
-  a.shape = std::move(shape);
-  a.data = std::move(data);
-  a.dtype = "<f8";
-  return a;
 }
 
 TEST(BetasRows, IdenticalRowsGiveTheRowWithoutNote) {

@@ -8,8 +8,12 @@
 #include "core/io/npz.h"
 #include "core/joint_names.h"
 
+#include "tests/unit/test_util.h"
+
 namespace smpl {
 namespace {
+
+using test::numbers;
 
 const std::string kModels = std::string(SMPL_FIXTURE_DIR) + "/models/";
 
@@ -22,15 +26,6 @@ ArrayDict loadArrays(const std::string& file) {
 std::string errorOf(const ArrayDict& arrays) {
   Result<BodyModel> m = buildModel(arrays, "model.npz");
   return m.ok() ? std::string("(loaded)") : m.message();
-}
-
-// A float64 Array of `shape` holding `data` (C order).
-Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
-  Array a;
-  a.shape = std::move(shape);
-  a.data = std::move(data);
-  a.dtype = "<f8";
-  return a;
 }
 
 TEST(ModelLoader, DetectsFamiliesAndSplitsSmplxShapedirs) {

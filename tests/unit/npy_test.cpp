@@ -13,16 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/unit/test_util.h"
+
 namespace smpl {
 namespace {
 
-const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/npy_cases/";
+using test::readAll;
 
-std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << "missing fixture " << path;
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/npy_cases/";
 
 Result<Array> parse(const std::string& bytes, const std::string& ctx = "beta.npy") {
   return parseNpy(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), ctx);

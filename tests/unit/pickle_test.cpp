@@ -13,8 +13,12 @@
 
 #include "core/io/pickle/pickle.h"
 
+#include "tests/unit/test_util.h"
+
 namespace smpl {
 namespace {
+
+using test::readAll;
 
 // A byte string from a literal, embedded NULs included.
 template <size_t N>
@@ -23,12 +27,6 @@ std::string B(const char (&s)[N]) {
 }
 
 const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/pickle_cases/";
-
-std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << "missing fixture " << path;
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 Result<ArrayDict> parse(const std::string& bytes, const PickleLimits& limits = PickleLimits()) {
   return parsePickle(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "model.pkl", limits);

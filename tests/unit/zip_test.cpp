@@ -13,16 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/unit/test_util.h"
+
 namespace smpl {
 namespace {
 
-const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/npy_cases/";
+using test::readAll;
 
-std::string readAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << "missing fixture " << path;
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/npy_cases/";
 
 void put16(std::string& s, size_t at, uint32_t v) {
   s[at] = static_cast<char>(v & 0xff);

@@ -1,0 +1,33 @@
+// Helpers shared by the unit tests: fixture bytes and hand-made arrays.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/array.h"
+
+namespace smpl::test {
+
+// The whole file as bytes; a missing fixture is a test failure (not a skip).
+inline std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  EXPECT_TRUE(in.good()) << "missing fixture " << path;
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// A float64 Array of `shape` holding `data` (C order).
+inline Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
+  Array a;
+  a.shape = std::move(shape);
+  a.data = std::move(data);
+  a.dtype = "<f8";
+  return a;
+}
+
+}  // namespace smpl::test
