@@ -4,10 +4,12 @@
 // poses the joints with a pose of the C++ reference and compares the posed
 // vertices the page computes (three's skinning in the browser, correctives
 // by the driver) with the reference (1e-5 m); with the correctives toggled
-// off they must differ. Saves a screenshot.
+// off they must differ. Saves a screenshot. With --anim-asset (an animated
+// FBX and its sidecar): the clip list, play (time advances), scrub, and a
+// pose slider moving its joint's corrective weights.
 //
 //   node browser_test.mjs --chromium /usr/bin/chromium --asset body.glb \
-//        --reference PREFIX --screenshot out.png [--pose 3]
+//        --reference PREFIX --screenshot out.png [--pose 3] [--anim-asset walk.fbx]
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -21,6 +23,7 @@ const { values: args } = parseArgs({
   options: {
     chromium: { type: 'string', default: '/usr/bin/chromium' }, asset: { type: 'string' },
     reference: { type: 'string' }, screenshot: { type: 'string' }, pose: { type: 'string', default: '3' },
+    'anim-asset': { type: 'string' },
   },
 });
 for (const key of ['asset', 'reference', 'screenshot']) {
@@ -85,6 +88,12 @@ test(`viewer in headless Chromium: ${path.basename(args.asset)}`, async () => {
     fs.mkdirSync(path.dirname(args.screenshot), { recursive: true });
     await page.screenshot({ path: args.screenshot });
     console.log(`screenshot: ${args.screenshot}`);
+    if (args['anim-asset']) {
+      await checkAnimated(page, args['anim-asset']);
+      const second = args.screenshot.replace(/(\.png)?$/, '_anim.png');
+      await page.screenshot({ path: second });
+      console.log(`screenshot: ${second}`);
+    }
     const foreign = requests.filter((u) => !u.startsWith(base) && !u.startsWith('data:') && !u.startsWith('blob:'));
     assert.deepEqual(foreign, [], 'the viewer fetched something from outside the local server');
     assert.deepEqual(errors, [], 'page errors');
@@ -95,3 +104,47 @@ test(`viewer in headless Chromium: ${path.basename(args.asset)}`, async () => {
     server.close();
   }
 });
+
+/** Animated FBX + sidecar through the file input: clips, play, scrub, a pose slider. */
+async function checkAnimated(page, asset) {
+  const input = await page.$('#file');
+  await input.uploadFile(asset, asset + '.smpl.json');
+  const name = path.basename(asset);
+  await page.waitForFunction((n) => document.getElementById('info-file').textContent === n, { timeout: 60000 }, name);
+  const shown = await page.evaluate(() => ({
+    clips: document.getElementById('clip').options.length,
+    driven: document.getElementById('info-driven').textContent,
+    encoding: document.getElementById('info-encoding').textContent,
+  }));
+  console.log(`page shows for ${name}`, JSON.stringify(shown));
+  assert.equal(shown.clips, 1, 'one baked clip listed');
+  assert.ok(Number(shown.driven) > 0, 'the sidecar bound the correctives');
+  assert.equal(shown.encoding, 'unit');
+  await page.click('#play');
+  await page.waitForFunction(() => parseFloat(document.getElementById('time').textContent) > 0.05, { timeout: 30000 });
+  await page.click('#play');  // pause
+  await page.evaluate(() => {
+    const scrub = document.getElementById('scrub');
+    scrub.value = String(Number(scrub.max) / 2);
+    scrub.dispatchEvent(new Event('input'));
+  });
+  const scrubbed = await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r(
+    [parseFloat(document.getElementById('time').textContent), Number(document.getElementById('scrub').max)]))));
+  assert.ok(Math.abs(scrubbed[0] - scrubbed[1] / 2) < 2e-3, `scrub to the middle: time ${scrubbed[0]} of ${scrubbed[1]}`);
+  // Pose mode: bend the left knee with its slider; its correctives follow.
+  const knee = await page.evaluate(() => {
+    document.getElementById('pose-mode').click();
+    const slider = document.querySelector('#sliders input[data-joint="left_knee"]');
+    slider.value = '1.5';
+    slider.dispatchEvent(new Event('input'));
+    return new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => {
+      const c = window.smplViewer.correctives;
+      r(c.targetNames.filter((t) => t.startsWith('pose_left_knee_')));
+    })));
+  });
+  const f = await page.evaluate(() => Array.from(window.smplViewer.correctives.features.slice(27, 36)));
+  console.log('left_knee features after the slider', f.map((v) => v.toFixed(4)).join(' '));
+  assert.equal(knee.length, 9, 'left knee targets driven');
+  assert.ok(Math.abs(f[4] - (Math.cos(1.5) - 1)) < 1e-6 && Math.abs(f[5] + Math.sin(1.5)) < 1e-6,
+            'left_knee slider (x, 1.5 rad) gives R - I of a 1.5 rad turn about x');
+}

@@ -98,6 +98,7 @@ function show(root, metadata, animations, name) {
     state.restQuaternions[b.name] = b.quaternion.clone();
   }
   state.animations = animations;
+  $('pose-mode').checked = false;  // a new file starts in animation mode
   fillInfo(name, mesh, metadata, correctives);
   fillClips(animations);
   fillSliders();
