@@ -88,7 +88,7 @@ export function bindCorrectives(root, metadata, options = {}) {
   if (meshes.length === 0) throw new Error('smpl-correctives: no skinned mesh under the given root');
   const skeleton = meshes[0].skeleton;
   const joints = resolveJoints(skeleton, meta);
-  const layout = readLayout(meta, joints);
+  const layout = readLayout(meta, joints, meshes);
   const bound = bindTargets(meshes, layout);
   if (bound.meshes.length === 0) {
     throw new Error('smpl-correctives: no skinned mesh has a corrective morph target (pose_<joint>_<rc> or a basis target)');
@@ -99,7 +99,7 @@ export function bindCorrectives(root, metadata, options = {}) {
          'JOINTS_0/WEIGHTS_0 only (4): export with --max-influences 4 for an exact body');
   }
   const rig = buildRig(skeleton, joints);
-  return new Correctives(rig, layout, bound, joints.names);
+  return new Correctives(rig, layout, bound);
 }
 
 function isObject(v) {
@@ -150,21 +150,44 @@ function resolveJoints(skeleton, meta) {
   return { names: bones.map((b) => b.name), parent, bone: bones.map((_, i) => i) };
 }
 
-/** Corrective entries (feature, target, scale, offset, rectified) and the basis. */
-function readLayout(meta, joints) {
-  const entries = [];
+/**
+ * Corrective entries (feature, target, scale, offset, rectified) and the
+ * basis, from the metadata; without a corrective layout in the metadata, the
+ * meshes' targets named pose_<joint>_<r><c> with scale 1 and offset 0.
+ */
+function readLayout(meta, joints, meshes) {
+  const featureCount = 9 * Math.max(0, joints.names.length - 1);
   const list = meta && Array.isArray(meta.correctives) ? meta.correctives : null;
-  if (list) {
-    for (const e of list) {
-      if (!isObject(e) || !Number.isInteger(e.feature) || typeof e.target !== 'string') continue;
-      const scale = Number.isFinite(e.scale) ? e.scale : 1;
-      const offset = Number.isFinite(e.offset) ? e.offset : 0;
-      entries.push({ feature: e.feature, target: e.target, scale, offset, rectified: e.rectified === true });
+  const basis = readBasis(meta, joints);
+  const entries = list || basis ? entriesFromMetadata(list || []) : entriesFromNames(meshes, joints.names);
+  for (const e of entries) if (e.feature < 0 || e.feature >= featureCount) e.feature = -1;
+  return { entries, basis, featureCount };
+}
+
+function entriesFromMetadata(list) {
+  const entries = [];
+  for (const e of list) {
+    if (!isObject(e) || !Number.isInteger(e.feature) || typeof e.target !== 'string') continue;
+    const scale = Number.isFinite(e.scale) ? e.scale : 1;
+    const offset = Number.isFinite(e.offset) ? e.offset : 0;
+    entries.push({ feature: e.feature, target: e.target, scale, offset, rectified: e.rectified === true });
+  }
+  return entries;
+}
+
+function entriesFromNames(meshes, names) {
+  const seen = new Map();
+  for (const mesh of meshes) {
+    for (const key in mesh.morphTargetDictionary) {
+      const m = TARGET_NAME.exec(key.slice(Math.max(0, key.indexOf('pose_'))));
+      const k = m ? names.indexOf(m[1]) : -1;
+      if (k >= 1 && !seen.has(m[0])) {
+        seen.set(m[0], { feature: 9 * (k - 1) + 3 * Number(m[2]) + Number(m[3]), target: m[0], scale: 1, offset: 0,
+                         rectified: false });
+      }
     }
   }
-  const basis = readBasis(meta, joints);
-  const byName = list === null && basis === null;  // no metadata: names only
-  return { entries, basis, byName, featureCount: 9 * Math.max(0, joints.names.length - 1) };
+  return [...seen.values()];
 }
 
 function readBasis(meta, joints) {
@@ -190,22 +213,12 @@ function morphIndex(dictionary, name) {
 
 /** Per mesh: morph index of each entry and each basis target (-1 = absent). */
 function bindTargets(meshes, layout) {
-  if (layout.byName) {
-    const seen = new Map();
-    for (const mesh of meshes) {
-      for (const key in mesh.morphTargetDictionary) {
-        const m = TARGET_NAME.exec(key.slice(key.indexOf('pose_')));
-        if (m && !seen.has(m[0])) seen.set(m[0], m);
-      }
-    }
-    layout.pending = [...seen.values()];  // resolved against joint names in buildRig's caller
-  }
   const out = { meshes: [], entryIndex: [], basisIndex: [] };
   for (const mesh of meshes) {
     const dict = mesh.morphTargetDictionary;
     const entryIndex = Int32Array.from(layout.entries, (e) => morphIndex(dict, e.target));
     const basisIndex = Int32Array.from(layout.basis ? layout.basis.targets : [], (t) => morphIndex(dict, t));
-    if (entryIndex.some((i) => i >= 0) || basisIndex.some((i) => i >= 0) || layout.byName) {
+    if (entryIndex.some((i) => i >= 0) || basisIndex.some((i) => i >= 0)) {
       out.meshes.push(mesh);
       out.entryIndex.push(entryIndex);
       out.basisIndex.push(basisIndex);
@@ -289,42 +302,25 @@ function buildRig(skeleton, joints) {
 
 /** The object bindCorrectives returns; see index.d.ts. */
 class Correctives {
-  constructor(rig, layout, bound, jointNames) {
+  constructor(rig, layout, bound) {
+    const { entries, basis } = layout;
     this.rig = rig;
-    this._jointNames = jointNames;
     this.meshes = bound.meshes;
     this.enabled = true;
     this.features = new Float64Array(layout.featureCount);
+    this.targetNames = entries.map((e) => e.target).concat(basis ? basis.targets : []);
+    this.weights = new Float64Array(this.targetNames.length);
     this._q = new Float64Array(4);
     this._entryIndex = bound.entryIndex;
     this._basisIndex = bound.basisIndex;
-    this._bindNames(layout, rig);
-    this.weights = new Float64Array(this._feature.length + this._basisCount);
-    this.targetNames = this._names;
-  }
-
-  _bindNames(layout, rig) {
-    let entries = layout.entries;
-    if (layout.byName) {  // targets named pose_<joint>_<rc>, scale 1, offset 0
-      const names = this._jointNames || [];
-      entries = [];
-      for (const m of layout.pending) {
-        const k = names.indexOf(m[1]);
-        if (k >= 1) entries.push({ feature: 9 * (k - 1) + 3 * +m[2] + +m[3], target: m[0], scale: 1, offset: 0, rectified: false });
-      }
-      this._entryIndex = this.meshes.map((mesh) => Int32Array.from(entries, (e) => morphIndex(mesh.morphTargetDictionary, e.target)));
-    }
-    const valid = (e) => e.feature >= 0 && e.feature < layout.featureCount;
-    this._feature = Int32Array.from(entries, (e) => (valid(e) ? e.feature : -1));
+    this._feature = Int32Array.from(entries, (e) => e.feature);
     this._scale = Float64Array.from(entries, (e) => e.scale);
     this._offset = Float64Array.from(entries, (e) => e.offset);
     this._rectified = Uint8Array.from(entries, (e) => (e.rectified ? 1 : 0));
-    const b = layout.basis;
-    this._basisCount = b ? b.targets.length : 0;
-    this._basisMatrix = b ? b.matrix : new Float64Array(0);
-    this._basisScale = Float64Array.from(b ? b.scale : []);
-    this._basisOffset = Float64Array.from(b ? b.offset : []);
-    this._names = entries.map((e) => e.target).concat(b ? b.targets : []);
+    this._basisCount = basis ? basis.targets.length : 0;
+    this._basisMatrix = basis ? basis.matrix : new Float64Array(0);
+    this._basisScale = Float64Array.from(basis ? basis.scale : []);
+    this._basisOffset = Float64Array.from(basis ? basis.offset : []);
   }
 
   /** f (9(K-1)) from the bones' current local rotations. */
