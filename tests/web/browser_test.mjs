@@ -46,7 +46,8 @@ test(`viewer in headless Chromium: ${path.basename(args.asset)}`, async () => {
   const browser = await puppeteer.launch({
     executablePath: args.chromium, headless: true,
     // root in CI needs --no-sandbox; no GPU: WebGL through SwiftShader.
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--window-size=1280,800'],
+    args: ['--no-sandbox', '--disable-dev-shm-usage', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+           '--window-size=1280,800'],
   });
   try {
     const page = await browser.newPage();
