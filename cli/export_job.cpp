@@ -12,10 +12,9 @@
 #include "core/load/motion_fit.h"
 #include "cli/producer.h"
 #include "exporter/animation.h"
+#include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
-#include "exporter/morph_scales.h"
-#include "exporter/validate_asset.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -58,25 +57,32 @@ void betasFromMotion(const BodyModel& model, const std::vector<Motion>& motions,
   o->betas.assign(motions[0].betas.begin(), motions[0].betas.begin() + n);
 }
 
-Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                   Asset* asset, ExportReport* report) {
+// What exportAsset bakes: each motion with the job's animation options and, on
+// a terminal, a progress bar.
+std::vector<MotionInput> motionInputs(const Settings& s, const ExportJob& job, const std::vector<Motion>& motions) {
+  std::vector<MotionInput> inputs;
+  for (size_t i = 0; i < motions.size(); ++i) {
+    MotionInput in{&motions[i], job.motions[i], s.animation, nullptr};
+    if (job.progress) in.progress = [name = motions[i].name](double f) { drawProgress(name, f); };
+    inputs.push_back(std::move(in));
+  }
+  return inputs;
+}
+
+// The motions' notes and frame counts for the summary.
+void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
+                   const Asset& asset, ExportReport* report) {
   for (size_t i = 0; i < motions.size(); ++i) {
     const Motion& m = motions[i];
     for (const std::string& note : m.notes)  // a betas note matters only where those betas are used
       if (note.rfind("betas:", 0) != 0 || (!s.betas_given && i == 0)) report->notes.push_back(m.name + ": " + note);
-    Progress progress;
-    if (job.progress) progress = [&](double f) { drawProgress(m.name, f); };
-    Result<AnimationClip> clip = bakeAnimation(model, *asset, m, s.animation, job.motions[i], progress);
-    if (!clip) return clip.error();
     Result<MotionMapping> mapping = mapMotion(model, m, job.motions[i]);
     if (mapping && !mapping->dropped.empty())
       report->notes.push_back(m.name + ": " + std::to_string(mapping->dropped.size()) + " " +
                               modelKindName(m.layout) + " joints not in the model were dropped (" +
                               mapping->dropped.front() + ", ...)");
-    report->frames += static_cast<int>(clip->times.size());
-    asset->animations.push_back(std::move(*clip));
+    if (i < asset.animations.size()) report->frames += static_cast<int>(asset.animations[i].times.size());
   }
-  return Status();
 }
 
 // The output and its sidecar go together; the sidecar (what produced the
@@ -114,17 +120,14 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
   if (!s.betas_given) betasFromMotion(model, *motions, &options);
-  if (options.encoding == CorrectiveEncoding::Auto)  // baked weights must survive importers that clamp
-    options.encoding = motions->empty() ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
-  Result<Asset> asset = buildAsset(model, options);
+  // Baked weights must survive importers that clamp (exportAsset resolves Auto the same way).
+  options.encoding = resolveEncoding(options.encoding, motions->size());
+  options.quantize_morphs = s.writer_options.quantize_morphs;
+  // The finished asset: baked, quantisation folded, validated; the writer only translates it.
+  Result<Asset> asset = exportAsset(model, options, motionInputs(s, job, *motions));
   if (!asset) return fail(failure, kExitExport, "exporting", job.out, asset.message());
   ExportReport report;
-  if (Status st = bakeMotions(model, s, job, *motions, &*asset, &report); !st)
-    return fail(failure, kExitExport, "exporting", job.out, st.message());
-  // Quantized targets carry their scale in the weight mapping: fold it here so
-  // the sidecar and the file agree.
-  if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
-  if (Status st = validateAsset(*asset); !st) return fail(failure, kExitExport, "exporting", job.out, st.message());
+  reportMotions(model, s, job, *motions, *asset, &report);
   Result<std::string> producer = producerHashFor(s, job);
   if (!producer) return fail(failure, kExitLoad, "loading", s.model, producer.message());
   Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
