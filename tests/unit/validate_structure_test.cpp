@@ -5,6 +5,7 @@
 #include "exporter/validate_structure.h"
 
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include <functional>
 
@@ -132,8 +133,18 @@ TEST(ValidateStructure, ClipWithoutMorphTargetsIsAccepted) {
   ASSERT_EQ(a.animations[0].morph_weights.rows(), 3);
   ASSERT_EQ(a.animations[0].morph_weights.cols(), 0);
   EXPECT_TRUE(validateAsset(a).ok()) << validateAsset(a).message();
-  EXPECT_TRUE(gltfWriter().serialize(a, WriterOptions()).ok());
+  Result<std::string> glb = gltfWriter().serialize(a, WriterOptions());
+  ASSERT_TRUE(glb.ok()) << glb.message();
   EXPECT_TRUE(fbxWriter().serialize(a, WriterOptions()).ok());
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(glb->data()),
+                                          unsigned(glb->size())))
+      << err;
+  ASSERT_EQ(m.animations.size(), 1u);
+  EXPECT_EQ(m.animations[0].channels.size(), 11u);  // 10 rotations + the root translation
+  for (const tinygltf::AnimationChannel& c : m.animations[0].channels) EXPECT_NE(c.target_path, "weights");
 }
 
 }  // namespace
