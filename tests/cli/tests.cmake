@@ -18,3 +18,9 @@ add_test(NAME cli.readme_samples_detect_breakage
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/readme_samples_breakage_test.sh ${SMPL_SYSTEM_PYTHON}
           ${PROJECT_SOURCE_DIR} $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.readme_samples cli.readme_samples_detect_breakage PROPERTIES LABELS cli)
+
+# The README's option table and docs/cli.md agree with --help (cli/options.cpp).
+add_test(NAME cli.docs
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check-cli-docs.py $<TARGET_FILE:smpl-export>
+  ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.docs PROPERTIES LABELS cli)
