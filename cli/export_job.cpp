@@ -10,6 +10,7 @@
 #include "core/io/printable.h"
 #include "core/load/motion.h"
 #include "core/load/motion_fit.h"
+#include "cli/output_guard.h"
 #include "cli/producer.h"
 #include "exporter/animation.h"
 #include "exporter/export_asset.h"
@@ -117,9 +118,12 @@ void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& j
 
 // The output and its sidecar go together; the sidecar (what produced the
 // output) is renamed last, so it is the commit record (file_io.h).
-Status writeOutputs(const std::string& out, const std::string& bytes, const std::string& sidecar) {
-  return writeFilesTogether({FileContent{out, bytes.data(), bytes.size()},
-                             FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()}});
+Status writeOutputs(const std::string& out, const Writer::Files& files, const std::string& buffer_path,
+                    const std::string& sidecar) {
+  std::vector<FileContent> contents = {FileContent{out, files.bytes.data(), files.bytes.size()}};
+  if (!buffer_path.empty()) contents.push_back(FileContent{buffer_path, files.buffer.data(), files.buffer.size()});
+  contents.push_back(FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()});
+  return writeFilesTogether(contents);
 }
 
 Result<std::string> producerHashFor(const Settings& s, const ExportJob& job) {
@@ -144,7 +148,8 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(ErrorKind::Usage, "in", "arguments", "no writer for " + job.out);
   if (job.producer_hash.empty())  // a batch (planBatch) cleans all its outputs' temporaries at once
-    removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json"});
+    removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json",
+                                        baseName(gltfBufferPath(s, job.out))});
   Result<std::vector<Motion>> motions = loadMotions(model, s, job);
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
@@ -160,12 +165,15 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   reportMotions(model, s, job, *motions, *asset, &report);
   Result<std::string> producer = producerHashFor(s, job);
   if (!producer) return fail(ErrorKind::Load, "loading", s.model, producer.message());
-  Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
-  if (!bytes) return exportFailure(job.out, bytes.error());
-  if (Status st = writeOutputs(job.out, *bytes, sidecarJson(*asset, *producer)); !st)
+  WriterOptions writer_options = s.writer_options;
+  const std::string buffer_path = gltfBufferPath(s, job.out);
+  writer_options.buffer_uri = baseName(buffer_path);
+  Result<Writer::Files> files = writer->serializeFiles(*asset, writer_options);
+  if (!files) return exportFailure(job.out, files.error());
+  if (Status st = writeOutputs(job.out, *files, buffer_path, sidecarJson(*asset, *producer)); !st)
     return fail(ErrorKind::Write, "saving", job.out, st.message());
   report.options = options;
-  report.bytes = bytes->size();
+  report.bytes = files->bytes.size() + files->buffer.size();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
   report.joints = static_cast<int>(asset->skeleton.names.size());

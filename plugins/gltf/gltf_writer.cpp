@@ -10,6 +10,7 @@
 
 #include <tiny_gltf.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -505,28 +506,65 @@ Result<std::string> serializeJson(tinygltf::Model& model, bool binary) {
   return stream.str();
 }
 
+// RFC 3986 percent-encoding of a file name for a glTF "uri".
+std::string uriEscape(const std::string& name) {
+  static const char hex[] = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : name) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') out += static_cast<char>(c);
+    else out += std::string("%") + hex[c >> 4] + hex[c & 15];
+  }
+  return out;
+}
+
+// A pretty-printed .gltf whose (empty, placeholder-named) buffer becomes the
+// external file `uri` of `size` bytes: tinygltf's stream writer can only
+// embed, so its buffer entry is rewritten in place.
+Status pointBufferAt(std::string& json, const std::string& uri, size_t size) {
+  const std::string data_uri = "\"uri\": \"data:application/octet-stream;base64,\"";
+  const size_t name = json.find(kBufferPlaceholder);
+  const size_t length = name == std::string::npos ? name : json.rfind("\"byteLength\": 0,", name);
+  const size_t data = name == std::string::npos ? name : json.find(data_uri, name);
+  if (length == std::string::npos || data == std::string::npos)
+    return makeError("glTF writer: the buffer entry was not found in the serialised JSON");
+  json.replace(data, data_uri.size(), "\"uri\": \"" + uriEscape(uri) + "\"");
+  json.replace(name, std::strlen(kBufferPlaceholder), "\"" + uriEscape(uri) + "\"");
+  json.replace(length, std::strlen("\"byteLength\": 0,"), "\"byteLength\": " + std::to_string(size) + ",");
+  return Status();
+}
+
 class GltfWriter : public Writer {
  public:
   const char* name() const override { return "glTF"; }
 
   Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
+    WriterOptions embedded = options;
+    embedded.buffer_uri.clear();
+    Result<Files> files = serializeFiles(asset, embedded);
+    if (!files) return files.error();
+    return std::move(files->bytes);
+  }
+
+  Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const override {
     GltfBuild b;
     Status st = buildModel(asset, options, b);
     if (!st) return st.error();
     const std::string byte_length = "\"byteLength\":" + std::to_string(b.bin.size());
-    if (!options.binary) {  // .gltf: tinygltf embeds the buffer as a data URI
+    const bool external = !options.binary && !options.buffer_uri.empty();
+    if (!options.binary && !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
       b.model.buffers[0].name.clear();
       b.model.buffers[0].data.assign(b.bin.begin(), b.bin.end());
       std::string().swap(b.bin);
     }
     Result<std::string> json = serializeJson(b.model, options.binary);
-    if (!json) return json;
+    if (!json) return json.error();
     st = spliceMetadata(*json, metadataJson(asset));
     if (st && options.binary)
       st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder), byte_length);
+    if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, b.bin.size());
     if (!st) return st.error();
-    if (!options.binary) return json;
-    return assembleGlb(std::move(*json), b.bin);
+    if (options.binary) return Files{assembleGlb(std::move(*json), b.bin), std::string()};
+    return Files{std::move(*json), external ? std::move(b.bin) : std::string()};
   }
 };
 
