@@ -114,8 +114,12 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
   if (!s.betas_given) betasFromMotion(model, *motions, &options);
-  if (options.encoding == CorrectiveEncoding::Auto)  // baked weights must survive importers that clamp
-    options.encoding = motions->empty() ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
+  // Baked weights must survive importers that clamp to [0, 1] and ones that
+  // ignore default weights: split (a basis has no split form: unit).
+  if (options.encoding == CorrectiveEncoding::Auto)
+    options.encoding = motions->empty()               ? CorrectiveEncoding::Signed
+                       : options.corrective_basis > 0 ? CorrectiveEncoding::Unit
+                                                      : CorrectiveEncoding::Split;
   Result<Asset> asset = buildAsset(model, options);
   if (!asset) return fail(failure, kExitExport, "exporting", job.out, asset.message());
   ExportReport report;
@@ -124,6 +128,8 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   // Quantized targets carry their scale in the weight mapping: fold it here so
   // the sidecar and the file agree.
   if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
+  if (s.writer_options.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
+    report.notes.push_back("--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
   if (Status st = validateAsset(*asset); !st) return fail(failure, kExitExport, "exporting", job.out, st.message());
   Result<std::string> producer = producerHashFor(s, job);
   if (!producer) return fail(failure, kExitLoad, "loading", s.model, producer.message());

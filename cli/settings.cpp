@@ -125,7 +125,17 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   else if (name == "--betas-file") s->betas_file = value;
   else if (name == "--uv") e.uv_obj = value;
   else if (name == "--name") e.name = value;
-  else if (name == "--max-influences") return intInto(&e.max_influences);
+  else if (name == "--max-influences") {
+    if (value == "all") return e.max_influences = kAllInfluences, Status();
+    Result<int> v = parseInt(value, name);
+    if (!v) return v.error();
+    if (*v < 1) return makeError("--max-influences: expected a count >= 1 or 'all', got '" + value + "'");
+    e.max_influences = *v;
+  } else if (name == "--skin-weights") {
+    if (value != "truncated" && value != "optimized")
+      return makeError("--skin-weights: expected 'truncated' or 'optimized', got '" + value + "'");
+    e.skin_weights = value == "truncated" ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized;
+  }
   else if (name == "--shape-keys") return intInto(&e.shape_keys);
   else if (name == "--expression-keys") return intInto(&e.expression_keys);
   else if (name == "--betas" || name == "--expression") {
@@ -143,8 +153,11 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--corrective-basis") {
     return intInto(&e.corrective_basis);
   } else if (name == "--corrective-weights") {
-    if (value != "signed" && value != "unit") return makeError("--corrective-weights: expected 'signed' or 'unit', got '" + value + "'");
-    e.encoding = value == "unit" ? CorrectiveEncoding::Unit : CorrectiveEncoding::Signed;
+    if (value != "signed" && value != "unit" && value != "split")
+      return makeError("--corrective-weights: expected 'signed', 'unit' or 'split', got '" + value + "'");
+    e.encoding = value == "unit"    ? CorrectiveEncoding::Unit
+                 : value == "split" ? CorrectiveEncoding::Split
+                                    : CorrectiveEncoding::Signed;
   } else if (name == "--fbx-version") {
     if (value != "7400" && value != "7500") return makeError("--fbx-version: expected 7400 or 7500, got '" + value + "'");
     s->writer_options.fbx_version = value == "7400" ? 7400 : 7500;
@@ -157,6 +170,22 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   return Status();
 }
 
+// Size options that would otherwise be silently ignored together (issue 13 item 6).
+Status checkSizeOptionPairs(const Settings& s, const std::vector<std::string>& given) {
+  auto has = [&](const char* o) { return std::find(given.begin(), given.end(), o) != given.end(); };
+  const ExportOptions& e = s.export_options;
+  if (has("--corrective-weights") && !e.correctives)
+    return makeError("--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
+  if (has("--quantize-morphs") && !e.correctives)
+    return makeError("--quantize-morphs quantizes corrective targets; with --correctives none there are none");
+  if (has("--corrective-epsilon") && !e.correctives && e.shape_keys == 0 && e.expression_keys == 0)
+    return makeError("--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
+                     "--expression-keys there are none");
+  if (has("--corrective-basis") && e.encoding == CorrectiveEncoding::Split)
+    return makeError("--corrective-basis conflicts with --corrective-weights split (basis weights are signed or unit)");
+  return Status();
+}
+
 Status checkConflicts(const Settings& s, const std::vector<std::string>& given) {
   auto has = [&](const char* o) { return std::find(given.begin(), given.end(), o) != given.end(); };
   if (s.model.empty()) return makeError("missing --model PATH (use --model builtin for the demo body)");
@@ -164,6 +193,7 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
   if (has("--betas-from-motion") && s.betas_given) return makeError("--betas-from-motion conflicts with --betas/--betas-file");
   if (has("--corrective-basis") && !s.export_options.correctives)
     return makeError("--corrective-basis conflicts with --correctives none");
+  if (Status st = checkSizeOptionPairs(s, given); !st) return st;
   const bool batch = !s.motion_dir.empty() || !s.out_dir.empty();
   const bool animated = !s.motions.empty() || batch;
   for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion", "--source-fps",
@@ -281,13 +311,21 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
   --betas-file FILE      betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas:
                          identical rows -> that row, else their mean (a note gives the deviation)
   --expression v,v,...   SMPL-X expression coefficients
-  --max-influences N     skin influences per vertex, 1..8 (default 4; >4 writes JOINTS_1/WEIGHTS_1)
+  --max-influences N|all skin influences per vertex, 1..K (the model's joints) or all (default 4); glTF
+                         writes ceil(N/4) JOINTS_n/WEIGHTS_n sets (engines that read only one set:
+                         keep 4), FBX has no limit; all: as many as the model's vertices use
+  --skin-weights truncated|optimized
+                         truncated: the N largest weights, renormalised; optimized (default): the same
+                         or greedily chosen joints with weights fitted to the unpruned model over 48
+                         training poses (lower error on held-out poses; the summary shows both)
   --correctives all|none pose-corrective morph targets (default all)
-  --corrective-weights signed|unit
+  --corrective-weights signed|unit|split
                          signed: weight = pose feature f, in [-2, 1] (default without --motion);
                          unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1],
-                         for engines/importers that clamp weights (default with --motion: Blender
-                         clamps animated weights); the mapping is in the metadata
+                         relies on the file's default weights at rest; split (default with --motion,
+                         unit with --corrective-basis): rectified targets (diagonal -2P with weight
+                         -f/2; off-diagonal _pos/_neg with max(f,0), max(-f,0)), in [0, 1] and exact
+                         with every weight at zero; the mapping is in the metadata
   --corrective-basis K   replace the corrective targets by K principal components of posedirs
                          (weights = C f; C in the metadata; runtime scripts apply it)
   --corrective-epsilon M glTF: drop morph deltas up to M metres, write sparse accessors

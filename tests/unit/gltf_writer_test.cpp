@@ -98,7 +98,7 @@ Asset makeAsset(const AssetSpec& spec) {
         {"pose_joint_1_0" + std::to_string(t), randomMatrix(rng, v_count, 3, -0.1f, 0.1f)});
   a.metadata = {"smpl",          "synthetic", "0.1.0",
                 {0.5, -1.25},    {},          {{0, "pose_joint_1_00", 1.0, 0.0}},
-                spec.influences, "meters",    "+Y",         {}};
+                spec.influences, "meters",    "+Y",         {}, "truncated", "signed"};
   if (spec.frames > 0) fillAnimation(a, rng, spec.frames);
   return a;
 }
@@ -393,6 +393,17 @@ TEST(GltfWriter, GlbEightInfluencesWithoutUvs) {
   const Loaded m = writeAndLoad(a, true, "m8_nouv.glb");
   expectAsset(m, a);
   EXPECT_EQ(onlyPrimitive(m).attributes.count("JOINTS_1"), 1u);
+}
+
+TEST(GltfWriter, GlbAllTwentyFourInfluencesWritesSixSets) {  // --max-influences all on a 24-joint body
+  AssetSpec spec;
+  spec.joints = 24;
+  spec.influences = 24;
+  const Asset a = makeAsset(spec);
+  const Loaded m = writeAndLoad(a, true, "m24.glb");
+  expectAsset(m, a);
+  for (int s = 0; s < 6; ++s) EXPECT_EQ(onlyPrimitive(m).attributes.count("WEIGHTS_" + std::to_string(s)), 1u) << s;
+  EXPECT_EQ(onlyPrimitive(m).attributes.count("JOINTS_6"), 0u);
 }
 
 TEST(GltfWriter, GlbFiveInfluencesPadsSecondSet) {
