@@ -24,3 +24,9 @@ foreach(method optimized truncated)
   set_tests_properties(cli.skin_fit.${method}.export PROPERTIES LABELS cli FIXTURES_SETUP skin_fit_${method})
   set_tests_properties(cli.skin_fit.${method} PROPERTIES LABELS cli FIXTURES_REQUIRED skin_fit_${method})
 endforeach()
+
+# The README's option table and docs/cli.md agree with --help (cli/options.cpp).
+add_test(NAME cli.docs
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check-cli-docs.py $<TARGET_FILE:smpl-export>
+  ${PROJECT_SOURCE_DIR})
+set_tests_properties(cli.docs PROPERTIES LABELS cli)
