@@ -24,7 +24,8 @@ namespace {
 namespace sc = smpl_correctives;
 
 const smpl::BodyModel& model() {
-  static smpl::BodyModel m = *smpl::loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
+  static smpl::BodyModel m =
+      *smpl::loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   return m;
 }
 
@@ -41,13 +42,16 @@ nlohmann::json splitMetadata() {
   m["up_axis"] = "+Y";
   m["corrective_encoding"] = "split";
   for (int n = 0; n < 9 * (int(model().parents.size()) - 1); ++n) {
-    std::string base = "pose_" + model().joint_names[size_t(n / 9 + 1)] + "_" + std::to_string((n % 9) / 3) +
-                       std::to_string(n % 3);
+    std::string base = "pose_" + model().joint_names[size_t(n / 9 + 1)] + "_" +
+                       std::to_string((n % 9) / 3) + std::to_string(n % 3);
     if ((n % 9) % 4 == 0) {
-      m["correctives"].push_back({{"feature", n}, {"target", base}, {"scale", -0.5}, {"offset", 0}});
+      m["correctives"].push_back(
+          {{"feature", n}, {"target", base}, {"scale", -0.5}, {"offset", 0}});
     } else {
-      m["correctives"].push_back({{"feature", n}, {"target", base + "_pos"}, {"scale", 1}, {"rectified", true}});
-      m["correctives"].push_back({{"feature", n}, {"target", base + "_neg"}, {"scale", -1}, {"rectified", true}});
+      m["correctives"].push_back(
+          {{"feature", n}, {"target", base + "_pos"}, {"scale", 1}, {"rectified", true}});
+      m["correctives"].push_back(
+          {{"feature", n}, {"target", base + "_neg"}, {"scale", -1}, {"rectified", true}});
     }
   }
   return m;
@@ -71,7 +75,8 @@ struct Rig {
       ref.Parents.push_back(model().parents[k] + 1);  // bone = joint + 1; pelvis under root
     }
     Eigen::VectorXd aa = smpl::samplePoses(ref.GetNum(), 1, 17, 2.0)[0];
-    for (int b = 0; b < ref.GetNum(); ++b) orientation.push_back(smpl::rodrigues(aa.segment<3>(3 * b)));
+    for (int b = 0; b < ref.GetNum(); ++b)
+      orientation.push_back(smpl::rodrigues(aa.segment<3>(3 * b)));
     ref.RefPose = localPose({});
   }
 
@@ -81,11 +86,14 @@ struct Rig {
     std::vector<Eigen::Matrix3d> component;
     std::vector<FTransform> local;
     for (int b = 0; b < ref.GetNum(); ++b) {
-      Eigen::Matrix3d g = b == 0 || world.empty() ? Eigen::Matrix3d::Identity()
-                                                  : Eigen::Matrix3d(world[size_t(b - 1)].topLeftCorner<3, 3>());
+      Eigen::Matrix3d g = b == 0 || world.empty()
+                              ? Eigen::Matrix3d::Identity()
+                              : Eigen::Matrix3d(world[size_t(b - 1)].topLeftCorner<3, 3>());
       component.push_back(axes * g * axes.transpose() * orientation[size_t(b)]);
       int p = ref.Parents[size_t(b)];
-      local.emplace_back(toQuat(p < 0 ? component.back() : Eigen::Matrix3d(component[size_t(p)].transpose() * component.back())));
+      local.emplace_back(
+          toQuat(p < 0 ? component.back()
+                       : Eigen::Matrix3d(component[size_t(p)].transpose() * component.back())));
     }
     return local;
   }
@@ -94,7 +102,8 @@ struct Rig {
 void runNode(FAnimNode_SmplCorrectives& node, Rig& rig, uint64_t seed, FPoseContext* out,
              Eigen::VectorXd* features) {
   smpl::ForwardInput input;
-  input.rotations = smpl::rotationsFromAxisAngle(smpl::samplePoses(int(model().parents.size()), 1, seed)[0]);
+  input.rotations =
+      smpl::rotationsFromAxisAngle(smpl::samplePoses(int(model().parents.size()), 1, seed)[0]);
   smpl::ForwardResult ref = *smpl::forward(model(), input);
   *features = ref.pose_features;
   node.Source.Produce = [&](FPoseContext& pose) {
@@ -112,12 +121,14 @@ void initialise(FAnimNode_SmplCorrectives& node, Rig& rig) {
   node.CacheBones_AnyThread(cache);
 }
 
-void expectCurves(const nlohmann::json& meta, const FPoseContext& out, const Eigen::VectorXd& f, float alpha) {
+void expectCurves(const nlohmann::json& meta, const FPoseContext& out, const Eigen::VectorXd& f,
+                  float alpha) {
   ASSERT_EQ(out.Curve.Values.size(), meta["correctives"].size());
   for (const nlohmann::json& e : meta["correctives"]) {
     double w = e["scale"].get<double>() * f(e["feature"].get<int>());
     if (e.value("rectified", false)) w = std::max(0.0, w);
-    EXPECT_NEAR(out.Curve.Values.at(e["target"].get<std::string>()), alpha * w, 1e-6) << e["target"];
+    EXPECT_NEAR(out.Curve.Values.at(e["target"].get<std::string>()), alpha * w, 1e-6)
+        << e["target"];
   }
 }
 
@@ -135,7 +146,8 @@ TEST(UnrealStandIn, NodeWritesTheCorrectiveCurves) {
   }
   FNodeDebugData debug;
   node.GatherDebugData(debug);
-  EXPECT_EQ(debug.Items.at(0), "SmplCorrectives(24 joints, " + std::to_string(meta["correctives"].size()) + " curves)");
+  EXPECT_EQ(debug.Items.at(0), "SmplCorrectives(24 joints, " +
+                                   std::to_string(meta["correctives"].size()) + " curves)");
 }
 
 TEST(UnrealStandIn, MetadataFromFileAndAlpha) {
@@ -191,7 +203,8 @@ TEST(UnrealStandIn, ProblemsAreReportedAndNothingIsWritten) {
   initialise(bad, rig);
   runNode(bad, rig, 1, &out, &f);
   EXPECT_TRUE(out.Curve.Values.empty());
-  EXPECT_NE(StandInLog().back().find("metadata: 'parents'[0] must be -1"), std::string::npos) << StandInLog().back();
+  EXPECT_NE(StandInLog().back().find("metadata: 'parents'[0] must be -1"), std::string::npos)
+      << StandInLog().back();
 }
 
 TEST(UnrealStandIn, EditorNodeDescribesItself) {

@@ -44,21 +44,24 @@ struct StandInSkeleton {
         joint_of_bone.push_back(k);
       }
     Eigen::VectorXd aa = smpl::samplePoses(int(names.size()), 1, 21, 2.0)[0];
-    for (size_t b = 0; b < names.size(); ++b) orientation.push_back(smpl::rodrigues(aa.segment<3>(Eigen::Index(3 * b))));
+    for (size_t b = 0; b < names.size(); ++b)
+      orientation.push_back(smpl::rodrigues(aa.segment<3>(Eigen::Index(3 * b))));
   }
 
   // Component-space rotation of bone b as Unreal's FQuat would give it.
   sc::Mat3 rotation(int b, const std::vector<Eigen::Matrix4d>& world) const {
     int k = joint_of_bone[size_t(b)];
-    Eigen::Matrix3d g = k < 0 || world.empty() ? Eigen::Matrix3d::Identity()
-                                               : Eigen::Matrix3d(world[size_t(k)].topLeftCorner<3, 3>());
+    Eigen::Matrix3d g = k < 0 || world.empty()
+                            ? Eigen::Matrix3d::Identity()
+                            : Eigen::Matrix3d(world[size_t(k)].topLeftCorner<3, 3>());
     Eigen::Quaterniond q(Eigen::Matrix3d(axes * g * axes.transpose() * orientation[size_t(b)]));
     return sc::fromQuaternion(q.x(), q.y(), q.z(), q.w());
   }
 };
 
 const smpl::BodyModel& model() {
-  static smpl::BodyModel m = *smpl::loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
+  static smpl::BodyModel m =
+      *smpl::loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   return m;
 }
 
@@ -78,25 +81,30 @@ sc::Layout splitLayout() {
 }
 
 // Curves written for one reference pose (local rotation of `rigid` forced to I).
-std::map<std::string, double> curvesFor(const StandInSkeleton& skel, const sc::Layout& layout, uint64_t seed,
-                                        const std::string& rigid, Eigen::VectorXd* features) {
+std::map<std::string, double> curvesFor(const StandInSkeleton& skel, const sc::Layout& layout,
+                                        uint64_t seed, const std::string& rigid,
+                                        Eigen::VectorXd* features) {
   smpl::ForwardInput input;
-  input.rotations = smpl::rotationsFromAxisAngle(smpl::samplePoses(int(model().parents.size()), 1, seed)[0]);
+  input.rotations =
+      smpl::rotationsFromAxisAngle(smpl::samplePoses(int(model().parents.size()), 1, seed)[0]);
   for (size_t k = 0; k < input.rotations.size(); ++k)
     if (model().joint_names[k] == rigid) input.rotations[k] = Eigen::Matrix3d::Identity();
   smpl::ForwardResult ref = *smpl::forward(model(), input);
   *features = ref.pose_features;
   sc::BoneMap bones = sc::matchBones(layout, skel.names);
   sc::Evaluator ev;
-  EXPECT_EQ(sc::bindSkeleton(&ev, layout, sc::unrealFbxAxes(), bones, [&](int b) { return skel.rotation(b, {}); }), "");
+  EXPECT_EQ(sc::bindSkeleton(&ev, layout, sc::unrealFbxAxes(), bones,
+                             [&](int b) { return skel.rotation(b, {}); }),
+            "");
   std::map<std::string, double> curves;
   std::vector<sc::Mat3> scratch;
-  sc::driveFrame(ev, bones, [&](int b) { return skel.rotation(b, ref.world); },
-                 [&](size_t i, const std::string& name, double w) {
-                   EXPECT_EQ(name, ev.targetName(i));
-                   curves[name] = w;
-                 },
-                 &scratch);
+  sc::driveFrame(
+      ev, bones, [&](int b) { return skel.rotation(b, ref.world); },
+      [&](size_t i, const std::string& name, double w) {
+        EXPECT_EQ(name, ev.targetName(i));
+        curves[name] = w;
+      },
+      &scratch);
   return curves;
 }
 
@@ -133,11 +141,13 @@ TEST(RuntimeAdapter, MatchesBonesByName) {
   sc::Layout layout;
   layout.joint_names = {"pelvis", "left_eye_smplhf", "jaw"};
   layout.parents = {-1, 0, 0};
-  sc::BoneMap map = sc::matchBones(layout, {"root", "Armature|pelvis", "left_eye", "jaw_end", "body:jaw"});
+  sc::BoneMap map =
+      sc::matchBones(layout, {"root", "Armature|pelvis", "left_eye", "jaw_end", "body:jaw"});
   EXPECT_EQ(map.bone_of_joint, (std::vector<int>{1, 2, 4}));
   EXPECT_EQ(map.found, 3);
   map = sc::matchBones(layout, {"left_eye_smplhf", "left_eye"});
-  EXPECT_EQ(map.bone_of_joint, (std::vector<int>{-1, 0, -1}));  // the exact name wins over the alias
+  EXPECT_EQ(map.bone_of_joint,
+            (std::vector<int>{-1, 0, -1}));  // the exact name wins over the alias
   sc::Evaluator ev;
   EXPECT_EQ(sc::bindSkeleton(&ev, layout, sc::identity(), sc::matchBones(layout, {"root"}),
                              [](int) { return sc::identity(); }),

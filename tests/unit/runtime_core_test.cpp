@@ -48,8 +48,9 @@ struct EngineSkeleton {
   std::vector<sc::Mat3> world(const std::vector<Eigen::Matrix4d>& model_world) const {
     std::vector<sc::Mat3> out;
     for (size_t k = 0; k < bone_orientation.size(); ++k) {
-      Eigen::Matrix3d g = model_world.empty() ? Eigen::Matrix3d::Identity()
-                                              : Eigen::Matrix3d(model_world[k].topLeftCorner<3, 3>());
+      Eigen::Matrix3d g = model_world.empty()
+                              ? Eigen::Matrix3d::Identity()
+                              : Eigen::Matrix3d(model_world[k].topLeftCorner<3, 3>());
       out.push_back(toMat3(100.0 * axes * g * axes.inverse() * bone_orientation[k]));
     }
     return out;
@@ -60,7 +61,8 @@ EngineSkeleton unrealSkeleton(int joints, uint64_t seed) {
   EngineSkeleton s;
   s.axes = toEigen(sc::unrealFbxAxes());
   Eigen::VectorXd aa = smpl::samplePoses(joints, 1, seed, 2.0)[0];
-  for (int k = 0; k < joints; ++k) s.bone_orientation.push_back(smpl::rodrigues(aa.segment<3>(3 * k)));
+  for (int k = 0; k < joints; ++k)
+    s.bone_orientation.push_back(smpl::rodrigues(aa.segment<3>(3 * k)));
   return s;
 }
 
@@ -68,7 +70,8 @@ sc::Layout signedLayout(const BodyModel& model) {
   sc::Layout layout;
   layout.joint_names = model.joint_names;
   layout.parents = model.parents;
-  for (int n = 0; n < layout.featureCount(); ++n) layout.correctives.push_back({"t" + std::to_string(n), n});
+  for (int n = 0; n < layout.featureCount(); ++n)
+    layout.correctives.push_back({"t" + std::to_string(n), n});
   return layout;
 }
 
@@ -79,7 +82,8 @@ struct PosedCase {
 
 PosedCase posedCase(const BodyModel& model, const EngineSkeleton& engine, uint64_t seed) {
   smpl::ForwardInput input;
-  input.rotations = smpl::rotationsFromAxisAngle(smpl::samplePoses(int(model.parents.size()), 1, seed)[0]);
+  input.rotations =
+      smpl::rotationsFromAxisAngle(smpl::samplePoses(int(model.parents.size()), 1, seed)[0]);
   smpl::Result<smpl::ForwardResult> result = smpl::forward(model, input);
   EXPECT_TRUE(result.ok());
   return {*result, engine.world({}), engine.world(result->world)};
@@ -87,14 +91,15 @@ PosedCase posedCase(const BodyModel& model, const EngineSkeleton& engine, uint64
 
 // The morph target set of an encoding: base mesh, deltas (3N each), metadata entries.
 struct Targets {
-  Eigen::MatrixXd base;             // N x 3
+  Eigen::MatrixXd base;                // N x 3
   std::vector<Eigen::VectorXd> delta;  // 3N per target, in layout.correctives order
   sc::Layout layout;
 };
 
 bool diagonal(int feature) { return (feature % 9) % 4 == 0; }
 
-Targets encode(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const std::string& encoding) {
+Targets encode(const BodyModel& model, const Eigen::MatrixXd& v_shaped,
+               const std::string& encoding) {
   Targets t{v_shaped, {}, signedLayout(model)};
   t.layout.correctives.clear();
   for (int n = 0; n < t.layout.featureCount(); ++n) {
@@ -107,7 +112,9 @@ Targets encode(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const st
       double offset = diagonal(n) ? 1.0 : 0.5;
       t.layout.correctives.push_back({name, n, 0.5, offset, false});
       t.delta.push_back(p / 0.5);
-      t.base -= Eigen::Map<const Eigen::Matrix<double, -1, 3, Eigen::RowMajor>>(p.data(), p.size() / 3, 3) * 2 * offset;
+      t.base -= Eigen::Map<const Eigen::Matrix<double, -1, 3, Eigen::RowMajor>>(p.data(),
+                                                                                p.size() / 3, 3) *
+                2 * offset;
     } else if (diagonal(n)) {  // split, diagonal: one target, delta -2 P, weight -f/2
       t.layout.correctives.push_back({name, n, -0.5, 0.0, false});
       t.delta.push_back(-2.0 * p);
@@ -122,13 +129,16 @@ Targets encode(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const st
 }
 
 // v' = sum_k w_ik G_k [I | -J_k] v_posed (docs/file-contract.md), with the model's weights.
-Eigen::MatrixXd skin(const BodyModel& model, const smpl::ForwardResult& ref, const Eigen::MatrixXd& v_posed) {
+Eigen::MatrixXd skin(const BodyModel& model, const smpl::ForwardResult& ref,
+                     const Eigen::MatrixXd& v_posed) {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(v_posed.rows(), 3);
   for (size_t k = 0; k < ref.world.size(); ++k) {
     Eigen::Matrix3d r = ref.world[k].topLeftCorner<3, 3>();
-    Eigen::Vector3d t = ref.world[k].topRightCorner<3, 1>() - r * ref.rest_joints.row(Eigen::Index(k)).transpose();
+    Eigen::Vector3d t =
+        ref.world[k].topRightCorner<3, 1>() - r * ref.rest_joints.row(Eigen::Index(k)).transpose();
     for (Eigen::Index i = 0; i < v_posed.rows(); ++i)
-      out.row(i) += model.weights(i, Eigen::Index(k)) * (r * v_posed.row(i).transpose() + t).transpose();
+      out.row(i) +=
+          model.weights(i, Eigen::Index(k)) * (r * v_posed.row(i).transpose() + t).transpose();
   }
   return out;
 }
@@ -142,13 +152,14 @@ double maxVertexError(const BodyModel& model, const std::string& encoding, uint6
   ev.evaluate(c.now);
   Eigen::MatrixXd v_posed = t.base;
   for (size_t i = 0; i < t.delta.size(); ++i)
-    v_posed += ev.weights()[i] *
-               Eigen::Map<const Eigen::Matrix<double, -1, 3, Eigen::RowMajor>>(t.delta[i].data(), v_posed.rows(), 3);
+    v_posed += ev.weights()[i] * Eigen::Map<const Eigen::Matrix<double, -1, 3, Eigen::RowMajor>>(
+                                     t.delta[i].data(), v_posed.rows(), 3);
   return (skin(model, c.reference, v_posed) - c.reference.vertices).cwiseAbs().maxCoeff();
 }
 
 const BodyModel& smallModel() {
-  static BodyModel model = *smpl::loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
+  static BodyModel model =
+      *smpl::loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   return model;
 }
 
@@ -163,7 +174,8 @@ TEST(RuntimeCore, FeaturesFromUnrealWorldRotationsMatchTheReference) {
       ASSERT_EQ(ev.features().size(), size_t(c.reference.pose_features.size()));
       double worst = 0;
       for (size_t n = 0; n < ev.features().size(); ++n)
-        worst = std::max(worst, std::fabs(ev.features()[n] - c.reference.pose_features(Eigen::Index(n))));
+        worst = std::max(worst,
+                         std::fabs(ev.features()[n] - c.reference.pose_features(Eigen::Index(n))));
       EXPECT_LT(worst, 1e-12) << model->name << " pose " << seed;
       EXPECT_GT(c.reference.pose_features.cwiseAbs().maxCoeff(), 0.1);  // a real pose, not rest
     }
@@ -180,7 +192,8 @@ TEST(RuntimeCore, TheAxisMapMatters) {
   ev.evaluate(c.now);
   double worst = 0;
   for (size_t n = 0; n < ev.features().size(); ++n)
-    worst = std::max(worst, std::fabs(ev.features()[n] - c.reference.pose_features(Eigen::Index(n))));
+    worst =
+        std::max(worst, std::fabs(ev.features()[n] - c.reference.pose_features(Eigen::Index(n))));
   EXPECT_GT(worst, 0.05);
 }
 
@@ -225,8 +238,10 @@ TEST(RuntimeCore, BasisWeightsProjectTheFeatures) {
   ASSERT_EQ(ev.targetCount(), 3u);
   for (int k = 0; k < 3; ++k) {
     double sum = 0;
-    for (int n = 0; n < p; ++n) sum += layout.basis.matrix[size_t(k * p + n)] * c.reference.pose_features(n);
-    EXPECT_NEAR(ev.weights()[size_t(k)], layout.basis.scale[size_t(k)] * sum + layout.basis.offset[size_t(k)], 1e-10);
+    for (int n = 0; n < p; ++n)
+      sum += layout.basis.matrix[size_t(k * p + n)] * c.reference.pose_features(n);
+    EXPECT_NEAR(ev.weights()[size_t(k)],
+                layout.basis.scale[size_t(k)] * sum + layout.basis.offset[size_t(k)], 1e-10);
     EXPECT_EQ(ev.targetName(size_t(k)), "pose_basis_" + std::to_string(k));
   }
 }
@@ -268,7 +283,8 @@ TEST(RuntimeCore, ValidateNamesTheProblem) {
   bad.basis.targets = {"pose_basis_0"};
   EXPECT_NE(sc::validate(bad).find("'corrective_basis'"), std::string::npos);
   sc::Evaluator ev;
-  EXPECT_NE(ev.bind(layout, {1, 0, 0, 0, 2, 0, 0, 0, 1}, std::vector<sc::Mat3>(layout.parents.size(), sc::identity())),
+  EXPECT_NE(ev.bind(layout, {1, 0, 0, 0, 2, 0, 0, 0, 1},
+                    std::vector<sc::Mat3>(layout.parents.size(), sc::identity())),
             "");
   EXPECT_NE(ev.bind(layout, sc::identity(), {}), "");
   EXPECT_FALSE(ev.bound());

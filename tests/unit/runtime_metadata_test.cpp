@@ -28,9 +28,13 @@ nlohmann::json demoMetadata() {
   m["up_axis"] = "+Y";
   m["corrective_encoding"] = "split";
   m["correctives"] = nlohmann::json::array();
-  m["correctives"].push_back({{"feature", 0}, {"target", "pose_a_00"}, {"scale", -0.5}, {"offset", 0}});
   m["correctives"].push_back(
-      {{"feature", 1}, {"target", "pose_a_01_neg"}, {"scale", -1}, {"offset", 0}, {"rectified", true}});
+      {{"feature", 0}, {"target", "pose_a_00"}, {"scale", -0.5}, {"offset", 0}});
+  m["correctives"].push_back({{"feature", 1},
+                              {"target", "pose_a_01_neg"},
+                              {"scale", -1},
+                              {"offset", 0},
+                              {"rectified", true}});
   m["morph_targets"] = {"pose_a_00", "pose_a_01_neg"};
   m["producer"] = {{"hash", "0123456789abcdef"}};
   return m;
@@ -53,10 +57,14 @@ TEST(RuntimeMetadata, ReadsTheFieldsTheCorrectivesNeed) {
 
 TEST(RuntimeMetadata, DefaultsAndBasis) {
   nlohmann::json m = demoMetadata();
-  m["correctives"] = {{{"feature", 3}, {"target", "t"}}, {{"feature", 4}, {"target", "u"}, {"rectified", "yes"}}};
+  m["correctives"] = {{{"feature", 3}, {"target", "t"}},
+                      {{"feature", 4}, {"target", "u"}, {"rectified", "yes"}}};
   int p = 9 * (int(smpl::demoBody().parents.size()) - 1);
-  m["corrective_basis"] = {{"targets", {"pose_basis_0"}}, {"features", p},
-                           {"matrix", std::vector<double>(size_t(p), 0.25)}, {"scale", {2.0}}, {"offset", {-1e-3}}};
+  m["corrective_basis"] = {{"targets", {"pose_basis_0"}},
+                           {"features", p},
+                           {"matrix", std::vector<double>(size_t(p), 0.25)},
+                           {"scale", {2.0}},
+                           {"offset", {-1e-3}}};
   m.erase("up_axis");
   sc::Layout layout;
   ASSERT_EQ(sc::parseLayout(m.dump(), &layout), "");
@@ -96,13 +104,16 @@ TEST(RuntimeMetadata, InvalidJsonNamesTheByte) {
   EXPECT_EQ(parseError("{\"a\": tru}"), "metadata: invalid JSON: invalid literal at byte 6");
   EXPECT_EQ(parseError("{\"a\": 01}"), "metadata: invalid JSON: expected ',' or '}' at byte 7");
   EXPECT_EQ(parseError("{\"a\": 1e999}"), "metadata: invalid JSON: number out of range at byte 11");
-  EXPECT_EQ(parseError("{\"a\": \"\\ud800\"}"), "metadata: invalid JSON: unpaired surrogate at byte 13");
+  EXPECT_EQ(parseError("{\"a\": \"\\ud800\"}"),
+            "metadata: invalid JSON: unpaired surrogate at byte 13");
   EXPECT_EQ(parseError("{\"a\": \"x"), "metadata: invalid JSON: unterminated string at byte 8");
-  EXPECT_EQ(parseError("{} x"), "metadata: invalid JSON: unexpected text after the JSON value at byte 3");
+  EXPECT_EQ(parseError("{} x"),
+            "metadata: invalid JSON: unexpected text after the JSON value at byte 3");
   EXPECT_EQ(parseError(""), "metadata: invalid JSON: unexpected end of text at byte 0");
   EXPECT_EQ(parseError(std::string(66, '[') + std::string(66, ']')),
             "metadata: invalid JSON: nesting deeper than 64 levels at byte 65");
-  EXPECT_EQ(parseError(std::string(65, '[') + std::string(65, ']')), "metadata: expected a JSON object");
+  EXPECT_EQ(parseError(std::string(65, '[') + std::string(65, ']')),
+            "metadata: expected a JSON object");
 }
 
 TEST(RuntimeMetadata, StringsDecodeEscapes) {

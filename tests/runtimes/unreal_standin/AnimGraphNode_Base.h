@@ -6,7 +6,8 @@
 struct FText {
   std::string Text;
 };
-#define LOCTEXT(Key, Text) FText{Text}
+#define LOCTEXT(Key, Text) \
+  FText { Text }
 struct FLinearColor {
   FLinearColor(float r, float g, float b, float a = 1.f) : R(r), G(g), B(b), A(a) {}
   float R, G, B, A;

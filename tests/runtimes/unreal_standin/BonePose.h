@@ -48,7 +48,8 @@ struct FCSPose {
     Component.resize(pose.Local.size());
     for (size_t b = 0; b < Component.size(); ++b) {
       int32 p = ref.Parents[b];
-      Component[b] = FTransform(p < 0 ? pose.Local[b].Rotation : Component[size_t(p)].Rotation * pose.Local[b].Rotation);
+      Component[b] = FTransform(p < 0 ? pose.Local[b].Rotation
+                                      : Component[size_t(p)].Rotation * pose.Local[b].Rotation);
     }
   }
   const FTransform& GetComponentSpaceTransform(const FCompactPoseBoneIndex& i) const {

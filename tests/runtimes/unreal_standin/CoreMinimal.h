@@ -34,7 +34,10 @@ class FString {
   bool IsEmpty() const { return s_.empty(); }
   const TCHAR* operator*() const { return s_.c_str(); }
   FString operator+(const FString& o) const { return FString(s_ + o.s_); }
-  FString& operator+=(const FString& o) { s_ += o.s_; return *this; }
+  FString& operator+=(const FString& o) {
+    s_ += o.s_;
+    return *this;
+  }
   bool operator==(const FString& o) const { return s_ == o.s_; }
   const std::string& Std() const { return s_; }
   static FString Printf(const TCHAR* format, ...) {
@@ -65,7 +68,10 @@ template <class T>
 class TArray {
  public:
   void Reset() { v_.clear(); }
-  int32 Add(const T& x) { v_.push_back(x); return int32(v_.size()) - 1; }
+  int32 Add(const T& x) {
+    v_.push_back(x);
+    return int32(v_.size()) - 1;
+  }
   int32 Num() const { return int32(v_.size()); }
   T& operator[](int32 i) { return v_.at(size_t(i)); }
   const T& operator[](int32 i) const { return v_.at(size_t(i)); }
@@ -109,4 +115,5 @@ inline std::vector<std::string>& StandInLog() {
   return lines;
 }
 #define DEFINE_LOG_CATEGORY_STATIC(...)
-#define UE_LOG(Category, Verbosity, Format, ...) StandInLog().push_back(*FString::Printf(Format, __VA_ARGS__))
+#define UE_LOG(Category, Verbosity, Format, ...) \
+  StandInLog().push_back(*FString::Printf(Format, __VA_ARGS__))

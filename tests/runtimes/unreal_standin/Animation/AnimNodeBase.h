@@ -29,7 +29,9 @@ struct FPoseContext {
 struct FNodeDebugData {
   std::vector<std::string> Items;
   template <class Node>
-  FString GetNodeName(Node*) { return FString("SmplCorrectives"); }
+  FString GetNodeName(Node*) {
+    return FString("SmplCorrectives");
+  }
   void AddDebugItem(const FString& Line) { Items.push_back(Line.Std()); }
 };
 
@@ -39,7 +41,9 @@ struct FPoseLink {
   void Initialize(const FAnimationInitializeContext&) {}
   void CacheBones(const FAnimationCacheBonesContext&) {}
   void Update(const FAnimationUpdateContext&) {}
-  void Evaluate(FPoseContext& Output) { if (Produce) Produce(Output); }
+  void Evaluate(FPoseContext& Output) {
+    if (Produce) Produce(Output);
+  }
   void GatherDebugData(FNodeDebugData&) {}
 };
 
@@ -54,5 +58,8 @@ struct FAnimNode_Base {
   virtual void Update_AnyThread(const FAnimationUpdateContext&) {}
   virtual void Evaluate_AnyThread(FPoseContext&) {}
   virtual void GatherDebugData(FNodeDebugData&) {}
-  const FExposedValueHandler& GetEvaluateGraphExposedInputs() const { static FExposedValueHandler h; return h; }
+  const FExposedValueHandler& GetEvaluateGraphExposedInputs() const {
+    static FExposedValueHandler h;
+    return h;
+  }
 };

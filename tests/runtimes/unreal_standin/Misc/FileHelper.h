@@ -10,7 +10,8 @@ struct FFileHelper {
   static bool LoadFileToString(FString& Result, const TCHAR* Path) {
     std::ifstream in(Path, std::ios::binary);
     if (!in) return false;
-    Result = FString(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
+    Result =
+        FString(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
     return true;
   }
 };

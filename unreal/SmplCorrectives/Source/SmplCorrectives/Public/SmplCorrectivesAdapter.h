@@ -38,7 +38,8 @@ inline BoneMap matchBones(const Layout& layout, const std::vector<std::string>& 
   for (const std::string& joint : layout.joint_names) {
     int hit = -1;
     std::string alias = joint.size() > 7 && joint.compare(joint.size() - 7, 7, "_smplhf") == 0
-                            ? joint.substr(0, joint.size() - 7) : std::string();
+                            ? joint.substr(0, joint.size() - 7)
+                            : std::string();
     for (int pass = 0; pass < 3 && hit < 0; ++pass)
       for (size_t b = 0; b < bone_names.size() && hit < 0; ++b) {
         const std::string name = pass == 0 ? bone_names[b] : shortBoneName(bone_names[b]);
@@ -55,8 +56,8 @@ inline BoneMap matchBones(const Layout& layout, const std::vector<std::string>& 
 /// rest_rotation_of(bone index) -> Mat3: the bone's reference-pose rotation in
 /// component space. Returns an error line or empty (no joint found is an error).
 template <class RestRotationOf>
-std::string bindSkeleton(Evaluator* ev, const Layout& layout, const Mat3& axes, const BoneMap& bones,
-                         RestRotationOf rest_rotation_of) {
+std::string bindSkeleton(Evaluator* ev, const Layout& layout, const Mat3& axes,
+                         const BoneMap& bones, RestRotationOf rest_rotation_of) {
   if (bones.found == 0) return "skeleton: no bone is named after a joint of the metadata";
   std::vector<Mat3> rest(layout.joint_names.size(), identity());
   for (size_t k = 0; k < rest.size(); ++k)

@@ -50,11 +50,8 @@ inline Mat3 multiply(const Mat3& a, const Mat3& b) {
   return out;
 }
 
-inline Mat3 transpose(const Mat3& a) { return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]}; }
-
-inline double determinant(const Mat3& a) {
-  return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-         a[2] * (a[3] * a[7] - a[4] * a[6]);
+inline Mat3 transpose(const Mat3& a) {
+  return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]};
 }
 
 /// Rotation matrix of the quaternion (x, y, z, w) (Hamilton, any norm > 0:
@@ -88,17 +85,17 @@ inline Mat3 unrealFbxAxes() { return {1, 0, 0, 0, 0, 1, 0, 1, 0}; }
 
 /// One corrective morph target of the metadata's "correctives" array.
 struct Corrective {
-  std::string target;      ///< morph target name, e.g. pose_left_knee_12 or ..._12_pos
-  int feature = 0;         ///< index n into f, 0 <= n < P
-  double scale = 1.0;      ///< weight = scale * f[n] + offset
+  std::string target;  ///< morph target name, e.g. pose_left_knee_12 or ..._12_pos
+  int feature = 0;     ///< index n into f, 0 <= n < P
+  double scale = 1.0;  ///< weight = scale * f[n] + offset
   double offset = 0.0;
   bool rectified = false;  ///< weight = max(0, scale * f[n] + offset) (split encoding)
 };
 
 /// The metadata's "corrective_basis" (absent: empty targets).
 struct Basis {
-  std::vector<std::string> targets;  ///< B morph target names, pose_basis_<k>
-  std::vector<double> matrix;        ///< B x P, row-major
+  std::vector<std::string> targets;   ///< B morph target names, pose_basis_<k>
+  std::vector<double> matrix;         ///< B x P, row-major
   std::vector<double> scale, offset;  ///< B each
 };
 
@@ -121,22 +118,25 @@ inline std::string validate(const Layout& layout) {
   if (layout.parents[0] != -1) return "metadata: 'parents'[0] must be -1 (the root)";
   for (size_t j = 1; j < k; ++j)
     if (layout.parents[j] < 0 || size_t(layout.parents[j]) >= j)
-      return "metadata: 'parents'[" + std::to_string(j) + "] = " + std::to_string(layout.parents[j]) +
-             "; expected 0 <= parent < " + std::to_string(j);
+      return "metadata: 'parents'[" + std::to_string(j) +
+             "] = " + std::to_string(layout.parents[j]) + "; expected 0 <= parent < " +
+             std::to_string(j);
   int p = layout.featureCount();
   for (size_t i = 0; i < layout.correctives.size(); ++i) {
     const Corrective& c = layout.correctives[i];
     if (c.feature < 0 || c.feature >= p)
-      return "metadata: 'correctives'[" + std::to_string(i) + "].feature = " + std::to_string(c.feature) +
-             "; expected 0 <= feature < " + std::to_string(p);
+      return "metadata: 'correctives'[" + std::to_string(i) +
+             "].feature = " + std::to_string(c.feature) + "; expected 0 <= feature < " +
+             std::to_string(p);
     if (!std::isfinite(c.scale) || !std::isfinite(c.offset))
       return "metadata: 'correctives'[" + std::to_string(i) + "] has a non-finite scale or offset";
   }
   const Basis& b = layout.basis;
   size_t rows = b.targets.size();
   if (b.matrix.size() != rows * size_t(p) || b.scale.size() != rows || b.offset.size() != rows)
-    return "metadata: 'corrective_basis' has " + std::to_string(b.matrix.size()) + " matrix values for " +
-           std::to_string(rows) + " targets; expected targets x " + std::to_string(p);
+    return "metadata: 'corrective_basis' has " + std::to_string(b.matrix.size()) +
+           " matrix values for " + std::to_string(rows) + " targets; expected targets x " +
+           std::to_string(p);
   for (const std::vector<double>* v : {&b.matrix, &b.scale, &b.offset})
     for (double x : *v)
       if (!std::isfinite(x)) return "metadata: 'corrective_basis' holds a non-finite number";
@@ -185,7 +185,8 @@ class Evaluator {
   void evaluate(const std::vector<Mat3>& now) {
     if (!bound_ || now.size() != rest_inv_.size()) return;
     computeFeatures(now);
-    for (size_t i = 0; i < layout_.correctives.size(); ++i) weights_[i] = weight(layout_.correctives[i]);
+    for (size_t i = 0; i < layout_.correctives.size(); ++i)
+      weights_[i] = weight(layout_.correctives[i]);
     size_t first = layout_.correctives.size(), p = features_.size();
     for (size_t r = 0; r < layout_.basis.targets.size(); ++r) {
       double sum = 0;
@@ -216,11 +217,13 @@ class Evaluator {
       if (missing_[k])
         change_[k] = k == 0 ? identity() : change_[size_t(layout_.parents[k])];
       else  // E_k = C^-1 D_k C, so that E_p^-1 E_k = C^-1 L_k C = R_k
-        change_[k] = multiply(axes_inv_, multiply(multiply(withUnitColumns(now[k]), rest_inv_[k]), axes_));
+        change_[k] =
+            multiply(axes_inv_, multiply(multiply(withUnitColumns(now[k]), rest_inv_[k]), axes_));
     }
     for (size_t k = 1; k < now.size(); ++k) {
       Mat3 r = multiply(transpose(change_[size_t(layout_.parents[k])]), change_[k]);
-      for (int i = 0; i < 9; ++i) features_[9 * (k - 1) + size_t(i)] = r[size_t(i)] - (i % 4 == 0 ? 1.0 : 0.0);
+      for (int i = 0; i < 9; ++i)
+        features_[9 * (k - 1) + size_t(i)] = r[size_t(i)] - (i % 4 == 0 ? 1.0 : 0.0);
     }
   }
 

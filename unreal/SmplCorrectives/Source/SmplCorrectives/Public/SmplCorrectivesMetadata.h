@@ -42,7 +42,10 @@ class Parser {
  public:
   /// Keeps its own copy of the text (a temporary argument is safe).
   explicit Parser(std::string text)
-      : text_(std::move(text)), p_(text_.data()), begin_(text_.data()), end_(text_.data() + text_.size()) {}
+      : text_(std::move(text)),
+        p_(text_.data()),
+        begin_(text_.data()),
+        end_(text_.data() + text_.size()) {}
   Parser(const Parser&) = delete;  // p_ points into text_
   Parser& operator=(const Parser&) = delete;
 
@@ -76,13 +79,27 @@ class Parser {
     if (depth > kMaxDepth) return fail("nesting deeper than 64 levels");
     if (p_ == end_) return fail("unexpected end of text");
     switch (*p_) {
-      case '{': return object(out, depth);
-      case '[': return array(out, depth);
-      case '"': out->kind = Value::kString; return string(&out->text);
-      case 't': out->kind = Value::kBool; out->boolean = true; return literal("true");
-      case 'f': out->kind = Value::kBool; out->boolean = false; return literal("false");
-      case 'n': out->kind = Value::kNull; return literal("null");
-      default: out->kind = Value::kNumber; return number(&out->number);
+      case '{':
+        return object(out, depth);
+      case '[':
+        return array(out, depth);
+      case '"':
+        out->kind = Value::kString;
+        return string(&out->text);
+      case 't':
+        out->kind = Value::kBool;
+        out->boolean = true;
+        return literal("true");
+      case 'f':
+        out->kind = Value::kBool;
+        out->boolean = false;
+        return literal("false");
+      case 'n':
+        out->kind = Value::kNull;
+        return literal("null");
+      default:
+        out->kind = Value::kNumber;
+        return number(&out->number);
     }
   }
 
@@ -103,7 +120,10 @@ class Parser {
       if (!value(&member.second, depth + 1)) return false;
       out->members.push_back(std::move(member));
       skipSpace();
-      if (p_ < end_ && *p_ == ',') { ++p_; continue; }
+      if (p_ < end_ && *p_ == ',') {
+        ++p_;
+        continue;
+      }
       if (p_ < end_ && *p_ == '}') return ++p_, true;
       return fail("expected ',' or '}'");
     }
@@ -119,7 +139,10 @@ class Parser {
       skipSpace();
       if (!value(&out->items.back(), depth + 1)) return false;
       skipSpace();
-      if (p_ < end_ && *p_ == ',') { ++p_; continue; }
+      if (p_ < end_ && *p_ == ',') {
+        ++p_;
+        continue;
+      }
       if (p_ < end_ && *p_ == ']') return ++p_, true;
       return fail("expected ',' or ']'");
     }
@@ -129,7 +152,10 @@ class Parser {
     const char* start = p_;
     if (p_ < end_ && *p_ == '-') ++p_;
     if (p_ == end_ || !isDigit(*p_)) return fail("invalid value");
-    if (*p_ == '0') ++p_; else while (p_ < end_ && isDigit(*p_)) ++p_;
+    if (*p_ == '0')
+      ++p_;
+    else
+      while (p_ < end_ && isDigit(*p_)) ++p_;
     if (p_ < end_ && *p_ == '.') {
       ++p_;
       if (p_ == end_ || !isDigit(*p_)) return fail("invalid number");
@@ -152,8 +178,10 @@ class Parser {
     *out = 0;
     for (int i = 0; i < 4; ++i, ++p_) {
       char c = *p_;
-      unsigned d = c >= '0' && c <= '9' ? unsigned(c - '0') : c >= 'a' && c <= 'f' ? unsigned(c - 'a' + 10)
-                 : c >= 'A' && c <= 'F' ? unsigned(c - 'A' + 10) : 16u;
+      unsigned d = c >= '0' && c <= '9'   ? unsigned(c - '0')
+                   : c >= 'a' && c <= 'f' ? unsigned(c - 'a' + 10)
+                   : c >= 'A' && c <= 'F' ? unsigned(c - 'A' + 10)
+                                          : 16u;
       if (d == 16u) return fail("invalid \\u escape");
       *out = *out * 16 + d;
     }
@@ -161,10 +189,16 @@ class Parser {
   }
 
   static void appendUtf8(unsigned cp, std::string* out) {
-    if (cp < 0x80) { out->push_back(char(cp)); return; }
-    if (cp < 0x800) { out->push_back(char(0xC0 | (cp >> 6))); }
-    else if (cp < 0x10000) { out->push_back(char(0xE0 | (cp >> 12))); out->push_back(char(0x80 | ((cp >> 6) & 0x3F))); }
-    else {
+    if (cp < 0x80) {
+      out->push_back(char(cp));
+      return;
+    }
+    if (cp < 0x800) {
+      out->push_back(char(0xC0 | (cp >> 6)));
+    } else if (cp < 0x10000) {
+      out->push_back(char(0xE0 | (cp >> 12)));
+      out->push_back(char(0x80 | ((cp >> 6) & 0x3F)));
+    } else {
       out->push_back(char(0xF0 | (cp >> 18)));
       out->push_back(char(0x80 | ((cp >> 12) & 0x3F)));
       out->push_back(char(0x80 | ((cp >> 6) & 0x3F)));
@@ -176,14 +210,30 @@ class Parser {
     if (p_ == end_) return fail("unterminated string");
     char c = *p_++;
     switch (c) {
-      case '"': case '\\': case '/': out->push_back(c); return true;
-      case 'b': out->push_back('\b'); return true;
-      case 'f': out->push_back('\f'); return true;
-      case 'n': out->push_back('\n'); return true;
-      case 'r': out->push_back('\r'); return true;
-      case 't': out->push_back('\t'); return true;
-      case 'u': break;
-      default: return fail("invalid escape");
+      case '"':
+      case '\\':
+      case '/':
+        out->push_back(c);
+        return true;
+      case 'b':
+        out->push_back('\b');
+        return true;
+      case 'f':
+        out->push_back('\f');
+        return true;
+      case 'n':
+        out->push_back('\n');
+        return true;
+      case 'r':
+        out->push_back('\r');
+        return true;
+      case 't':
+        out->push_back('\t');
+        return true;
+      case 'u':
+        break;
+      default:
+        return fail("invalid escape");
     }
     unsigned cp = 0;
     if (!hex4(&cp)) return false;
@@ -228,7 +278,9 @@ class Parser {
 namespace detail {
 
 inline bool readInt(const json::Value& v, int* out) {
-  if (v.kind != json::Value::kNumber || v.number != std::floor(v.number) || std::fabs(v.number) > 1e9) return false;
+  if (v.kind != json::Value::kNumber || v.number != std::floor(v.number) ||
+      std::fabs(v.number) > 1e9)
+    return false;
   *out = int(v.number);
   return true;
 }
@@ -236,9 +288,11 @@ inline bool readInt(const json::Value& v, int* out) {
 inline std::string readNumbers(const json::Value& parent, const char* key, const std::string& where,
                                std::vector<double>* out) {
   const json::Value* v = parent.find(key);
-  if (!v || v->kind != json::Value::kArray) return where + "." + key + " must be an array of numbers";
+  if (!v || v->kind != json::Value::kArray)
+    return where + "." + key + " must be an array of numbers";
   for (const json::Value& item : v->items) {
-    if (item.kind != json::Value::kNumber) return where + "." + key + " must be an array of numbers";
+    if (item.kind != json::Value::kNumber)
+      return where + "." + key + " must be an array of numbers";
     out->push_back(item.number);
   }
   return "";
@@ -253,7 +307,8 @@ inline std::string readCorrective(const json::Value& e, const std::string& where
   c->target = target->text;
   for (auto field : {std::make_pair("scale", &c->scale), std::make_pair("offset", &c->offset)}) {
     const json::Value* v = e.find(field.first);
-    if (v && v->kind != json::Value::kNumber) return where + "." + field.first + " must be a number";
+    if (v && v->kind != json::Value::kNumber)
+      return where + "." + field.first + " must be a number";
     if (v) *field.second = v->number;
   }
   const json::Value* rectified = e.find("rectified");
@@ -265,7 +320,8 @@ inline std::string readBasis(const json::Value& b, Basis* out) {
   const std::string where = "metadata: 'corrective_basis'";
   if (b.kind != json::Value::kObject) return where + " must be an object";
   const json::Value* targets = b.find("targets");
-  if (!targets || targets->kind != json::Value::kArray) return where + ".targets must be an array of strings";
+  if (!targets || targets->kind != json::Value::kArray)
+    return where + ".targets must be an array of strings";
   for (const json::Value& t : targets->items) {
     if (t.kind != json::Value::kString) return where + ".targets must be an array of strings";
     out->targets.push_back(t.text);
@@ -290,7 +346,8 @@ inline std::string parseLayout(const std::string& text, Layout* out) {
   Layout layout;
   const json::Value* names = root.find("joint_names");
   const json::Value* parents = root.find("parents");
-  if (!names || names->kind != json::Value::kArray || !parents || parents->kind != json::Value::kArray)
+  if (!names || names->kind != json::Value::kArray || !parents ||
+      parents->kind != json::Value::kArray)
     return "metadata: 'joint_names' and 'parents' must be arrays";
   for (const json::Value& n : names->items) {
     if (n.kind != json::Value::kString) return "metadata: 'joint_names' must hold strings";
@@ -304,11 +361,12 @@ inline std::string parseLayout(const std::string& text, Layout* out) {
   const json::Value* up = root.find("up_axis");
   if (up && up->kind == json::Value::kString) layout.up_axis = up->text;
   const json::Value* correctives = root.find("correctives");
-  if (correctives && correctives->kind != json::Value::kArray) return "metadata: 'correctives' must be an array";
+  if (correctives && correctives->kind != json::Value::kArray)
+    return "metadata: 'correctives' must be an array";
   for (size_t i = 0; correctives && i < correctives->items.size(); ++i) {
     Corrective c;
-    std::string error = detail::readCorrective(correctives->items[i],
-                                               "metadata: 'correctives'[" + std::to_string(i) + "]", &c);
+    std::string error = detail::readCorrective(
+        correctives->items[i], "metadata: 'correctives'[" + std::to_string(i) + "]", &c);
     if (!error.empty()) return error;
     layout.correctives.push_back(c);
   }
