@@ -3,7 +3,7 @@
 
 VERSION is the one source: CMake reads it (project version, the exporter's
 `exporter_version`); the Blender add-on (bl_info, which Blender parses as a
-literal, and blender_manifest.toml) and the Unity package.json cannot read a
+literal, and blender_manifest.toml), the Unity and web package.json cannot read a
 file, nor can the Maya module file, the Maya plug-in's registration and the
 Unreal .uplugin: this check keeps them equal. Exits 1 and names each mismatch.
     scripts/check-version.py [ROOT]
@@ -35,6 +35,8 @@ def main():
     found["maya/scripts/smpl_maya/node.py MFnPlugin"] = node.group(1) if node else None
     plugin = json.loads((root / "unreal/SmplCorrectives/SmplCorrectives.uplugin").read_text())
     found["unreal/SmplCorrectives/SmplCorrectives.uplugin VersionName"] = plugin.get("VersionName")
+    found["web/smpl-correctives/package.json"] = json.loads(
+        (root / "web/smpl-correctives/package.json").read_text()).get("version")
     changelog = (root / "CHANGELOG.md").read_text()
     m = re.search(r"^## \[?(\d+\.\d+\.\d+)", changelog, re.M)
     found["CHANGELOG.md (latest entry)"] = m.group(1) if m else None
