@@ -47,7 +47,9 @@ Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   struct stat st {};
   if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+    // MAP_POPULATE: the members are read whole, so map every page in one call
+    // rather than one page fault per 4 KiB.
+    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
     if (m != MAP_FAILED) {
       storage->mapping = m;
       storage->data = static_cast<const uint8_t*>(m);
@@ -120,6 +122,20 @@ Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
   return parseNpyHeader(e->data.data(), e->data.size(), context_ + "/" + printable(find(key)->name));
 }
 
+Result<bool> NpzArchive::isObjectArray(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  constexpr size_t kPeek = 4096;  // numpy's headers are shorter; a longer one takes the full path
+  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kPeek, context_);
+  if (prefix) {
+    Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), context_ + "/" + printable(m->name));
+    if (h) return isObjectDescr(h->descr);
+  }
+  Result<NpyHeaderInfo> h = header(key);
+  if (!h) return h.error();
+  return isObjectDescr(h->descr);
+}
+
 // Before inflating a member: its header (from the first bytes only) tells how
 // large the decoded array will be; refuse it against the memory budget now,
 // so a small member that widens past the limit costs neither its inflated
@@ -127,11 +143,18 @@ Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
 Status NpzArchive::checkDecodedSize(const std::string& key) const {
   const ZipMember* m = find(key);
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
-  constexpr size_t kHeaderPeek = (1 << 20) + 16;  // the .npy reader's header limit plus its preamble
-  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kHeaderPeek, context_);
-  if (!prefix) return Status();  // extraction reports the problem in full
+  // numpy's headers fit in 4 KiB (it writes < 10000 bytes); only a longer
+  // one costs a second, full-size peek (the .npy reader's limit + preamble).
+  constexpr size_t kShortPeek = 4096, kHeaderPeek = (1 << 20) + 16;
   const std::string mctx = context_ + "/" + printable(m->name);
+  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kShortPeek, context_);
+  if (!prefix) return Status();  // extraction reports the problem in full
   Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
+  if (!h && prefix->size() == kShortPeek) {
+    prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kHeaderPeek, context_);
+    if (!prefix) return Status();
+    h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
+  }
   if (!h || isObjectDescr(h->descr)) return Status();
   Result<NumpyDtype> t = parseNumpyDescr(h->descr, mctx);
   if (!t) return Status();
@@ -146,6 +169,12 @@ Status NpzArchive::checkDecodedSize(const std::string& key) const {
 }
 
 Result<Array> NpzArchive::get(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  // The inflated member alone past the budget: refused as inflating, before
+  // the header is peeked at (the same check memberBytes makes).
+  if (Status st = checkMemory(m->usize, context_ + "/" + printable(m->name), "inflating the member"); !st)
+    return st.error();
   if (Status st = checkDecodedSize(key); !st) return st.error();
   Result<ZipEntry> e = memberBytes(key);
   if (!e) return e.error();
