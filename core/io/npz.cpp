@@ -47,9 +47,7 @@ Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   struct stat st {};
   if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-    // MAP_POPULATE: the members are read whole, so map every page in one call
-    // rather than one page fault per 4 KiB.
-    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
     if (m != MAP_FAILED) {
       storage->mapping = m;
       storage->data = static_cast<const uint8_t*>(m);

@@ -142,9 +142,8 @@ class SourceOrder {
   size_t src_ = 0;
 };
 
-// Numbers of a native-order dtype, loaded as T (memcpy: any alignment).
-// C-order float64 is one memcpy. Returns false for the dtypes it does not
-// cover (half floats, bools, other byte orders), which take loadNumber.
+// Numbers of a native-order dtype, loaded as T (memcpy: any alignment);
+// C-order float64 is one memcpy.
 template <class T>
 void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order, double* out) {
   if (c_order && sizeof(T) == sizeof(double) && std::is_same<T, double>::value) {
@@ -158,6 +157,9 @@ void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order,
   }
 }
 
+// The common dtypes in the host's byte order without the per-element
+// switch of loadNumber; false for the others (half floats, bools, 1- and
+// 2-byte integers, the other byte order), which take loadNumber.
 bool loadNative(const uint8_t* p, size_t count, const NumpyDtype& t, SourceOrder& order, bool c_order,
                 double* out) {
   if (count == 0 || (t.big_endian && t.itemsize > 1) || hostIsBigEndian()) return false;

@@ -12,6 +12,8 @@
 //    wrote (imported first; only the export is timed).
 #include "tools/bench/compare.h"
 
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <time.h>
 
 #include <algorithm>
@@ -39,10 +41,19 @@ const char* const kStandins[] = {"standin_smpl_py2.pkl", "standin_smpl_stored.np
 
 double seconds(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-double threadCpuSeconds() {
+double clockSeconds(clockid_t clock) {
   timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  clock_gettime(clock, &ts);
   return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+double threadCpuSeconds() { return clockSeconds(CLOCK_THREAD_CPUTIME_ID); }
+
+// CPU seconds (user + system) of this process, or of its finished children.
+double cpuSeconds(bool children) {
+  if (!children) return clockSeconds(CLOCK_PROCESS_CPUTIME_ID);
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
 }
 
 double median(std::vector<double> v) {
@@ -50,15 +61,22 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// Median wall seconds of `repeats` calls.
-double medianSeconds(int repeats, const std::function<void()>& fn) {
-  std::vector<double> t;
+// Median wall and CPU seconds of `repeats` calls (CPU: this process's, or
+// its children's when fn runs a program). On a loaded machine wall time
+// includes waiting for a core; CPU time does not.
+struct Timing {
+  double wall = -1, cpu = -1;
+};
+Timing medianSeconds(int repeats, const std::function<void()>& fn, bool children = false) {
+  std::vector<double> wall, cpu;
   for (int i = 0; i < repeats; ++i) {
+    const double cpu0 = cpuSeconds(children);
     const auto start = Clock::now();
     fn();
-    t.push_back(seconds(start));
+    wall.push_back(seconds(start));
+    cpu.push_back(cpuSeconds(children) - cpu0);
   }
-  return median(t);
+  return {median(wall), median(cpu)};
 }
 
 std::string quote(const std::string& s) {
@@ -115,13 +133,13 @@ void compareLoad(const std::string& dir) {
     const std::string path = (fs::path(dir) / kStandins[i]).string();
     const double mb = fs::file_size(path) / 1e6;
     (void)loadModel(path);  // warm: the file is in the page cache
-    const double s = medianSeconds(5, [&] { (void)loadModel(path); });
-    row(names[i], fmt("%.0f MB/s", mb / s), fmt("%.1f MB file", mb), fmt("%.1f ms", 1e3 * s));
+    const Timing t = medianSeconds(5, [&] { (void)loadModel(path); });
+    row(names[i], fmt("%.0f", mb / t.wall) + fmt(" / %.0f MB/s", mb / t.cpu), fmt("%.1f MB file", mb), "");
   }
 }
 
 struct CliTimes {
-  double glb = -1, fbx = -1;
+  Timing glb, fbx;
   std::string glb_path;
 };
 
@@ -132,28 +150,31 @@ CliTimes compareCli(const std::string& dir) {
     const std::string out = (fs::path(dir) / (std::string("cli.") + ext)).string();
     std::string log;
     bool ok = true;
-    const double s = medianSeconds(3, [&] {
+    const Timing s = medianSeconds(3, [&] {
       ok = ok && run(quote(SMPL_EXPORT_BIN) + " --model " + quote(model) + " --out " + quote(out), &log) == 0;
-    });
+    }, /*children=*/true);
     if (!ok) std::fprintf(stderr, "smpl-bench: smpl-export failed: %s\n", log.c_str());
-    (std::string(ext) == "glb" ? t.glb : t.fbx) = ok ? s : -1;
+    (std::string(ext) == "glb" ? t.glb : t.fbx) = ok ? s : Timing();
     if (std::string(ext) == "glb") t.glb_path = out;
   }
-  row("whole-process CLI export, .pkl -> .glb", fmt("%.3f s", t.glb), "", "");
-  row("whole-process CLI export, .pkl -> .fbx", fmt("%.3f s", t.fbx), "", fmt("%.2fx GLB", t.fbx / t.glb));
+  row("whole-process CLI export, .pkl -> .glb", fmt("%.2f", t.glb.wall) + fmt(" / %.2f s", t.glb.cpu), "", "");
+  row("whole-process CLI export, .pkl -> .fbx", fmt("%.2f", t.fbx.wall) + fmt(" / %.2f s", t.fbx.cpu), "",
+      fmt("%.2f", t.fbx.wall / t.glb.wall) + fmt(" / %.2fx GLB", t.fbx.cpu / t.glb.cpu));
   return t;
 }
 
 void compareWrite(const BodyModel& model) {
   Result<Asset> asset = buildAsset(model, ExportOptions());
   if (!asset) return row("in-process write", asset.message(), "", "");
-  double ms[2] = {0, 0};
+  Timing t[2];
   int i = 0;
   for (const char* ext : {".glb", ".fbx"}) {
     const Writer* w = writerForPath(std::string("x") + ext);
-    ms[i++] = 1e3 * medianSeconds(5, [&] { (void)w->serialize(*asset, WriterOptions()); });
+    t[i++] = medianSeconds(5, [&] { (void)w->serialize(*asset, WriterOptions()); });
   }
-  row("in-process write GLB / FBX", fmt("%.1f ms", ms[0]) + fmt(" / %.1f ms", ms[1]), "", fmt("FBX %.2fx GLB", ms[1] / ms[0]));
+  row("in-process write GLB", fmt("%.0f", 1e3 * t[0].wall) + fmt(" / %.0f ms", 1e3 * t[0].cpu), "", "");
+  row("in-process write FBX (deflate on all cores)", fmt("%.0f", 1e3 * t[1].wall) + fmt(" / %.0f ms", 1e3 * t[1].cpu), "",
+      fmt("%.1f", t[1].wall / t[0].wall) + fmt(" / %.1fx GLB", t[1].cpu / t[0].cpu));
 }
 
 void compareForward(const BodyModel& model, const CompareOptions& o, const std::string& npz) {
@@ -180,28 +201,31 @@ void compareForward(const BodyModel& model, const CompareOptions& o, const std::
     return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: failed to run", "-"),
            (void)std::fprintf(stderr, "smpl-bench: smplx run failed: %s\n", out.c_str());
   row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), fmt("smplx/torch %.3f ms", peer),
-      fmt("%.1fx faster", peer / ours));
+      fmt("%.1fx", peer / ours));
 }
 
 void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::string& dir) {
   std::string out;
-  if (cli.glb <= 0 || run(quote(o.blender) + " --version", &out) != 0) {
+  if (cli.glb.wall <= 0 || run(quote(o.blender) + " --version", &out) != 0) {
     row("Blender glTF exporter", "", "Blender: absent", "-");
     return row("Blender FBX exporter", "", "Blender: absent", "-");
   }
   const int rc = run(quote(o.blender) + " -b --factory-startup --python-exit-code 1 --python " +
                          quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/blender_export_time.py") + " -- " +
                          quote(cli.glb_path) + " " + quote(dir), &out);
-  const double gltf = field(out, "BLENDER_EXPORT gltf"), fbx = field(out, "BLENDER_EXPORT fbx");
-  if (rc != 0 || gltf <= 0 || fbx <= 0) {
+  const Timing gltf{field(out, "BLENDER_EXPORT gltf"), field(out, "BLENDER_EXPORT gltf", 1)},
+      fbx{field(out, "BLENDER_EXPORT fbx"), field(out, "BLENDER_EXPORT fbx", 1)};
+  if (rc != 0 || gltf.wall <= 0 || fbx.wall <= 0) {
     std::fprintf(stderr, "smpl-bench: Blender run failed: %s\n", out.c_str());
     row("Blender glTF exporter", "", "Blender: failed to run", "-");
     return row("Blender FBX exporter", "", "Blender: failed to run", "-");
   }
-  row("Blender glTF exporter vs whole-process CLI", fmt("%.3f s", cli.glb), fmt("Blender 3.4 %.3f s", gltf),
-      fmt("%.1fx faster", gltf / cli.glb));
-  row("Blender FBX exporter vs whole-process CLI", fmt("%.3f s", cli.fbx), fmt("Blender 3.4 %.3f s", fbx),
-      fmt("%.1fx faster", fbx / cli.fbx));
+  row("Blender glTF exporter vs whole-process CLI", fmt("%.2f", cli.glb.wall) + fmt(" / %.2f s", cli.glb.cpu),
+      fmt("Blender 3.4 %.2f", gltf.wall) + fmt(" / %.2f s", gltf.cpu),
+      fmt("%.1f", gltf.wall / cli.glb.wall) + fmt(" / %.1fx", gltf.cpu / cli.glb.cpu));
+  row("Blender FBX exporter vs whole-process CLI", fmt("%.2f", cli.fbx.wall) + fmt(" / %.2f s", cli.fbx.cpu),
+      fmt("Blender 3.4 %.2f", fbx.wall) + fmt(" / %.2f s", fbx.cpu),
+      fmt("%.1f", fbx.wall / cli.fbx.wall) + fmt(" / %.1fx", fbx.cpu / cli.fbx.cpu));
 }
 
 }  // namespace
@@ -214,7 +238,8 @@ int runCompare(const CompareOptions& o) {
   const std::string npz = (fs::path(dir) / kStandins[1]).string();
   Result<BodyModel> model = loadModel(npz);
   if (!model) return std::fprintf(stderr, "smpl-bench: %s\n", model.message().c_str()), 1;
-  std::printf("Side by side: full-size SMPL stand-in (%lld vertices, %d pose features), %d forward frames\n\n",
+  std::printf("Side by side: full-size SMPL stand-in (%lld vertices, %d pose features), %d forward frames.\n"
+              "Times are wall / CPU (user + system, all threads); ratios are peer / smpl-export.\n\n",
               static_cast<long long>(model->numVertices()), model->numPoseFeatures(), o.frames);
   row("measure", "smpl-export", "peer", "ratio");
   std::printf("|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(18, '-').c_str(),
