@@ -11,6 +11,8 @@ jobs=$(nproc)
 
 scripts/setup-deps.sh
 (cd tests/validator && npm ci --no-audit --no-fund --loglevel=error)
+# three.js, puppeteer-core (drives Debian's chromium; downloads no browser): tests/web
+(cd web && npm ci --no-audit --no-fund --loglevel=error)
 
 # ccache (a test dependency) makes rebuilds of an unchanged tree nearly free.
 launcher=()
