@@ -16,7 +16,9 @@ struct WriterOptions {
   int fbx_version = 7400;      // FBX: 7400 or 7500
   // glTF compact encodings (each optional; see README "Size"):
   double morph_epsilon = 0.0;  // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors
-  bool quantize_morphs = false;  // KHR_mesh_quantization: int16 normalised deltas, per-target scale
+  bool quantize_morphs = false;  // --quantize-morphs; the export job hands it to exportAsset
+                                 // (ExportOptions), which marks MorphTarget::quantized: writers
+                                 // read the mark, not this flag
   bool draco = false;          // KHR_draco_mesh_compression for the base mesh (sequential, order kept)
 };
 

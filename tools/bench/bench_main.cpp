@@ -1,6 +1,6 @@
 // smpl-bench: prints the speed and size table of the product (issue "Speed and
 // size"). --compact: only the compact glTF table. Full-size synthetic models (bench/synthetic_model.h) stand in for the
-// licensed ones. Usage: smpl-bench [--quick] [--anim-minutes M]
+// licensed ones. Usage: smpl-bench [--quick] [--compact] [--anim-minutes M] (--help: usage)
 // smpl-bench --compare [--smplx CHECKOUT]: side by side with the peers (compare.h).
 #include <algorithm>
 #include <chrono>
@@ -17,6 +17,7 @@
 #include "core/load/motion.h"
 #include "core/math/pose_sampler.h"
 #include "exporter/animation.h"
+#include "exporter/morph_scales.h"
 #include "exporter/pipeline.h"
 #include "tools/morph_error.h"
 #include "plugins/writer.h"
@@ -78,14 +79,15 @@ void benchCompact(const BodyModel& model, int repeats) {
                                 {"sparse 1e-5+quant", 1e-5, true, false}, {"draco", 0, false, true},
                                 {"sparse 1e-5+quant+draco", 1e-5, true, true}};
   const Writer* w = writerForPath("x.glb");
+  Asset folded = *asset;  // --quantize-morphs: exportAsset folds each corrective's peak into its weights
+  foldMorphScales(&folded);
   for (const Encoding& e : encodings) {
     WriterOptions o;
     o.morph_epsilon = e.epsilon;
-    o.quantize_morphs = e.quantize;
     o.draco = e.draco;
     std::string bytes;
     const double ms = timeMs(repeats, [&] {
-      Result<std::string> out = w->serialize(*asset, o);
+      Result<std::string> out = w->serialize(e.quantize ? folded : *asset, o);
       bytes = out.ok() ? *out : std::string();
     });
     Result<DecodedMorphs> decoded = decodeMorphs(bytes);
@@ -126,7 +128,7 @@ void benchAnimation(const BodyModel& model, double minutes) {
   Result<AnimationClip> clip = bakeAnimation(model, *asset, motion, AnimationOptions(), "bench");
   const double bake = msSince(start);
   asset->animations.push_back(std::move(*clip));
-  std::printf("| %-14s | bake %.0f min @120 fps (%d frames) | %8.0f ms | %9.0f frames/s |\n", model.name.c_str(),
+  std::printf("| %-14s | bake %g min @120 fps (%d frames) | %8.0f ms | %9.0f frames/s |\n", model.name.c_str(),
               minutes, frames, bake, frames / (bake / 1e3));
   for (const char* ext : {".glb", ".fbx"}) {
     const Writer* w = writerForPath(std::string("x") + ext);
@@ -141,6 +143,10 @@ void benchAnimation(const BodyModel& model, double minutes) {
 
 }  // namespace
 
+const char kUsage[] =
+    "usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"
+    "       smpl-bench --compare [--smplx CHECKOUT] [--standin DIR] [--blender PATH] [--frames N]\n";
+
 int main(int argc, char** argv) {
   bool quick = false;
   double minutes = 10;
@@ -148,6 +154,8 @@ int main(int argc, char** argv) {
   CompareOptions compare;
   bool compare_only = false;
   for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h"))
+      return std::printf("%s", kUsage), 0;
     if (!std::strcmp(argv[i], "--compare")) compare_only = true;
     else if (!std::strcmp(argv[i], "--smplx") && i + 1 < argc) compare.smplx = argv[++i];
     else if (!std::strcmp(argv[i], "--standin") && i + 1 < argc) compare.standin = argv[++i];
@@ -157,9 +165,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--compact")) compact_only = true;
     else if (!std::strcmp(argv[i], "--anim-minutes") && i + 1 < argc) minutes = std::atof(argv[++i]);
     else
-      return std::fprintf(stderr, "usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"
-                                  "       smpl-bench --compare [--smplx CHECKOUT] [--standin DIR] [--blender PATH]"
-                                  " [--frames N]\n"), 1;
+      return std::fprintf(stderr, "%s", kUsage), 1;
   }
   if (compare_only) return runCompare(compare);
   std::printf("smpl-bench: %u hardware threads%s\n\n", std::thread::hardware_concurrency(), quick ? " (quick)" : "");
