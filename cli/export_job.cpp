@@ -10,6 +10,7 @@
 #include "core/io/printable.h"
 #include "core/load/motion.h"
 #include "core/load/motion_fit.h"
+#include "cli/dmpl_job.h"
 #include "cli/producer.h"
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
@@ -119,8 +120,10 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   Result<Asset> asset = buildAsset(model, options);
   if (!asset) return fail(failure, kExitExport, "exporting", job.out, asset.message());
   ExportReport report;
+  if (Status st = addDmplToAsset(model, s, job, *motions, &*asset, &report, failure); !st) return st.error();
   if (Status st = bakeMotions(model, s, job, *motions, &*asset, &report); !st)
     return fail(failure, kExitExport, "exporting", job.out, st.message());
+  noteDmplJointCost(*asset, &report);
   // Quantized targets carry their scale in the weight mapping: fold it here so
   // the sidecar and the file agree.
   if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);

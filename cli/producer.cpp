@@ -15,7 +15,7 @@ namespace {
 // (hashed by identity below).
 const char* const kNotHashed[] = {"--threads", "--quiet",   "-q",       "--force", "--out",
                                   "--out-dir", "--motion-dir", "--memory-limit", "--shard",
-                                  "--manifest", "--model",  "--motion", "--betas-file", "--uv",
+                                  "--manifest", "--model",  "--motion", "--betas-file", "--uv", "--dmpl",
                                   "--help",    "-h",        "--version"};
 
 bool hashed(const std::string& option) {
@@ -72,6 +72,7 @@ Result<ContentHash> producerBase(const Settings& s) {
   if (Status st = addInput("model", s.model, &h); !st) return st.error();
   if (Status st = addInput("betas", s.betas_file, &h); !st) return st.error();
   if (Status st = addInput("uv", s.export_options.uv_obj, &h); !st) return st.error();
+  if (Status st = addInput("dmpl", s.dmpl, &h); !st) return st.error();
   return h;
 }
 

@@ -145,6 +145,15 @@ Status applyOption(const std::string& name, const std::string& value, Settings* 
   } else if (name == "--corrective-weights") {
     if (value != "signed" && value != "unit") return makeError("--corrective-weights: expected 'signed' or 'unit', got '" + value + "'");
     e.encoding = value == "unit" ? CorrectiveEncoding::Unit : CorrectiveEncoding::Signed;
+  } else if (name == "--dmpl") {
+    s->dmpl = value;
+  } else if (name == "--dmpl-count") {
+    Status st = intInto(&s->dmpl_count);
+    if (st && s->dmpl_count < 1) return makeError("--dmpl-count: expected N >= 1, got '" + value + "'");
+    return st;
+  } else if (name == "--dmpl-joints") {
+    if (value != "fixed" && value != "regressed") return makeError("--dmpl-joints: expected 'fixed' or 'regressed', got '" + value + "'");
+    s->dmpl_regressed_joints = value == "regressed";
   } else if (name == "--fbx-version") {
     if (value != "7400" && value != "7500") return makeError("--fbx-version: expected 7400 or 7500, got '" + value + "'");
     s->writer_options.fbx_version = value == "7400" ? 7400 : 7500;
@@ -166,6 +175,8 @@ Status checkConflicts(const Settings& s, const std::vector<std::string>& given) 
     return makeError("--corrective-basis conflicts with --correctives none");
   const bool batch = !s.motion_dir.empty() || !s.out_dir.empty();
   const bool animated = !s.motions.empty() || batch;
+  for (const char* o : {"--dmpl-count", "--dmpl-joints"})
+    if (has(o) && s.dmpl.empty()) return makeError(std::string(o) + " needs --dmpl");
   for (const char* o : {"--fps", "--frames", "--up", "--root-motion", "--betas-from-motion", "--source-fps",
                         "--flat-hand-mean"})
     if (has(o) && !animated) return makeError(std::string(o) + " needs --motion or --motion-dir");
@@ -299,6 +310,13 @@ Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]
                          them (SMPL-X release). OBJ sharing the model's vertex order, or a numpy pair
                          <stem>_uv.npy (U,2) + <stem>_ft.npy (F,3) (give either); none: no UVs
   --name NAME            mesh name (default body)
+  --dmpl FILE|DIR        DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>,
+                         animated from the motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping
+                         in the metadata); without --motion at weight 0. DIR: per motion gender,
+                         DIR/dmpls/<gender>/model.npz or DIR/<gender>/model.npz (AMASS layout)
+  --dmpl-count N         keep the first N DMPL directions (default all)
+  --dmpl-joints fixed|regressed  fixed (default): keep the betas-only skeleton (the cost is printed);
+                         regressed: animate joint translations to follow the displaced template (exact)
   --fbx-units m|cm       FBX geometry units (default m)
   --fbx-version 7400|7500  FBX binary version (default 7400)
 

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/joint_names.h"
+#include "exporter/dmpl_targets.h"
 
 namespace smpl {
 namespace {
@@ -160,6 +161,9 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, 
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
+    if (!asset.metadata.dmpl.targets.empty())  // DMPL soft tissue (dmpl_targets.h)
+      applyDmplFrame(asset, dmplAt(motion, samples[i].frame, samples[i].t, static_cast<int>(asset.metadata.dmpl.targets.size())),
+                     local, up, i, &clip);
     if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
   }
   for (auto& track : clip.rotations) makeContinuous(&track);

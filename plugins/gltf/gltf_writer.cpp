@@ -447,6 +447,10 @@ Status checkClip(const AnimationClip& clip, const Asset& asset) {
     if (track.size() != t_count) return makeError(where + "a rotation track's length is not T");
   if (!clip.root_translation.empty() && clip.root_translation.size() != t_count)
     return makeError(where + "root_translation length is not T");
+  if (!clip.joint_translations.empty() && clip.joint_translations.size() != asset.skeleton.names.size())
+    return makeError(where + "joint_translations do not match the skeleton");
+  for (const auto& track : clip.joint_translations)
+    if (track.size() != t_count) return makeError(where + "a translation track's length is not T");
   const Eigen::Index targets = Eigen::Index(asset.mesh.morph_targets.size());
   if (clip.morph_weights.rows() != 0) {
     Status st = expectShape(("animation '" + clip.name + "' morph_weights").c_str(),
@@ -498,6 +502,12 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node,
     for (const Eigen::Vector3d& p : clip.root_translation)
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
     addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), 0, "translation");
+  }
+  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // --dmpl-joints regressed
+    std::vector<float> xyz;
+    for (const Eigen::Vector3d& p : clip.joint_translations[k])
+      xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
+    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), int(k), "translation");
   }
   if (clip.morph_weights.rows() > 0) {
     std::vector<float> w = rowMajor(clip.morph_weights);

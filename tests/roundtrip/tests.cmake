@@ -174,3 +174,4 @@ add_dependencies(smpl-reference blender_addon)  # the install test needs the zip
 include(${CMAKE_CURRENT_LIST_DIR}/anim_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/compact_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/basis_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/dmpl_tests.cmake)
