@@ -69,9 +69,19 @@ check $? "encoding out of range"
 check $? "--dmpl DIR"
 [ "$(meta "$work/dir.glb.smpl.json" "len(d['dmpl']['targets'])")" = 8 ]; check $? "--dmpl DIR: no targets"
 mkdir -p "$work/motions" && cp "$dm/amass_smplh_dmpl.npz" "$work/motions/"
-"$exe" --model "$dm/amass" --dmpl "$dm/amass" --motion-dir "$work/motions" --out-dir "$work/batch" -q
+"$exe" --model "$dm/amass" --dmpl "$dm/amass" --motion-dir "$work/motions" --out-dir "$work/batch" -q >/dev/null
 check $? "batch with --dmpl DIR"
 [ "$(meta "$work/batch/amass_smplh_dmpl.glb.smpl.json" "d['dmpl']['basis']")" = model.npz ]; check $? "batch: no DMPL"
+# Up to date while the basis is unchanged; a changed basis inside --dmpl DIR rebuilds.
+cp -r "$dm/amass" "$work/amass"
+"$exe" --model "$work/amass" --dmpl "$work/amass" --motion-dir "$work/motions" --out-dir "$work/batch2" -q >/dev/null
+check $? "batch copy"
+"$exe" --model "$work/amass" --dmpl "$work/amass" --motion-dir "$work/motions" --out-dir "$work/batch2" >"$work/stdout"
+tail -n 1 "$work/stdout" | grep -qF "batch: 0 converted, 1 up to date"; check $? "unchanged basis rebuilt: $(tail -n 1 "$work/stdout")"
+/usr/bin/python3 -c "import numpy as np, sys; p = sys.argv[1]; e = np.load(p)['eigvec']; np.savez(p, eigvec=0.5 * e)" \
+  "$work/amass/dmpls/female/model.npz"
+"$exe" --model "$work/amass" --dmpl "$work/amass" --motion-dir "$work/motions" --out-dir "$work/batch2" >"$work/stdout"
+tail -n 1 "$work/stdout" | grep -qF "batch: 1 converted, 0 up to date"; check $? "changed basis not rebuilt: $(tail -n 1 "$work/stdout")"
 "$exe" --model "$dm/amass" --dmpl "$work" --motion "$dm/amass_smplh_dmpl.npz" --out "$work/nodir.glb" 2>"$work/stderr" >/dev/null
 [ $? = 2 ] && grep -qF "no DMPL basis for gender 'female'" "$work/stderr"; check $? "--dmpl DIR without a basis: $(cat "$work/stderr")"
 
