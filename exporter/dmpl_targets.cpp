@@ -103,8 +103,8 @@ Eigen::VectorXd dmplAt(const Motion& motion, int frame, double t, int directions
   return c;
 }
 
-void applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local, const Eigen::Matrix3d& up,
-                    int frame, AnimationClip* clip) {
+Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local, const Eigen::Matrix3d& up,
+                      int frame, AnimationClip* clip) {
   const DmplInfo& info = asset.metadata.dmpl;
   std::map<std::string, int> index;
   for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i) index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
@@ -117,8 +117,12 @@ void applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotation
   const Eigen::MatrixXd da = skinTranslations(s.parents, s.rest_world + delta, local, up) -
                              skinTranslations(s.parents, s.rest_world, local, up);
   clip->dmpl_joint_error = std::max(clip->dmpl_joint_error, maxSkinError(asset.mesh, da));
-  if (!info.animate_joints) return;
-  if (clip->joint_translations.empty()) clip->joint_translations.assign(k, std::vector<Eigen::Vector3d>(clip->morph_weights.rows()));
+  if (!info.animate_joints) return Status();
+  if (clip->joint_translations.empty()) {
+    const uint64_t bytes = static_cast<uint64_t>(k) * static_cast<uint64_t>(clip->morph_weights.rows()) * sizeof(Eigen::Vector3d);
+    if (Status st = clip->charge.add(bytes, clip->name, "joint translations (--dmpl-joints regressed)"); !st) return st;
+    clip->joint_translations.assign(k, std::vector<Eigen::Vector3d>(clip->morph_weights.rows()));
+  }
   for (int j = 0; j < k; ++j) {
     const Eigen::Vector3d dj = delta.row(j).transpose();
     if (j == 0) {
@@ -128,6 +132,7 @@ void applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotation
       clip->joint_translations[j][frame] = s.rest_local.row(j).transpose() + dj - local[j] * dj;
     }
   }
+  return Status();
 }
 
 Status checkDmplCoefficients(const Motion& motion, const std::string& path, int directions,

@@ -45,9 +45,10 @@ Eigen::VectorXd dmplAt(const Motion& motion, int frame, double t, int directions
 // One output frame: morph weights of the DMPL targets, the fixed-joint error,
 // and with animate_joints the joints' local translations (root_translation of
 // `frame` must be filled; `local` = the frame's local rotations as exported,
-// the root's including the up-axis rotation `up`).
-void applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local, const Eigen::Matrix3d& up,
-                    int frame, AnimationClip* clip);
+// the root's including the up-axis rotation `up`). Errors: the joint
+// translations would exceed the memory budget (charged to clip->charge).
+Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local, const Eigen::Matrix3d& up,
+                      int frame, AnimationClip* clip);
 
 // Motion coefficients usable with a basis of `directions` columns: errors
 // name the motion file `path` (shape, NaN from Motion::dmpls_problem, width
