@@ -85,6 +85,11 @@ Status checkClip(const AnimationClip& c, size_t joints, size_t targets) {
   if (!c.root_translation.empty() && c.root_translation.size() != t)
     return makeError(where + std::to_string(c.root_translation.size()) +
                      " root translations; expected " + std::to_string(t));
+  if (!c.joint_translations.empty() && c.joint_translations.size() != joints)
+    return makeError(where + std::to_string(c.joint_translations.size()) + " translation tracks; expected " +
+                     std::to_string(joints));
+  for (const auto& track : c.joint_translations)
+    if (track.size() != t) return makeError(where + "a translation track's length is not " + std::to_string(t));
   if (c.morph_weights.size() != 0 && (c.morph_weights.rows() != Eigen::Index(t) ||
                                       c.morph_weights.cols() != Eigen::Index(targets)))
     return makeError(where + "morph weights " +

@@ -17,6 +17,7 @@
 #include "core/math/forward.h"
 #include "exporter/animation.h"
 #include "exporter/pipeline.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 namespace {
@@ -135,7 +136,7 @@ Eigen::MatrixXd published(const BodyModel& model, const Asset& a, const Motion& 
   return r->vertices * up.transpose();
 }
 
-double bakeAndCompare(bool regressed, double* joint_error) {
+double bakeAndCompare(bool regressed, double* joint_error, Asset* baked = nullptr) {
   Result<BodyModel> model = loadModel(kModel);
   EXPECT_TRUE(model.ok()) << model.message();
   Result<Motion> m = loadMotion(kDmpl + "/amass_smplh_dmpl.npz");
@@ -159,6 +160,10 @@ double bakeAndCompare(bool regressed, double* joint_error) {
     worst = std::max(worst, e.rowwise().norm().maxCoeff());
   }
   *joint_error = clip->dmpl_joint_error;
+  if (baked) {
+    a->animations.push_back(*clip);
+    *baked = *a;
+  }
   return worst;
 }
 
@@ -173,6 +178,26 @@ TEST(DmplBake, FixedJointsCostIsMeasured) {
   const double err = bakeAndCompare(false, &joint_error);
   EXPECT_GT(err, 1e-3);
   EXPECT_LE(err, joint_error + 2e-5);  // the measured cost bounds the error at the sampled frames
+}
+
+// Both writers serialise the per-joint translation tracks and refuse a track
+// of the wrong length.
+TEST(DmplBake, WritersTakeJointTranslations) {
+  double joint_error = 0;
+  Asset a;
+  bakeAndCompare(true, &joint_error, &a);
+  for (const char* out : {"x.glb", "x.fbx"}) {
+    const Writer* w = writerForPath(out);
+    ASSERT_NE(w, nullptr);
+    Result<std::string> bytes = w->serialize(a, WriterOptions());
+    ASSERT_TRUE(bytes.ok()) << out << ": " << bytes.message();
+  }
+  a.animations[0].joint_translations[5].pop_back();
+  for (const char* out : {"x.glb", "x.fbx"}) {
+    Result<std::string> bad = writerForPath(out)->serialize(a, WriterOptions());
+    ASSERT_FALSE(bad.ok()) << out;
+    EXPECT_NE(bad.message().find("translation track"), std::string::npos) << bad.message();
+  }
 }
 
 }  // namespace
