@@ -87,20 +87,18 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         if (!s.quiet) std::printf("note: skipped %s: %s\n", entry.input.c_str(), entry.message.c_str());
         continue;
       }
-      JobFailure failure{kExitOk, ""};
       Result<ModelPick> pick = models.forMotion(motions[i].motion);  // per motion: a folder picks by gender
-      if (!pick) failure = JobFailure{kExitLoad, errorLine("loading", s.model, pick.message())};
       const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
-      Result<ExportReport> r = !pick ? Result<ExportReport>(makeError(failure.message))
-                                     : runExport(*pick->model, s, job, &failure);
+      Result<ExportReport> r = !pick ? Result<ExportReport>(makeError(errorLine("loading", s.model, pick.message())))
+                                     : runExport(*pick->model, s, job);
       if (r) describeOutput(out, record, &entry);
       entry.status = r ? "converted" : "failed";
-      entry.message = r ? "" : failure.message;
+      entry.message = r ? "" : r.message();
       entry.seconds = seconds();
       std::lock_guard<std::mutex> lock(print);
       if (!r) {
         ++summary.failed;
-        std::fprintf(stderr, "%s\n", failure.message.c_str());
+        std::fprintf(stderr, "%s\n", r.message().c_str());
         continue;
       }
       ++summary.converted;

@@ -23,15 +23,13 @@ bool isMotionName(const std::string& name) {
 }
 
 // The motions in `dir`; unreadable entries become errors/notes of `plan`.
-Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* plan, JobFailure* failure) {
+Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* plan) {
   std::error_code ec;
   const fs::file_status st = fs::status(dir, ec);
-  if (ec || !fs::is_directory(st)) {
-    failure->code = kExitLoad;
-    failure->message = errorLine("loading", dir, fs::exists(st) ? "not a directory (--motion-dir)"
-                                                                : "no such directory (--motion-dir)");
-    return makeError(failure->message);
-  }
+  if (ec || !fs::is_directory(st))
+    return makeError(errorLine("loading", dir, fs::exists(st) ? "not a directory (--motion-dir)"
+                                                              : "no such directory (--motion-dir)"),
+                     ErrorKind::Load);
   std::vector<std::string> motions;
   auto it = fs::directory_iterator(dir, ec);
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
@@ -75,11 +73,7 @@ Status checkCollisions(const std::vector<PlannedOutput>& outputs) {
   return Status();
 }
 
-Error usage(JobFailure* failure, const std::string& message) {
-  failure->code = kExitUsage;
-  failure->message = "Error in arguments: " + message;
-  return makeError(failure->message);
-}
+Error usage(const std::string& message) { return makeError("Error in arguments: " + message, ErrorKind::Usage); }
 
 // --shard I/N: this run's share of the (sorted) motions.
 void keepShard(const Settings& s, BatchPlan* plan) {
@@ -96,9 +90,9 @@ void keepShard(const Settings& s, BatchPlan* plan) {
 
 }  // namespace
 
-Result<BatchPlan> planBatch(const Settings& s, JobFailure* failure) {
+Result<BatchPlan> planBatch(const Settings& s) {
   BatchPlan plan;
-  Result<std::vector<std::string>> motions = listMotions(s.motion_dir, &plan, failure);
+  Result<std::vector<std::string>> motions = listMotions(s.motion_dir, &plan);
   if (!motions) return motions.error();
   for (const std::string& m : *motions) {
     PlannedOutput p;
@@ -106,7 +100,7 @@ Result<BatchPlan> planBatch(const Settings& s, JobFailure* failure) {
     p.out = (fs::path(s.out_dir) / (fs::path(m).stem().string() + "." + s.format)).string();
     plan.outputs.push_back(p);
   }
-  if (Status st = checkCollisions(plan.outputs); !st) return usage(failure, st.message());
+  if (Status st = checkCollisions(plan.outputs); !st) return usage(st.message());
   plan.listed = plan.outputs.size();
   keepShard(s, &plan);
   std::vector<std::string> outs, names;
@@ -115,13 +109,9 @@ Result<BatchPlan> planBatch(const Settings& s, JobFailure* failure) {
     names.push_back(baseName(p.out));
     names.push_back(baseName(p.out) + ".smpl.json");
   }
-  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st) return usage(failure, st.message());
+  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st) return usage(st.message());
   Result<ContentHash> base = producerBase(s);
-  if (!base) {
-    failure->code = kExitLoad;
-    failure->message = "Error loading " + base.message();  // names the input file
-    return makeError(failure->message);
-  }
+  if (!base) return makeError("Error loading " + base.message(), ErrorKind::Load);  // names the input file
   removeStaleTemps(s.out_dir, names);
   for (PlannedOutput& p : plan.outputs) {
     p.producer_hash = producerHash(*base, {p.motion});

@@ -42,8 +42,8 @@ struct BatchPlan {
   size_t listed = 0;                      // motions in DIR before --shard kept this run's share
 };
 
-// Fills `failure` (code and one-line message) and returns an Error when the
-// run must not start.
-Result<BatchPlan> planBatch(const Settings& settings, JobFailure* failure);
+// The plan, or an error (one line for the user; its kind gives the exit
+// code) when the run must not start.
+Result<BatchPlan> planBatch(const Settings& settings);
 
 }  // namespace smpl

@@ -9,10 +9,8 @@
 namespace smpl {
 namespace {
 
-Status failWith(JobFailure* failure, const std::string& path, const std::string& message) {
-  failure->code = kExitLoad;
-  failure->message = errorLine("loading", path, message);
-  return makeError(failure->message);
+Status failWith(const std::string& path, const std::string& message) {
+  return makeError(errorLine("loading", path, message), ErrorKind::Load);
 }
 
 // The basis file: --dmpl FILE, or from --dmpl DIR by the first motion's gender.
@@ -36,23 +34,23 @@ void noteIgnoredDmpls(const std::vector<Motion>& motions, ExportReport* report) 
 }  // namespace
 
 Status addDmplToAsset(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                      Asset* asset, ExportReport* report, JobFailure* failure) {
+                      Asset* asset, ExportReport* report) {
   if (s.dmpl.empty()) {
     noteIgnoredDmpls(motions, report);
     return Status();
   }
   Result<std::string> path = dmplPath(s, motions, report);
-  if (!path) return failWith(failure, s.dmpl, path.message());
+  if (!path) return failWith(s.dmpl, path.message());
   Result<DmplBasis> basis = loadDmplBasis(*path, model.numVertices());
-  if (!basis) return failWith(failure, *path, basis.message());
+  if (!basis) return failWith(*path, basis.message());
   const int total = static_cast<int>(basis->directions.cols());
   if (s.dmpl_count > total)
-    return failWith(failure, *path, "--dmpl-count " + std::to_string(s.dmpl_count) + ": the basis has " +
+    return failWith(*path, "--dmpl-count " + std::to_string(s.dmpl_count) + ": the basis has " +
                                         std::to_string(total) + " directions");
   std::vector<const Eigen::MatrixXd*> coefficients;
   for (size_t i = 0; i < motions.size(); ++i) {
     if (Status st = checkDmplCoefficients(motions[i], job.motions[i], total, *path); !st)
-      return failWith(failure, job.motions[i], st.message());
+      return failWith(job.motions[i], st.message());
     if (motions[i].dmpls.rows() > 0) coefficients.push_back(&motions[i].dmpls);
     else report->notes.push_back(motions[i].name + ": no 'dmpls' in the motion; its DMPL targets stay at rest");
   }

@@ -16,10 +16,10 @@
 
 namespace smpl {
 
-// Before baking. Errors carry the exit code in `failure` (2: basis or
-// coefficients unusable) and name the file.
+// Before baking. Errors (ErrorKind::Load, exit 2: basis or coefficients
+// unusable) are one "Error loading <file>: ..." line.
 Status addDmplToAsset(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                      Asset* asset, ExportReport* report, JobFailure* failure);
+                      Asset* asset, ExportReport* report);
 
 // After baking: one note per clip with the fixed-joint cost (max vertex error, mm).
 void noteDmplJointCost(const Asset& asset, ExportReport* report);

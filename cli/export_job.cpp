@@ -22,11 +22,17 @@
 namespace smpl {
 namespace {
 
-Error fail(JobFailure* failure, ExitCode code, const std::string& verb, const std::string& path,
-           const std::string& message) {
-  failure->code = code;
-  failure->message = errorLine(verb, path, message);
-  return makeError(failure->message);
+Error fail(ErrorKind kind, const std::string& verb, const std::string& path, const std::string& message) {
+  return makeError(errorLine(verb, path, message), kind);
+}
+
+// An export error that is really about the options (too many betas for the
+// model, --shape-keys beyond its directions) is a usage error.
+// An input read while building (the --uv file) fails as a load error.
+Error exportFailure(const std::string& out, const Error& e, const std::string& input = "") {
+  if (e.kind == ErrorKind::Usage) return fail(ErrorKind::Usage, "in", "arguments", e.message);
+  if (e.kind == ErrorKind::Load) return fail(ErrorKind::Load, "loading", input, e.message);
+  return fail(ErrorKind::Export, "exporting", out, e.message);
 }
 
 void drawProgress(const std::string& name, double fraction) {
@@ -36,27 +42,33 @@ void drawProgress(const std::string& name, double fraction) {
   if (fraction >= 1.0) std::fprintf(stderr, "\n");
 }
 
-Result<std::vector<Motion>> loadMotions(const BodyModel& model, const Settings& s, const ExportJob& job,
-                                        JobFailure* failure) {
+Result<std::vector<Motion>> loadMotions(const BodyModel& model, const Settings& s, const ExportJob& job) {
   std::vector<Motion> motions;
   MotionOptions options;
   options.source_fps = s.source_fps;
   for (const std::string& path : job.motions) {
     Result<Motion> m = loadMotion(path, options);
-    if (!m) return fail(failure, kExitLoad, "loading", path, m.message());
+    if (!m) return fail(ErrorKind::Load, "loading", path, m.message());
     // Fit hands need the model's PCA basis and mean.
     if (Status st = resolveFitHands(model, s.flat_hand_mean, path, &*m); !st)
-      return fail(failure, kExitLoad, "loading", path, st.message());
+      return fail(ErrorKind::Load, "loading", path, st.message());
     motions.push_back(std::move(*m));
   }
   return motions;
 }
 
-// Betas from the first motion when the user gave none (--betas-from-motion).
-void betasFromMotion(const BodyModel& model, const std::vector<Motion>& motions, ExportOptions* o) {
-  if (motions.empty() || motions[0].betas.empty()) return;
+// Betas from the first motion when the user gave none; --betas-from-motion
+// makes a motion without betas an error.
+Status betasFromMotion(const BodyModel& model, const Settings& s, const ExportJob& job,
+                       const std::vector<Motion>& motions, ExportOptions* o) {
+  if (motions.empty() || motions[0].betas.empty()) {
+    if (s.betas_from_motion && !job.motions.empty())
+      return fail(ErrorKind::Load, "loading", job.motions[0], "no betas in the motion (--betas-from-motion)");
+    return Status();
+  }
   const size_t n = std::min(motions[0].betas.size(), static_cast<size_t>(model.numBetas()));
   o->betas.assign(motions[0].betas.begin(), motions[0].betas.begin() + n);
+  return Status();
 }
 
 Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
@@ -67,7 +79,15 @@ Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& j
       if (note.rfind("betas:", 0) != 0 || (!s.betas_given && i == 0)) report->notes.push_back(m.name + ": " + note);
     Progress progress;
     if (job.progress) progress = [&](double f) { drawProgress(m.name, f); };
-    Result<AnimationClip> clip = bakeAnimation(model, *asset, m, s.animation, job.motions[i], progress);
+    AnimationOptions frames = s.animation;  // --frames A:B applies to each motion, clamped to its length
+    const int total = static_cast<int>(m.frames.size());
+    if (frames.end_frame > total && frames.first_frame < total) {
+      report->notes.push_back(m.name + ": --frames " + std::to_string(frames.first_frame) + ":" +
+                              std::to_string(frames.end_frame) + " ends after the motion's " + std::to_string(total) +
+                              " frames; baked frames " + std::to_string(frames.first_frame) + ":" + std::to_string(total));
+      frames.end_frame = total;
+    }
+    Result<AnimationClip> clip = bakeAnimation(model, *asset, m, frames, job.motions[i], progress);
     if (!clip) return clip.error();
     Result<MotionMapping> mapping = mapMotion(model, m, job.motions[i]);
     if (mapping && !mapping->dropped.empty())
@@ -104,36 +124,36 @@ std::string errorLine(const std::string& verb, const std::string& path, const st
 
 namespace {
 
-Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& s, const ExportJob& job,
-                                        JobFailure* failure) {
+Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& s, const ExportJob& job) {
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(job.out);
-  if (!writer) return fail(failure, kExitUsage, "in", "arguments", "no writer for " + job.out);
+  if (!writer) return fail(ErrorKind::Usage, "in", "arguments", "no writer for " + job.out);
   if (job.producer_hash.empty())  // a batch (planBatch) cleans all its outputs' temporaries at once
     removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json"});
-  Result<std::vector<Motion>> motions = loadMotions(model, s, job, failure);
+  Result<std::vector<Motion>> motions = loadMotions(model, s, job);
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
-  if (!s.betas_given) betasFromMotion(model, *motions, &options);
+  if (!s.betas_given)
+    if (Status st = betasFromMotion(model, s, job, *motions, &options); !st) return st.error();
   if (options.encoding == CorrectiveEncoding::Auto)  // baked weights must survive importers that clamp
     options.encoding = motions->empty() ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
   Result<Asset> asset = buildAsset(model, options);
-  if (!asset) return fail(failure, kExitExport, "exporting", job.out, asset.message());
+  if (!asset) return exportFailure(job.out, asset.error(), options.uv_obj);
   ExportReport report;
-  if (Status st = addDmplToAsset(model, s, job, *motions, &*asset, &report, failure); !st) return st.error();
+  if (Status st = addDmplToAsset(model, s, job, *motions, &*asset, &report); !st) return st.error();
   if (Status st = bakeMotions(model, s, job, *motions, &*asset, &report); !st)
-    return fail(failure, kExitExport, "exporting", job.out, st.message());
+    return exportFailure(job.out, st.error());
   noteDmplJointCost(*asset, &report);
   // Quantized targets carry their scale in the weight mapping: fold it here so
   // the sidecar and the file agree.
   if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
-  if (Status st = validateAsset(*asset); !st) return fail(failure, kExitExport, "exporting", job.out, st.message());
+  if (Status st = validateAsset(*asset); !st) return exportFailure(job.out, st.error());
   Result<std::string> producer = producerHashFor(s, job);
-  if (!producer) return fail(failure, kExitLoad, "loading", s.model, producer.message());
+  if (!producer) return fail(ErrorKind::Load, "loading", s.model, producer.message());
   Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
-  if (!bytes) return fail(failure, kExitExport, "exporting", job.out, bytes.message());
+  if (!bytes) return exportFailure(job.out, bytes.error());
   if (Status st = writeOutputs(job.out, *bytes, sidecarJson(*asset, *producer)); !st)
-    return fail(failure, kExitSave, "saving", job.out, st.message());
+    return fail(ErrorKind::Write, "saving", job.out, st.message());
   report.options = options;
   report.bytes = bytes->size();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -148,13 +168,13 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
 
 // Batch jobs run on worker threads, where an escaping exception would abort
 // the process: the job's own last-resort catch turns it into a job failure.
-Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job, JobFailure* failure) {
+Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const ExportJob& job) {
   try {
-    return runExportUnguarded(model, s, job, failure);
+    return runExportUnguarded(model, s, job);
   } catch (const std::bad_alloc&) {
-    return fail(failure, kExitExport, "exporting", job.out, "out of memory (set a lower --memory-limit)");
+    return fail(ErrorKind::Export, "exporting", job.out, "out of memory (set a lower --memory-limit)");
   } catch (const std::exception& e) {
-    return fail(failure, kExitExport, "exporting", job.out, std::string("internal error: ") + e.what());
+    return fail(ErrorKind::Export, "exporting", job.out, std::string("internal error: ") + e.what());
   }
 }
 

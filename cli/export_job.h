@@ -7,11 +7,10 @@
 
 #include "core/body_model.h"
 #include "core/result.h"
+#include "cli/exit_code.h"
 #include "cli/settings.h"
 
 namespace smpl {
-
-enum ExitCode { kExitOk = 0, kExitUsage = 1, kExitLoad = 2, kExitExport = 3, kExitSave = 4 };
 
 struct ExportJob {
   std::string out;
@@ -29,22 +28,18 @@ struct ExportReport {
   ExportOptions options;           // as used (betas may come from the motion)
 };
 
-struct JobFailure {
-  ExitCode code;
-  std::string message;  // "Error loading walk.npz: ..."
-};
-
 // "Error <verb> <path>: <reason>", without repeating the path when the reason
 // already starts with it (core errors name their file).
 std::string errorLine(const std::string& verb, const std::string& path, const std::string& message);
 
-// Returns the report, or fills `failure` and returns an Error. Before any
+// Returns the report, or an error whose message is the whole line for the
+// user ("Error loading walk.npz: ...") and whose kind gives the exit code
+// (cli/exit_code.h). Before any
 // work, stale temporaries of this output and its sidecar are removed
 // (file_io.h; unless the job comes from planBatch, which removed them for
 // every output: job.producer_hash set); after building, the asset must pass validateAsset (exit 3,
 // nothing written); the output and its sidecar are committed together
 // (writeFilesTogether, sidecar last): both new or both as before.
-Result<ExportReport> runExport(const BodyModel& model, const Settings& settings, const ExportJob& job,
-                               JobFailure* failure);
+Result<ExportReport> runExport(const BodyModel& model, const Settings& settings, const ExportJob& job);
 
 }  // namespace smpl

@@ -14,8 +14,10 @@
 
 #include "cli/batch.h"
 #include "cli/batch_plan.h"
+#include "cli/betas_file.h"
 #include "cli/export_job.h"
 #include "cli/model_source.h"
+#include "cli/options.h"
 #include "cli/output_guard.h"
 #include "cli/settings.h"
 #include "core/io/printable.h"
@@ -51,7 +53,7 @@ void printSummary(const std::string& out, const ExportReport& r, const PruningEr
 
 int run(int argc, char** argv, Stage* stage) {
   Result<Settings> parsed = parseSettings(argc, argv);
-  if (!parsed) return report("Error in arguments: " + parsed.message(), kExitUsage);
+  if (!parsed) return report("Error in arguments: " + parsed.message(), exitCodeFor(parsed.kind()));
   Settings& s = *parsed;
   if (s.help) return std::printf("%s", usageText().c_str()), kExitOk;
   if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
@@ -59,12 +61,11 @@ int run(int argc, char** argv, Stage* stage) {
 
   // Before any work: outputs must not be inputs; a batch is planned (motion
   // listing, name collisions, up-to-date decisions) and refused as a whole.
-  JobFailure planned{kExitOk, ""};
   Result<BatchPlan> plan = BatchPlan();
-  if (!s.motion_dir.empty()) plan = planBatch(s, &planned);
+  if (!s.motion_dir.empty()) plan = planBatch(s);
   else if (Status st = checkOutputsAreNotInputs({s.out}, runInputs(s, s.motions)); !st)
-    planned = {kExitUsage, "Error in arguments: " + st.message()};
-  if (planned.code != kExitOk) return report(planned.message, planned.code);
+    plan = makeError("Error in arguments: " + st.message(), ErrorKind::Usage);
+  if (!plan) return report(plan.message(), exitCodeFor(plan.kind()));
 
   if (!s.betas_file.empty()) {
     stage->set("loading", s.betas_file, kExitLoad);
@@ -94,10 +95,8 @@ int run(int argc, char** argv, Stage* stage) {
   if (!pick->note.empty() && !s.quiet) std::printf("note: %s\n", printable(pick->note, 4096).c_str());
   const BodyModel& loaded = *pick->model;
   stage->set("exporting", s.out, kExitExport);
-  JobFailure failure{kExitOk, ""};
-  Result<ExportReport> result =
-      runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""}, &failure);
-  if (!result) return report(failure.message, failure.code);
+  Result<ExportReport> result = runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""});
+  if (!result) return report(result.message(), exitCodeFor(result.kind()));
   if (!s.quiet) {
     Result<PruningError> err = measurePruningError(loaded, result->options, s.error_poses);
     if (!err) return report("Error measuring " + s.out + ": " + err.message(), kExitExport);

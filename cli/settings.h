@@ -1,5 +1,6 @@
 // Command-line settings of smpl-export, parsed and checked before any work
-// (gltfpack's discipline: unknown or conflicting options fail first).
+// (gltfpack's discipline: unknown or conflicting options fail first). The
+// options themselves are described once, in cli/options.h.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +24,7 @@ struct Settings {
   std::string format = "glb";        // batch output format
   AnimationOptions animation;
   bool betas_given = false;          // --betas or --betas-file; else betas come from the motion
+  bool betas_from_motion = false;    // --betas-from-motion: the motion must carry betas
   ExportOptions export_options;
   WriterOptions writer_options;
   bool quiet = false;
@@ -42,16 +44,8 @@ struct Settings {
   bool dmpl_regressed_joints = false;  // --dmpl-joints regressed: animate joint translations (published math)
 };
 
-// Parse argv; the error text is one line for the user.
+// Parse argv through the option table, then check the rules between options.
+// Errors are one line for the user, of kind Usage (exit 1).
 Result<Settings> parseSettings(int argc, const char* const* argv);
-
-// Usage text for --help.
-std::string usageText();
-
-// Betas from .npy, .npz (key 'betas') or .json ([..] or {"betas": [..]}).
-// Arrays of shape (T,B) follow core/load/betas_rows.h: identical rows -> that
-// row; differing rows -> their mean, and `note` (if given) says so with the
-// largest deviation.
-Result<std::vector<double>> readBetasFile(const std::string& path, std::string* note = nullptr);
 
 }  // namespace smpl

@@ -10,11 +10,19 @@
 
 namespace smpl {
 
+// What kind of failure an error is, for the exit code of a command-line
+// program (cli/exit_code.h). Readers and the math leave it Unspecified; the
+// stage that knows (argument checks, loading, exporting, writing) sets it.
+enum class ErrorKind { Unspecified, Usage, Load, Export, Write };
+
 struct Error {
   std::string message;
+  ErrorKind kind = ErrorKind::Unspecified;
 };
 
-inline Error makeError(std::string message) { return Error{std::move(message)}; }
+inline Error makeError(std::string message, ErrorKind kind = ErrorKind::Unspecified) {
+  return Error{std::move(message), kind};
+}
 
 template <class T>
 class Result {
@@ -32,6 +40,7 @@ class Result {
   const T& operator*() const { return value(); }
   const Error& error() const { return std::get<1>(v_); }
   const std::string& message() const { return std::get<1>(v_).message; }
+  ErrorKind kind() const { return std::get<1>(v_).kind; }
 
  private:
   std::variant<T, Error> v_;
@@ -41,15 +50,16 @@ class Result {
 class Status {
  public:
   Status() = default;
-  Status(Error error) : error_(std::move(error.message)), failed_(true) {}  // NOLINT
+  Status(Error error) : error_(std::move(error)), failed_(true) {}  // NOLINT
   static Status success() { return Status(); }
   bool ok() const { return !failed_; }
   explicit operator bool() const { return ok(); }
-  const std::string& message() const { return error_; }
-  Error error() const { return Error{error_}; }
+  const std::string& message() const { return error_.message; }
+  ErrorKind kind() const { return error_.kind; }
+  Error error() const { return error_; }
 
  private:
-  std::string error_;
+  Error error_;
   bool failed_ = false;
 };
 

@@ -16,27 +16,28 @@ Eigen::VectorXd toVector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
 }
 
+// Options that do not fit the model: usage errors (exit 1 in the CLI).
 Status checkOptions(const BodyModel& model, const ExportOptions& o) {
   if (static_cast<int>(o.betas.size()) > model.numBetas())
     return makeError("betas: " + std::to_string(o.betas.size()) + " values given; the model " + model.name +
-                     " has " + std::to_string(model.numBetas()));
+                     " has " + std::to_string(model.numBetas()), ErrorKind::Usage);
   if (static_cast<int>(o.expression.size()) > model.numExpressions())
     return makeError("expression: " + std::to_string(o.expression.size()) + " values given; the model " +
-                     model.name + " has " + std::to_string(model.numExpressions()));
+                     model.name + " has " + std::to_string(model.numExpressions()), ErrorKind::Usage);
   if (o.max_influences < 1 || o.max_influences > 8)
-    return makeError("--max-influences must be between 1 and 8, got " + std::to_string(o.max_influences));
+    return makeError("--max-influences must be between 1 and 8, got " + std::to_string(o.max_influences), ErrorKind::Usage);
   if (o.shape_keys < 0 || o.shape_keys > model.numBetas())
     return makeError("--shape-keys " + std::to_string(o.shape_keys) + ": the model has " +
-                     std::to_string(model.numBetas()) + " shape directions");
+                     std::to_string(model.numBetas()) + " shape directions", ErrorKind::Usage);
   if (o.expression_keys < 0 || o.expression_keys > model.numExpressions())
     return makeError("--expression-keys " + std::to_string(o.expression_keys) + ": the model has " +
-                     std::to_string(model.numExpressions()) + " expression directions");
+                     std::to_string(model.numExpressions()) + " expression directions", ErrorKind::Usage);
   if (o.corrective_basis < 0 || o.corrective_basis > model.numPoseFeatures())
     return makeError("--corrective-basis " + std::to_string(o.corrective_basis) + ": expected 1.." +
                      std::to_string(model.numPoseFeatures()) + " (the model has " +
-                     std::to_string(model.numPoseFeatures()) + " pose correctives)");
+                     std::to_string(model.numPoseFeatures()) + " pose correctives)", ErrorKind::Usage);
   if (o.corrective_basis > 0 && !o.correctives)
-    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)");
+    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)", ErrorKind::Usage);
   return Status();
 }
 
@@ -195,7 +196,7 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
   Result<std::optional<UvLayout>> uv = resolveUvLayout(o.uv_obj, model);  // model UVs, --uv FILE or none
-  if (!uv) return uv.error();
+  if (!uv) return makeError(uv.message(), ErrorKind::Load);  // a UV file that cannot be read: an input
   Asset asset;
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);

@@ -37,7 +37,7 @@ Result<std::pair<std::string, std::string>> uvNumpyPairPaths(const std::string& 
     if (hasSuffix(path, suffix)) stem = path.substr(0, path.size() - 7);
   if (stem.empty())
     return makeError(path + ": numpy UVs must be a pair named <stem>_uv.npy (or _vt.npy) and <stem>_ft.npy");
-  if (!exists(path)) return makeError(path + ": cannot open");
+  if (!exists(path)) return makeError(path + ": cannot open: No such file or directory");
   std::string coords = stem + "_uv.npy";
   if (!exists(coords) && exists(stem + "_vt.npy")) coords = stem + "_vt.npy";
   const std::string faces = stem + "_ft.npy";

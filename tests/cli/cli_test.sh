@@ -44,7 +44,21 @@ expect_failure missing-model 2 "Error loading $work/none.npz" --model "$work/non
 expect_failure truncated-npz 2 "truncated.npz" --model "$work/truncated.npz" --out "$work/out.glb"
 expect_failure truncated-pkl 2 "truncated.pkl" --model "$work/truncated.pkl" --out "$work/out.glb"
 expect_failure hostile-pkl 2 "posix.system" --model "$work/hostile.pkl" --out "$work/out.glb"
-expect_failure too-many-betas 3 "11 values given" --model "$models/smpl_small.npz" --out "$work/out.glb" --betas 0,0,0,0,0,0,0,0,0,0,1
+expect_failure too-many-betas 1 "Error in arguments: betas: 11 values given" --model "$models/smpl_small.npz" --out "$work/out.glb" --betas 0,0,0,0,0,0,0,0,0,0,1
+expect_failure too-many-influences 1 "Error in arguments: --max-influences must be between 1 and 8" --model "$models/smpl_small.npz" --out "$work/out.glb" --max-influences 9
+expect_failure too-many-shape-keys 1 "Error in arguments: --shape-keys 100" --model "$models/smpl_small.npz" --out "$work/out.glb" --shape-keys 100
+expect_failure missing-uv 2 "Error loading $work/no_such.obj: cannot open: No such file or directory" --model "$models/smpl_small.npz" --out "$work/out.glb" --uv "$work/no_such.obj"
+expect_failure glb-option-in-fbx-batch 1 "--draco applies only to glTF output" --model builtin --motion-dir "$work" --out-dir "$work/b" --format fbx --draco
+expect_failure flag-with-value 1 "option --draco takes no value" --model builtin --out "$work/out.glb" --draco=yes
+expect_failure alias-twice 1 "option --quiet given twice" --model builtin --out "$work/out.glb" -q --quiet
+expect_failure frames-after-motion 3 "--frames 70:100 is outside the motion's 60 frames" --model builtin --out "$work/out.glb" --motion "$fixtures/motions/smpl_72.npz" --frames 70:100
+expect_failure betas-from-motion-without-betas 2 "no betas in the motion (--betas-from-motion)" --model builtin --out "$work/out.glb" --motion "$fixtures/motions/smpl_72.npz" --betas-from-motion
+# --frames A:B with B past a motion's end: that motion is baked to its end, with a note.
+"$exe" --model builtin --out "$work/clamp.glb" --motion "$fixtures/motions/smpl_72.npz" --frames 10:100 >"$work/stdout" 2>&1
+[ $? = 0 ]; check "--frames 10:100 on 60 frames: $(cat "$work/stdout")" $?
+grep -q "animation: 50 frames" "$work/stdout"; check "--frames clamp: 50 frames baked" $?
+grep -q "note: smpl_72: --frames 10:100 ends after the motion's 60 frames; baked frames 10:60" "$work/stdout"
+check "--frames clamp note" $?
 expect_failure unwritable 4 "Error saving" --model "$models/smpl_small.npz" --out "$work/no/such/dir/out.glb"
 [ ! -e "$work/hostile-ran" ]; check "hostile pickle executed something" $?
 

@@ -50,8 +50,8 @@ for uv in smplx_pair_uv.npy smplx_pair_ft.npy smplx_release_uv.obj; do
   [ "$(glb_info "$work/pair.glb")" = "$split True" ]; st=$?; check "--uv $uv: $(glb_info "$work/pair.glb")" $st
 done
 "$exe" --model "$rel/smplx_release.npz" --out "$work/bad.glb" --uv "$rel/lonely_uv.npy" >"$work/out" 2>&1
-[ $? = 3 ]; st=$?; check "missing UV partner exits 3" $st
-grep -q "lonely_uv.npy: its partner lonely_ft.npy does not exist" "$work/out"; st=$?; check "partner error: $(cat "$work/out")" $st
+[ $? = 2 ]; st=$?; check "missing UV partner exits 2 (an input cannot be loaded)" $st
+grep -q "Error loading $rel/lonely_uv.npy: its partner lonely_ft.npy does not exist" "$work/out"; st=$?; check "partner error: $(cat "$work/out")" $st
 "$exe" --model "$rel/smpl_bad_ft.npz" --out "$work/bad.glb" >"$work/out" 2>&1
 [ $? = 2 ]; st=$?; check "bad ft exits 2" $st
 grep -q "smpl_bad_ft.npz: 'ft' has index" "$work/out"; st=$?; check "bad ft error: $(cat "$work/out")" $st

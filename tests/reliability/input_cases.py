@@ -137,13 +137,13 @@ fail("--motion /dev/zero", base("--motion", "/dev/zero"), 2, ["/dev/zero", "not 
 # A directory is a model folder (issue 11): without released model names it is one error line.
 fail("--model a directory", ["--model", work, "--out", OUT], 2, [str(work), "no model files with the released names"], [])
 
-fail("--uv /dev/zero", base("--uv", "/dev/zero"), 3, ["/dev/zero", "not a regular file"], [])
+fail("--uv /dev/zero", base("--uv", "/dev/zero"), 2, ["/dev/zero", "not a regular file"], [])
 
 # ---- kind 5: numbers validated where they enter ----------------------------------
 n_vertices = np.load(MODEL)["v_template"].shape[0]
 wrap_obj = work / "wrap.obj"  # 2^32 + 1 used to wrap to vertex 1 when cast to int
 wrap_obj.write_text("".join(f"v 0 0 0\n" for _ in range(n_vertices)) + "vt 0 0\nf 4294967297/1 2/1 3/1\n")
-fail("UV face index beyond the int range", base("--uv", wrap_obj), 3, ["wrap.obj:", "4294967297/1"], [wrap_obj])
+fail("UV face index beyond the int range", base("--uv", wrap_obj), 2, ["wrap.obj:", "4294967297/1"], [wrap_obj])
 for label, value in (("NaN", np.nan), ("Inf", np.inf), ("1e300", 1e300)):
     betas = work / f"betas_{label}.npy"
     np.save(betas, np.array([0.5, value, 0.0]))

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/betas_file.h"
+#include "cli/options.h"
 #include "cli/settings.h"
 #include "core/io/npz.h"
 #include "core/load/motion.h"

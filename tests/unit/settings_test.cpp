@@ -1,8 +1,11 @@
+#include "cli/betas_file.h"
+#include "cli/options.h"
 #include "cli/settings.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 
 namespace smpl {
 namespace {
@@ -131,6 +134,38 @@ TEST(SettingsMemory, BetasAndExpressionOnTheCommandLineAreBounded) {
   s = parse({"--model", "builtin", "--out", "a.glb", "--expression", "-1001"});
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.message().rfind("--expression: value[0] is -1001", 0), 0u) << s.message();
+}
+
+}  // namespace
+}  // namespace smpl
+
+namespace smpl {
+namespace {
+
+// Every batch-only, FBX-only and glTF-only option of the table is refused
+// where it does not apply, with the table's rule in the message.
+TEST(OptionTable, EveryRuleIsEnforced) {
+  int checked = 0;
+  for (const OptionSpec& o : optionTable()) {
+    const char* out = o.applies == Applies::Fbx ? "a.glb" : "a.fbx";
+    if (o.applies != Applies::Batch && o.applies != Applies::Fbx && o.applies != Applies::Gltf &&
+        o.applies != Applies::Motion)
+      continue;
+    std::vector<const char*> args = {"--model", "builtin", "--out", out, o.name};
+    const std::map<std::string, std::string> valid = {{"--fbx-units", "cm"}, {"--fbx-version", "7500"}, {"--up", "y"},
+                                                      {"--root-motion", "keep"}, {"--frames", "0:1"}, {"--format", "glb"},
+                                                      {"--shard", "0/1"}, {"--manifest", "m.jsonl"}, {"--corrective-epsilon", "0.001"}};
+    const std::string value = valid.count(o.name) ? valid.at(o.name) : "1";
+    if (o.value) args.push_back(value.c_str());
+    if (std::string(o.name) == "--motion-dir" || std::string(o.name) == "--out-dir") continue;  // these start batch mode
+    Result<Settings> s = parse(args);
+    ASSERT_FALSE(s.ok()) << o.name;
+    EXPECT_NE(s.message().find(appliesRule(o.applies)), std::string::npos) << s.message();
+    EXPECT_EQ(s.kind(), ErrorKind::Usage);
+    ++checked;
+  }
+  EXPECT_GE(checked, 15);
+  for (const OptionSpec& o : optionTable()) EXPECT_TRUE(o.help && *o.help) << o.name;
 }
 
 }  // namespace

@@ -1,0 +1,384 @@
+#include "cli/options.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "cli/settings.h"
+#include "core/load/validate_inputs.h"
+#include "core/memory_budget.h"
+
+namespace smpl {
+namespace {
+
+Error usageError(const std::string& message) { return makeError(message, ErrorKind::Usage); }
+
+Result<double> parseNumber(const std::string& text, const std::string& option) {
+  errno = 0;
+  char* end = nullptr;
+  double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v))
+    return usageError(option + ": '" + text + "' is not a finite number");
+  return v;
+}
+
+Result<int> parseInt(const std::string& text, const std::string& option) {
+  Result<double> v = parseNumber(text, option);
+  if (!v || *v != std::floor(*v) || std::abs(*v) > 1e6) return usageError(option + ": '" + text + "' is not an integer");
+  return static_cast<int>(*v);
+}
+
+Status intInto(const std::string& value, const char* option, int* target) {
+  Result<int> v = parseInt(value, option);
+  if (!v) return v.error();
+  *target = *v;
+  return Status();
+}
+
+// `value` must be one of `choices`; returns its index.
+Result<int> choice(const std::string& value, const char* option, std::vector<const char*> choices) {
+  std::string expected;
+  for (size_t i = 0; i < choices.size(); ++i) {
+    if (value == choices[i]) return static_cast<int>(i);
+    expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string("'") + choices[i] + "'";
+  }
+  return usageError(std::string(option) + ": expected " + expected + ", got '" + value + "'");
+}
+
+Result<double> rate(const std::string& value, const char* option, double lo, double hi, const char* lo_bracket) {
+  Result<double> v = parseNumber(value, option);
+  if (!v || *v < lo || *v > hi || (*lo_bracket == '(' && *v == lo)) {
+    std::ostringstream range;
+    range << lo_bracket << lo << ", " << hi << "]";
+    return usageError(std::string(option) + ": expected a rate in " + range.str() + ", got '" + value + "'");
+  }
+  return *v;
+}
+
+Result<std::vector<double>> parseList(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t comma = text.find(',', start);
+    Result<double> v = parseNumber(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option);
+    if (!v) return v.error();
+    values.push_back(*v);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (Status st = checkCoefficients(values, option, "value"); !st) return usageError(st.message());
+  return values;
+}
+
+// "A:B" (B exclusive, either may be empty) -> frame range.
+Status parseFrames(const std::string& value, AnimationOptions* a) {
+  size_t colon = value.find(':');
+  if (colon == std::string::npos) return usageError("--frames: expected A:B, got '" + value + "'");
+  const std::string first = value.substr(0, colon), end = value.substr(colon + 1);
+  if (!first.empty()) {
+    Result<int> v = parseInt(first, "--frames");
+    if (!v || *v < 0) return usageError("--frames: bad start '" + first + "'");
+    a->first_frame = *v;
+  }
+  if (!end.empty()) {
+    Result<int> v = parseInt(end, "--frames");
+    if (!v || *v <= a->first_frame) return usageError("--frames: end must be after start in '" + value + "'");
+    a->end_frame = *v;
+  }
+  return Status();
+}
+
+// "I/N", 0 <= I < N: this run's share of a batch (cli/batch_shard.h).
+Status parseShard(const std::string& value, Settings* s) {
+  const size_t slash = value.find('/');
+  Result<int> i = parseInt(value.substr(0, slash), "--shard");
+  Result<int> n = parseInt(slash == std::string::npos ? "" : value.substr(slash + 1), "--shard");
+  if (!i || !n || *n < 1 || *i < 0 || *i >= *n)
+    return usageError("--shard: expected I/N with 0 <= I < N (e.g. 0/8), got '" + value + "'");
+  s->shard_index = *i;
+  s->shard_count = *n;
+  return Status();
+}
+
+using S = Settings;
+using V = const std::string&;
+
+const std::vector<OptionSpec> kOptions = {
+    {"--model", nullptr, "PATH|DIR|builtin", Applies::Any, "",
+     "model file (.npz or .pkl from the model's authors); a folder of released model files (picked "
+     "per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz, AMASS smplh/male/model.npz, "
+     "...); or the built-in demo body",
+     [](V v, S* s) { return s->model = v, Status(); }},
+    {"--out", nullptr, "FILE", Applies::Single, nullptr,
+     "output; format from the extension (.glb, .gltf, .fbx). Also writes FILE.smpl.json (metadata)",
+     [](V v, S* s) { return s->out = v, Status(); }},
+    {"--betas", nullptr, "v,v,...", Applies::Any, nullptr,
+     "shape coefficients (fewer than the model has are zero-padded)",
+     [](V v, S* s) {
+       Result<std::vector<double>> list = parseList(v, "--betas");
+       if (!list) return Status(list.error());
+       return s->export_options.betas = *list, Status();
+     }},
+    {"--betas-file", nullptr, "FILE", Applies::Any, nullptr,
+     "betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas: identical rows -> that "
+     "row, else their mean (a note gives the deviation)",
+     [](V v, S* s) { return s->betas_file = v, Status(); }},
+    {"--expression", nullptr, "v,v,...", Applies::Any, nullptr, "SMPL-X expression coefficients",
+     [](V v, S* s) {
+       Result<std::vector<double>> list = parseList(v, "--expression");
+       if (!list) return Status(list.error());
+       return s->export_options.expression = *list, Status();
+     }},
+    {"--max-influences", nullptr, "N", Applies::Any, nullptr,
+     "skin influences per vertex, 1..8 (default 4; >4 writes JOINTS_1/WEIGHTS_1)",
+     [](V v, S* s) { return intInto(v, "--max-influences", &s->export_options.max_influences); }},
+    {"--correctives", nullptr, "all|none", Applies::Any, nullptr, "pose-corrective morph targets (default all)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--correctives", {"all", "none"});
+       if (!c) return Status(c.error());
+       return s->export_options.correctives = *c == 0, Status();
+     }},
+    {"--corrective-weights", nullptr, "signed|unit", Applies::Any, nullptr,
+     "signed: weight = pose feature f, in [-2, 1] (default without --motion);\n"
+     "unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1], for engines/importers "
+     "that clamp weights (default with --motion: Blender clamps animated weights); the mapping is in "
+     "the metadata",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--corrective-weights", {"signed", "unit"});
+       if (!c) return Status(c.error());
+       return s->export_options.encoding = *c == 1 ? CorrectiveEncoding::Unit : CorrectiveEncoding::Signed, Status();
+     }},
+    {"--corrective-basis", nullptr, "K", Applies::Any, nullptr,
+     "replace the corrective targets by K principal components of posedirs (weights = C f; C in the "
+     "metadata; runtime scripts apply it)",
+     [](V v, S* s) { return intInto(v, "--corrective-basis", &s->export_options.corrective_basis); }},
+    {"--corrective-epsilon", nullptr, "M", Applies::Gltf, nullptr,
+     "glTF: drop morph deltas up to M metres, write sparse accessors",
+     [](V v, S* s) {
+       Result<double> m = parseNumber(v, "--corrective-epsilon");
+       if (!m || *m < 0 || *m > 0.01)
+         return Status(usageError("--corrective-epsilon: expected metres in [0, 0.01], got '" + v + "'"));
+       return s->writer_options.morph_epsilon = *m, Status();
+     }},
+    {"--quantize-morphs", nullptr, nullptr, Applies::Gltf, nullptr,
+     "glTF: int16 morph deltas (KHR_mesh_quantization)",
+     [](V, S* s) { return s->writer_options.quantize_morphs = true, Status(); }},
+    {"--draco", nullptr, nullptr, Applies::Gltf, nullptr,
+     "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
+     [](V, S* s) { return s->writer_options.draco = true, Status(); }},
+    {"--shape-keys", nullptr, "N", Applies::Any, nullptr,
+     "also export the first N shape directions as morph targets shape_<i>",
+     [](V v, S* s) { return intInto(v, "--shape-keys", &s->export_options.shape_keys); }},
+    {"--expression-keys", nullptr, "N", Applies::Any, nullptr,
+     "also export the first N expression directions (SMPL-X) as expr_<i>",
+     [](V v, S* s) { return intInto(v, "--expression-keys", &s->export_options.expression_keys); }},
+    {"--uv", nullptr, "OBJ|NPY|none", Applies::Any, nullptr,
+     "UVs (seams split vertices). Default: the model file's own vt/ft if it has them (SMPL-X "
+     "release). OBJ sharing the model's vertex order, or a numpy pair <stem>_uv.npy (U,2) + "
+     "<stem>_ft.npy (F,3) (give either); none: no UVs",
+     [](V v, S* s) { return s->export_options.uv_obj = v, Status(); }},
+    {"--name", nullptr, "NAME", Applies::Any, nullptr, "mesh name (default body)",
+     [](V v, S* s) { return s->export_options.name = v, Status(); }},
+    {"--dmpl", nullptr, "FILE|DIR", Applies::Any, nullptr,
+     "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
+     "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
+     "--motion at weight 0. DIR: per motion gender, DIR/dmpls/<gender>/model.npz or "
+     "DIR/<gender>/model.npz (AMASS layout)",
+     [](V v, S* s) { return s->dmpl = v, Status(); }},
+    {"--dmpl-count", nullptr, "N", Applies::Any, nullptr, "keep the first N DMPL directions (default all)",
+     [](V v, S* s) {
+       Status st = intInto(v, "--dmpl-count", &s->dmpl_count);
+       if (st && s->dmpl_count < 1) return Status(usageError("--dmpl-count: expected N >= 1, got '" + v + "'"));
+       return st;
+     }},
+    {"--dmpl-joints", nullptr, "fixed|regressed", Applies::Any, nullptr,
+     "fixed (default): keep the betas-only skeleton (the cost is printed); regressed: animate joint "
+     "translations to follow the displaced template (the published math, exact)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--dmpl-joints", {"fixed", "regressed"});
+       if (!c) return Status(c.error());
+       return s->dmpl_regressed_joints = *c == 1, Status();
+     }},
+    {"--fbx-units", nullptr, "m|cm", Applies::Fbx, nullptr, "FBX geometry units (default m)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--fbx-units", {"m", "cm"});
+       if (!c) return Status(c.error());
+       return s->writer_options.fbx_units = v, Status();
+     }},
+    {"--fbx-version", nullptr, "7400|7500", Applies::Fbx, nullptr, "FBX binary version (default 7400)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--fbx-version", {"7400", "7500"});
+       if (!c) return Status(c.error());
+       return s->writer_options.fbx_version = *c == 0 ? 7400 : 7500, Status();
+     }},
+
+    {"--motion", nullptr, "FILE", Applies::Single,
+     "Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` axis-angle "
+     "or rotation matrices, SMPLCodec .smpl, SMPL-X/SMPL fits .pkl/.npz (SMPLify-X, PIXIE, ExPose), "
+     "AIST++ .pkl):",
+     "bake FILE as an animation (repeatable: one animation each)",
+     [](V v, S* s) { return s->motions.push_back(v), Status(); }},
+    {"--source-fps", nullptr, "R", Applies::Motion, nullptr,
+     "the motion's frame rate: overrides a stored one; without it a file that stores none is read "
+     "at 30 fps (AIST++: 60) and a note says so",
+     [](V v, S* s) {
+       Result<double> r = rate(v, "--source-fps", 1, 1000, "[");
+       if (!r) return Status(r.error());
+       return s->source_fps = *r, Status();
+     }},
+    {"--flat-hand-mean", nullptr, nullptr, Applies::Motion, nullptr,
+     "fit hand poses (PCA or 45-d axis-angle) are relative to the flat hand: the model's hands_mean "
+     "is not added (the authors' default adds it)",
+     [](V, S* s) { return s->flat_hand_mean = true, Status(); }},
+    {"--fps", nullptr, "F", Applies::Motion, nullptr,
+     "resample to F frames per second (slerp/lerp; default: the motion's rate)",
+     [](V v, S* s) {
+       Result<double> r = rate(v, "--fps", 0, 1000, "(");
+       if (!r) return Status(r.error());
+       return s->animation.fps = *r, Status();
+     }},
+    {"--frames", nullptr, "A:B", Applies::Motion, nullptr,
+     "bake source frames A (inclusive) to B (exclusive), counted in the motion file before any "
+     "resampling; either may be empty (0:300 = the first 300 frames, 100: = from frame 100 on). "
+     "A motion shorter than B is baked to its end with a note",
+     [](V v, S* s) { return parseFrames(v, &s->animation); }},
+    {"--betas-from-motion", nullptr, nullptr, Applies::Motion, nullptr,
+     "take the betas from the (first) motion and fail if it has none (without --betas/--betas-file "
+     "the motion's betas are used when it has them, else zeros)",
+     [](V, S* s) { return s->betas_from_motion = true, Status(); }},
+    {"--up", nullptr, "y|z", Applies::Motion, nullptr,
+     "up axis of the motion's world (default: z for AMASS files, else y); output is always Y-up",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--up", {"y", "z"});
+       if (!c) return Status(c.error());
+       return s->animation.up = *c == 0 ? UpAxis::Y : UpAxis::Z, Status();
+     }},
+    {"--root-motion", nullptr, "keep|in-place", Applies::Motion, nullptr,
+     "keep or drop horizontal root motion (default keep)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--root-motion", {"keep", "in-place"});
+       if (!c) return Status(c.error());
+       return s->animation.in_place = *c == 1, Status();
+     }},
+
+    {"--motion-dir", nullptr, "DIR", Applies::Batch, "Batch mode (--motion-dir DIR --out-dir DIR):",
+     "convert every .npz/.json/.smpl/.pkl in DIR, in parallel, skipping outputs made from the same "
+     "inputs and options (recorded in the sidecar); per-file errors do not stop the batch; files "
+     "with no pose keys (AMASS shape.npz, *_stagei.npz) are skipped with a note",
+     [](V v, S* s) { return s->motion_dir = v, Status(); }},
+    {"--out-dir", nullptr, "DIR", Applies::Batch, nullptr, "where batch outputs go (DIR/<motion stem>.<format>)",
+     [](V v, S* s) { return s->out_dir = v, Status(); }},
+    {"--format", nullptr, "glb|gltf|fbx", Applies::Batch, nullptr, "batch output format (default glb)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--format", {"glb", "gltf", "fbx"});
+       if (!c) return Status(c.error());
+       return s->format = v, Status();
+     }},
+    {"--force", nullptr, nullptr, Applies::Batch, nullptr, "rebuild every output, even when up to date",
+     [](V, S* s) { return s->force = true, Status(); }},
+    {"--threads", nullptr, "N", Applies::Batch, nullptr, "batch workers (default: all cores)",
+     [](V v, S* s) {
+       Status st = intInto(v, "--threads", &s->threads);
+       if (st && (s->threads < 1 || s->threads > 1024))
+         return Status(usageError("--threads: expected 1..1024, got '" + v + "'"));
+       return st;
+     }},
+    {"--shard", nullptr, "I/N", Applies::Batch, nullptr,
+     "convert only share I of N (0 <= I < N): the motions sorted by path relative to DIR, the one "
+     "at position p belongs to shard p mod N",
+     [](V v, S* s) { return parseShard(v, s); }},
+    {"--manifest", nullptr, "FILE", Applies::Batch, nullptr,
+     "write one JSON line per motion (input, output, bytes, sha256, seconds, status); shards' "
+     "manifests concatenate",
+     [](V v, S* s) { return s->manifest = v, Status(); }},
+
+    {"--memory-limit", nullptr, "SIZE", Applies::Any, "General:",
+     "memory budget for everything the run reads or builds, e.g. 512M, 4G (default: the smaller of "
+     "8G and 3/4 of physical memory); an input that would need more fails before allocating (exit 2, "
+     "3 when baking)",
+     [](V v, S* s) {
+       Result<uint64_t> m = parseMemorySize(v);
+       if (!m) return Status(usageError(m.message()));
+       return s->memory_limit = *m, Status();
+     }},
+    {"--quiet", "-q", nullptr, Applies::Any, nullptr, "no summary", [](V, S* s) { return s->quiet = true, Status(); }},
+    {"--version", nullptr, nullptr, Applies::Any, nullptr, "print the version and exit",
+     [](V, S* s) { return s->version = true, Status(); }},
+    {"--help", "-h", nullptr, Applies::Any, nullptr, "print this text and exit",
+     [](V, S* s) { return s->help = true, Status(); }},
+};
+
+constexpr size_t kHelpColumn = 25, kWidth = 100;
+
+// Paragraphs ('\n') of `text` word-wrapped to `width` columns.
+std::vector<std::string> wrap(const std::string& text, size_t width) {
+  std::vector<std::string> lines;
+  std::istringstream paragraphs(text);
+  for (std::string paragraph; std::getline(paragraphs, paragraph);) {
+    std::istringstream words(paragraph);
+    std::string line;
+    for (std::string word; words >> word;) {
+      if (!line.empty() && line.size() + 1 + word.size() > width) lines.push_back(line), line.clear();
+      line += (line.empty() ? "" : " ") + word;
+    }
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+// "  --name VALUE" then the help text in a column; a long name puts the help
+// on the next line.
+void appendUsage(const OptionSpec& o, std::string* out) {
+  std::string left = std::string("  ") + o.name;
+  if (o.alias) left += std::string(", ") + o.alias;
+  if (o.value) left += std::string(" ") + o.value;
+  bool first = true;
+  for (const std::string& line : wrap(o.help, kWidth - kHelpColumn)) {
+    if (first && left.size() + 1 <= kHelpColumn) {
+      *out += left + std::string(kHelpColumn - left.size(), ' ') + line + "\n";
+    } else {
+      if (first) *out += left + "\n";
+      *out += std::string(kHelpColumn, ' ') + line + "\n";
+    }
+    first = false;
+  }
+}
+
+}  // namespace
+
+const std::vector<OptionSpec>& optionTable() { return kOptions; }
+
+const OptionSpec* findOption(const std::string& name) {
+  for (const OptionSpec& o : kOptions)
+    if (name == o.name || (o.alias && name == o.alias)) return &o;
+  return nullptr;
+}
+
+const char* appliesRule(Applies applies) {
+  switch (applies) {
+    case Applies::Single: return "conflicts with batch mode (--motion-dir)";
+    case Applies::Motion: return "needs --motion or --motion-dir";
+    case Applies::Batch: return "applies only to batch mode (--motion-dir)";
+    case Applies::Gltf: return "applies only to glTF output (.glb, .gltf)";
+    case Applies::Fbx: return "applies only to .fbx output";
+    default: return "";
+  }
+}
+
+std::string usageText() {
+  std::string out =
+      "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose correctives\n\n"
+      "Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]\n"
+      "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
+  for (const OptionSpec& o : kOptions) {
+    if (o.heading && *o.heading)
+      for (const std::string& line : wrap(std::string("\n") + o.heading, kWidth)) out += line + "\n";
+    appendUsage(o, &out);
+  }
+  out += "\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write output.\n"
+         "Reference: docs/cli.md\n";
+  return out;
+}
+
+}  // namespace smpl

@@ -1,0 +1,49 @@
+// The one table of smpl-export's options. The parser (cli/settings.cpp), the
+// conflict checks and the usage text (--help) all read it, and a test checks
+// the README's option table against --help, so an option is described once.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace smpl {
+
+struct Settings;
+
+// Where an option may be used; the parser refuses it anywhere else, naming
+// the rule.
+enum class Applies {
+  Any,     // every run
+  Single,  // one export (--out), not batch mode
+  Motion,  // needs --motion or --motion-dir
+  Batch,   // only batch mode (--motion-dir)
+  Gltf,    // only glTF output (.glb/.gltf, or --format glb|gltf)
+  Fbx,     // only FBX output (.fbx, or --format fbx)
+};
+
+struct OptionSpec {
+  const char* name;     // "--max-influences"
+  const char* alias;    // a short form ("-q"), or nullptr
+  const char* value;    // the value's syntax in the usage text ("N"); nullptr: a flag
+  Applies applies;
+  const char* heading;  // starts a new section of the usage text, or nullptr
+  const char* help;     // usage text; '\n' continues on the next line
+  // Stores the value into the settings (a flag gets ""). Errors name the option.
+  Status (*apply)(const std::string& value, Settings* s);
+};
+
+// Every option, in usage order.
+const std::vector<OptionSpec>& optionTable();
+
+// The entry for a name or alias, or nullptr.
+const OptionSpec* findOption(const std::string& name);
+
+// "needs --motion or --motion-dir", "applies only to batch mode (--motion-dir)", ...
+const char* appliesRule(Applies applies);
+
+// The --help text, generated from the table.
+std::string usageText();
+
+}  // namespace smpl
