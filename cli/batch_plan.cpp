@@ -105,8 +105,10 @@ Result<BatchPlan> planBatch(const Settings& s) {
   keepShard(s, &plan);
   std::vector<std::string> outs, names;
   for (const PlannedOutput& p : plan.outputs) {
-    outs.push_back(p.out);
-    names.push_back(baseName(p.out));
+    for (const std::string& o : outputsOf(s, p.out)) {
+      outs.push_back(o);
+      names.push_back(baseName(o));
+    }
     names.push_back(baseName(p.out) + ".smpl.json");
   }
   if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st) return usage(st.message());

@@ -9,7 +9,7 @@
 namespace smpl {
 namespace {
 
-Status failWith(const std::string& path, const std::string& message) {
+Error failWith(const std::string& path, const std::string& message) {
   return makeError(errorLine("loading", path, message), ErrorKind::Load);
 }
 
@@ -33,11 +33,12 @@ void noteIgnoredDmpls(const std::vector<Motion>& motions, ExportReport* report) 
 
 }  // namespace
 
-Status addDmplToAsset(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                      Asset* asset, ExportReport* report) {
+Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, const ExportJob& job,
+                                 const std::vector<Motion>& motions, ExportReport* report) {
+  PreparedDmpl out;
   if (s.dmpl.empty()) {
     noteIgnoredDmpls(motions, report);
-    return Status();
+    return out;
   }
   Result<std::string> path = dmplPath(s, motions, report);
   if (!path) return failWith(s.dmpl, path.message());
@@ -56,12 +57,13 @@ Status addDmplToAsset(const BodyModel& model, const Settings& s, const ExportJob
   }
   if (!motions.empty() && coefficients.empty()) {
     report->notes.push_back("--dmpl: no motion has 'dmpls' (DMPL coefficients): no DMPL targets exported");
-    return Status();
+    return out;
   }
   const int count = s.dmpl_count > 0 ? s.dmpl_count : total;
   basis->directions.conservativeResize(Eigen::NoChange, count);
-  addDmplTargets(model, *basis, dmplLayout(count, coefficients), s.dmpl_regressed_joints, asset);
-  return Status();
+  out.basis = std::make_unique<DmplBasis>(std::move(*basis));
+  out.input = DmplInput{out.basis.get(), dmplLayout(count, coefficients), s.dmpl_regressed_joints};
+  return out;
 }
 
 void noteDmplJointCost(const Asset& asset, ExportReport* report) {

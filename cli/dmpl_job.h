@@ -6,6 +6,7 @@
 // of fixed joints, after baking).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,13 +14,19 @@
 #include "core/body_model.h"
 #include "core/load/motion.h"
 #include "exporter/asset.h"
+#include "exporter/dmpl_targets.h"
 
 namespace smpl {
 
-// Before baking. Errors (ErrorKind::Load, exit 2: basis or coefficients
-// unusable) are one "Error loading <file>: ..." line.
-Status addDmplToAsset(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                      Asset* asset, ExportReport* report);
+// The basis and encoding to hand to exportAsset (input.basis stays null when
+// no DMPL targets are wanted). Errors (ErrorKind::Load, exit 2: basis or
+// coefficients unusable) are one "Error loading <file>: ..." line.
+struct PreparedDmpl {
+  std::unique_ptr<DmplBasis> basis;
+  DmplInput input;
+};
+Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, const ExportJob& job,
+                                 const std::vector<Motion>& motions, ExportReport* report);
 
 // After baking: one note per clip with the fixed-joint cost (max vertex error, mm).
 void noteDmplJointCost(const Asset& asset, ExportReport* report);

@@ -11,12 +11,12 @@
 #include "core/load/motion.h"
 #include "core/load/motion_fit.h"
 #include "cli/dmpl_job.h"
+#include "cli/output_guard.h"
 #include "cli/producer.h"
 #include "exporter/animation.h"
+#include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
-#include "exporter/morph_scales.h"
-#include "exporter/validate_asset.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -71,40 +71,60 @@ Status betasFromMotion(const BodyModel& model, const Settings& s, const ExportJo
   return Status();
 }
 
-Status bakeMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                   Asset* asset, ExportReport* report) {
+// --frames A:B applies to each motion, clamped to its length; `note` (if not
+// null) gets the line saying so, or stays empty.
+AnimationOptions framesFor(const AnimationOptions& animation, const Motion& m, std::string* note) {
+  AnimationOptions frames = animation;
+  const int total = static_cast<int>(m.frames.size());
+  if (frames.end_frame > total && frames.first_frame < total) {
+    if (note)
+      *note = m.name + ": --frames " + std::to_string(frames.first_frame) + ":" + std::to_string(frames.end_frame) +
+              " ends after the motion's " + std::to_string(total) + " frames; baked frames " +
+              std::to_string(frames.first_frame) + ":" + std::to_string(total);
+    frames.end_frame = total;
+  }
+  return frames;
+}
+
+// What exportAsset bakes: each motion with the job's frame range (clamped per
+// motion) and, on a terminal, a progress bar.
+std::vector<MotionInput> motionInputs(const Settings& s, const ExportJob& job, const std::vector<Motion>& motions) {
+  std::vector<MotionInput> inputs;
+  for (size_t i = 0; i < motions.size(); ++i) {
+    MotionInput in{&motions[i], job.motions[i], framesFor(s.animation, motions[i], nullptr), nullptr};
+    if (job.progress) in.progress = [name = motions[i].name](double f) { drawProgress(name, f); };
+    inputs.push_back(std::move(in));
+  }
+  return inputs;
+}
+
+// The motions' notes and frame counts for the summary.
+void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
+                   const Asset& asset, ExportReport* report) {
   for (size_t i = 0; i < motions.size(); ++i) {
     const Motion& m = motions[i];
     for (const std::string& note : m.notes)  // a betas note matters only where those betas are used
       if (note.rfind("betas:", 0) != 0 || (!s.betas_given && i == 0)) report->notes.push_back(m.name + ": " + note);
-    Progress progress;
-    if (job.progress) progress = [&](double f) { drawProgress(m.name, f); };
-    AnimationOptions frames = s.animation;  // --frames A:B applies to each motion, clamped to its length
-    const int total = static_cast<int>(m.frames.size());
-    if (frames.end_frame > total && frames.first_frame < total) {
-      report->notes.push_back(m.name + ": --frames " + std::to_string(frames.first_frame) + ":" +
-                              std::to_string(frames.end_frame) + " ends after the motion's " + std::to_string(total) +
-                              " frames; baked frames " + std::to_string(frames.first_frame) + ":" + std::to_string(total));
-      frames.end_frame = total;
-    }
-    Result<AnimationClip> clip = bakeAnimation(model, *asset, m, frames, job.motions[i], progress);
-    if (!clip) return clip.error();
+    std::string frames_note;  // --frames clamped to this motion's length
+    framesFor(s.animation, m, &frames_note);
+    if (!frames_note.empty()) report->notes.push_back(frames_note);
     Result<MotionMapping> mapping = mapMotion(model, m, job.motions[i]);
     if (mapping && !mapping->dropped.empty())
       report->notes.push_back(m.name + ": " + std::to_string(mapping->dropped.size()) + " " +
                               modelKindName(m.layout) + " joints not in the model were dropped (" +
                               mapping->dropped.front() + ", ...)");
-    report->frames += static_cast<int>(clip->times.size());
-    asset->animations.push_back(std::move(*clip));
+    if (i < asset.animations.size()) report->frames += static_cast<int>(asset.animations[i].times.size());
   }
-  return Status();
 }
 
 // The output and its sidecar go together; the sidecar (what produced the
 // output) is renamed last, so it is the commit record (file_io.h).
-Status writeOutputs(const std::string& out, const std::string& bytes, const std::string& sidecar) {
-  return writeFilesTogether({FileContent{out, bytes.data(), bytes.size()},
-                             FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()}});
+Status writeOutputs(const std::string& out, const Writer::Files& files, const std::string& buffer_path,
+                    const std::string& sidecar) {
+  std::vector<FileContent> contents = {FileContent{out, files.bytes.data(), files.bytes.size()}};
+  if (!buffer_path.empty()) contents.push_back(FileContent{buffer_path, files.buffer.data(), files.buffer.size()});
+  contents.push_back(FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()});
+  return writeFilesTogether(contents);
 }
 
 Result<std::string> producerHashFor(const Settings& s, const ExportJob& job) {
@@ -129,33 +149,35 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(ErrorKind::Usage, "in", "arguments", "no writer for " + job.out);
   if (job.producer_hash.empty())  // a batch (planBatch) cleans all its outputs' temporaries at once
-    removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json"});
+    removeStaleTemps(dirName(job.out), {baseName(job.out), baseName(job.out) + ".smpl.json",
+                                        baseName(gltfBufferPath(s, job.out))});
   Result<std::vector<Motion>> motions = loadMotions(model, s, job);
   if (!motions) return motions.error();
   ExportOptions options = s.export_options;
   if (!s.betas_given)
     if (Status st = betasFromMotion(model, s, job, *motions, &options); !st) return st.error();
-  if (options.encoding == CorrectiveEncoding::Auto)  // baked weights must survive importers that clamp
-    options.encoding = motions->empty() ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
-  Result<Asset> asset = buildAsset(model, options);
-  if (!asset) return exportFailure(job.out, asset.error(), options.uv_obj);
+  // Baked weights must survive importers that clamp (exportAsset resolves Auto the same way).
+  options.encoding = resolveEncoding(options.encoding, motions->size());
+  options.quantize_morphs = s.writer_options.quantize_morphs;
+  // The finished asset: baked, quantisation folded, validated; the writer only translates it.
   ExportReport report;
-  if (Status st = addDmplToAsset(model, s, job, *motions, &*asset, &report); !st) return st.error();
-  if (Status st = bakeMotions(model, s, job, *motions, &*asset, &report); !st)
-    return exportFailure(job.out, st.error());
+  Result<PreparedDmpl> dmpl = prepareDmpl(model, s, job, *motions, &report);  // --dmpl (dmpl_job.h)
+  if (!dmpl) return dmpl.error();
+  Result<Asset> asset = exportAsset(model, options, motionInputs(s, job, *motions), &dmpl->input);
+  if (!asset) return exportFailure(job.out, asset.error(), options.uv_obj);
+  reportMotions(model, s, job, *motions, *asset, &report);
   noteDmplJointCost(*asset, &report);
-  // Quantized targets carry their scale in the weight mapping: fold it here so
-  // the sidecar and the file agree.
-  if (s.writer_options.quantize_morphs) foldMorphScales(&*asset);
-  if (Status st = validateAsset(*asset); !st) return exportFailure(job.out, st.error());
   Result<std::string> producer = producerHashFor(s, job);
   if (!producer) return fail(ErrorKind::Load, "loading", s.model, producer.message());
-  Result<std::string> bytes = writer->serialize(*asset, s.writer_options);
-  if (!bytes) return exportFailure(job.out, bytes.error());
-  if (Status st = writeOutputs(job.out, *bytes, sidecarJson(*asset, *producer)); !st)
+  WriterOptions writer_options = s.writer_options;
+  const std::string buffer_path = gltfBufferPath(s, job.out);
+  writer_options.buffer_uri = baseName(buffer_path);
+  Result<Writer::Files> files = writer->serializeFiles(*asset, writer_options);
+  if (!files) return exportFailure(job.out, files.error());
+  if (Status st = writeOutputs(job.out, *files, buffer_path, sidecarJson(*asset, *producer)); !st)
     return fail(ErrorKind::Write, "saving", job.out, st.message());
   report.options = options;
-  report.bytes = bytes->size();
+  report.bytes = files->bytes.size() + files->buffer.size();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
   report.joints = static_cast<int>(asset->skeleton.names.size());

@@ -63,7 +63,7 @@ int run(int argc, char** argv, Stage* stage) {
   // listing, name collisions, up-to-date decisions) and refused as a whole.
   Result<BatchPlan> plan = BatchPlan();
   if (!s.motion_dir.empty()) plan = planBatch(s);
-  else if (Status st = checkOutputsAreNotInputs({s.out}, runInputs(s, s.motions)); !st)
+  else if (Status st = checkOutputsAreNotInputs(outputsOf(s, s.out), runInputs(s, s.motions)); !st)
     plan = makeError("Error in arguments: " + st.message(), ErrorKind::Usage);
   if (!plan) return report(plan.message(), exitCodeFor(plan.kind()));
 

@@ -167,6 +167,10 @@ const std::vector<OptionSpec> kOptions = {
     {"--draco", nullptr, nullptr, Applies::Gltf, nullptr,
      "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
      [](V, S* s) { return s->writer_options.draco = true, Status(); }},
+    {"--gltf-embed", nullptr, nullptr, Applies::Gltf, nullptr,
+     ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); default: the "
+     "buffer is FILE.bin beside FILE.gltf (written and replaced together with it)",
+     [](V, S* s) { return s->gltf_embed = true, Status(); }},
     {"--shape-keys", nullptr, "N", Applies::Any, nullptr,
      "also export the first N shape directions as morph targets shape_<i>",
      [](V v, S* s) { return intInto(v, "--shape-keys", &s->export_options.shape_keys); }},

@@ -53,6 +53,18 @@ std::vector<std::string> runInputs(const Settings& s, const std::vector<std::str
   return inputs;
 }
 
+std::string gltfBufferPath(const Settings& s, const std::string& out) {
+  const size_t dot = out.rfind('.');
+  if (s.gltf_embed || dot == std::string::npos || out.compare(dot, std::string::npos, ".gltf") != 0) return "";
+  return out.substr(0, dot) + ".bin";
+}
+
+std::vector<std::string> outputsOf(const Settings& s, const std::string& out) {
+  const std::string buffer = gltfBufferPath(s, out);
+  if (buffer.empty()) return {out};
+  return {out, buffer};
+}
+
 Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
   std::map<std::pair<dev_t, ino_t>, std::string> by_inode;
   std::map<std::string, std::string> by_path;

@@ -18,6 +18,14 @@ namespace smpl {
 // regular files directly in it.
 std::vector<std::string> runInputs(const Settings& settings, const std::vector<std::string>& motions);
 
+// The external buffer file written beside a .gltf output (DIR/body.gltf ->
+// DIR/body.bin), or "" (GLB, FBX, or --gltf-embed).
+std::string gltfBufferPath(const Settings& settings, const std::string& out);
+
+// The files an export to `out` writes besides its sidecar: `out` and, for a
+// .gltf, its buffer file.
+std::vector<std::string> outputsOf(const Settings& settings, const std::string& out);
+
 // Error (one line, both paths named) when an output or its sidecar
 // "<output>.smpl.json" is one of `inputs`:
 //   "output out.glb would overwrite the input model.glb (same file); choose another output path"

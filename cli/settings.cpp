@@ -49,7 +49,10 @@ Status checkConflicts(const Settings& s) {
   const bool fbx = batch ? s.format == "fbx" : endsWith(s.out, ".fbx");
   if (!batch && !fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
     return usageError("--out " + s.out + ": unknown format (expected .glb, .gltf or .fbx)");
-  return checkApplies(s, batch, fbx);
+  if (Status st = checkApplies(s, batch, fbx); !st) return st;
+  if (given(s, "--gltf-embed") && (batch ? s.format != "gltf" : !endsWith(s.out, ".gltf")))
+    return usageError("--gltf-embed applies only to .gltf output");
+  return Status();
 }
 
 // The option at argv[*i] and its value ("--name=value", "--name value", or a

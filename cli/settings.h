@@ -27,6 +27,7 @@ struct Settings {
   bool betas_from_motion = false;    // --betas-from-motion: the motion must carry betas
   ExportOptions export_options;
   WriterOptions writer_options;
+  bool gltf_embed = false;  // --gltf-embed: .gltf with the buffer as a data URI (else FILE.bin beside it)
   bool quiet = false;
   bool help = false;
   bool version = false;

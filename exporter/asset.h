@@ -26,6 +26,8 @@ struct MorphTarget {
   std::string name;                     // pose_<joint>_<r><c>, shape_<i>, expr_<i>
   Eigen::MatrixXf deltas;               // V x 3 position deltas (V = asset vertex count)
   float rest_weight = 0.0f;             // weight at the rest pose (non-zero for the unit encoding)
+  bool quantized = false;               // stored as normalised int16 (KHR_mesh_quantization): deltas
+                                        // already divided by their peak s_n, |delta| <= 1 (morph_scales.h)
 };
 
 struct SkinnedMesh {

@@ -29,6 +29,13 @@
 
 namespace smpl {
 
+// What exportAsset (export_asset.h) needs to add the targets.
+struct DmplInput {
+  const DmplBasis* basis = nullptr;     // null: no DMPL targets
+  std::vector<DmplLayout> layout;       // dmplLayout()
+  bool animate_joints = false;          // --dmpl-joints regressed
+};
+
 // weight = scale * c + offset with the range [min(0, min c), max(0, max c)]
 // of direction i over every frame of `motions` mapped to [0, 1]; without any
 // coefficients (static export): scale 1, offset 0 (weights 0 = rest).

@@ -40,10 +40,12 @@ void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mes
 
 void foldMorphScales(Asset* asset) {
   const std::vector<double> s = morphWeightScales(*asset);
+  const std::vector<bool> q = quantizedTargets(*asset);
   foldScalesIntoMetadata(s, asset->mesh, &asset->metadata);
   for (size_t n = 0; n < s.size(); ++n) {
-    if (s[n] == 1.0) continue;
     MorphTarget& t = asset->mesh.morph_targets[n];
+    t.quantized = t.quantized || q[n];
+    if (s[n] == 1.0) continue;
     t.deltas /= float(s[n]);
     t.rest_weight = float(t.rest_weight * s[n]);
     for (AnimationClip& clip : asset->animations)

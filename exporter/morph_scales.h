@@ -1,4 +1,4 @@
-// Per-target scales for quantized morph targets (WriterOptions::quantize_morphs).
+// Per-target scales for quantized morph targets (ExportOptions::quantize_morphs).
 //
 // KHR_mesh_quantization stores morph deltas as normalised SHORT, i.e. values in
 // [-1, 1] with a step of 1/32767. glTF has no per-accessor dequantisation
@@ -13,9 +13,10 @@
 // weights and animated weights are multiplied by s_n as well. The quantisation
 // error of target n is then at most s_n / 65534 per component instead of
 // 1 / 65534 m. Targets without a corrective entry (shape_<i>, expr_<i>) keep
-// FLOAT deltas and weight scale 1. Folding twice is the identity (after one
-// fold every scale is exactly 1), so the export job can fold the asset before
-// writing both the file and its sidecar, and the writer folds again harmlessly.
+// FLOAT deltas and weight scale 1. exportAsset (export_asset.h) folds once and
+// marks the folded targets MorphTarget::quantized; the glTF writer stores
+// exactly those as int16 and computes no scale itself. Folding twice is the
+// identity (after one fold every scale is exactly 1).
 #pragma once
 
 #include <vector>
@@ -34,7 +35,8 @@ std::vector<double> morphWeightScales(const Asset& asset);
 void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mesh,
                             AssetMetadata* metadata);
 
-// The whole fold on an asset: deltas / s_n, metadata, rest and animated weights * s_n.
+// The whole fold on an asset: deltas / s_n, metadata, rest and animated weights * s_n;
+// every target of quantizedTargets() gets MorphTarget::quantized = true.
 void foldMorphScales(Asset* asset);
 
 }  // namespace smpl

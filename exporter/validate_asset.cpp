@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "exporter/validate_structure.h"
+
 namespace smpl {
 namespace {
 
@@ -111,7 +113,8 @@ Status validateAsset(const Asset& asset) {
   if (Status st = checkMesh(asset.mesh); !st) return st;
   for (const AnimationClip& clip : asset.animations)
     if (Status st = checkClip(clip); !st) return st;
-  return checkMetadata(asset.metadata);
+  if (Status st = checkMetadata(asset.metadata); !st) return st;
+  return validateAssetStructure(asset);  // numbers first: a NaN is named as such, not as a bad weight
 }
 
 }  // namespace smpl

@@ -1,5 +1,7 @@
-// The last check before any writer: every number a writer serialises is
-// finite, and every number stored as float32 fits a float32. Inputs are
+// The last check before any writer, called by every writer (plugins/) and by
+// exportAsset: the asset's structure (validate_structure.h: shapes, indices,
+// one root, increasing key times, normals) and then every number a writer
+// serialises is finite, and every number stored as float32 fits a float32. Inputs are
 // validated where they enter; this catches what arithmetic makes of them
 // (a huge but finite translation that overflows float, a NaN from a bad
 // division) so that NaN and Inf never reach an output file (issue 16).
@@ -15,7 +17,8 @@ namespace smpl {
 // morph target deltas (V x 3) and rest weights; per animation fps, key times
 // (seconds), rotations (quaternion w,x,y,z), root translations (metres) and
 // morph weights (T x targets); metadata numbers (betas, expression, corrective
-// scale/offset, corrective basis matrix/scale/offset).
+// scale/offset, corrective basis matrix/scale/offset); then
+// validateAssetStructure (its rules and errors in validate_structure.h).
 // Error (first problem only): "<what> is not finite (nan)" or "... exceeds
 // the float32 range (1e+39)", e.g.
 //   "morph target pose_l_knee_00 vertex 12 is not finite (nan)"

@@ -3,7 +3,7 @@
 
 VERSION is the one source: CMake reads it (project version, the exporter's
 `exporter_version`); the Blender add-on (bl_info, which Blender parses as a
-literal, and blender_manifest.toml) and the Unity package.json cannot read a
+literal, and blender_manifest.toml), the Unity and web package.json cannot read a
 file, so this check keeps them equal. Exits 1 and names each mismatch.
     scripts/check-version.py [ROOT]
 """
@@ -28,6 +28,8 @@ def main():
     m = re.search(r'^version\s*=\s*"([^"]+)"', manifest, re.M)
     found["blender/smpl_correctives/blender_manifest.toml"] = m.group(1) if m else None
     found["unity/package.json"] = json.loads((root / "unity/package.json").read_text()).get("version")
+    found["web/smpl-correctives/package.json"] = json.loads(
+        (root / "web/smpl-correctives/package.json").read_text()).get("version")
     changelog = (root / "CHANGELOG.md").read_text()
     m = re.search(r"^## \[?(\d+\.\d+\.\d+)", changelog, re.M)
     found["CHANGELOG.md (latest entry)"] = m.group(1) if m else None

@@ -1,25 +1,36 @@
 #!/usr/bin/env bash
 # Build the libFuzzer targets with clang and run each for SECONDS (default 30)
-# on the seed corpus plus generated fixtures. Any crash, leak or sanitizer
+# on the seed corpus plus generated fixtures, as many at once as there are
+# cores (each fuzzer still gets SECONDS of one core). Any crash, leak or sanitizer
 # report fails the run.
 #   scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
+jobs=$(nproc)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSMPL_FUZZ=ON \
   -DSMPL_BUILD_TESTS=OFF "${launcher[@]}" >/dev/null
 cmake --build build-fuzz -j"$(nproc)"
-for exe in build-fuzz/tests/fuzz/*_fuzz; do
+# One fuzzer per core at a time: each still gets SECONDS of one core.
+fuzz_one() {
+  local exe=$1 name corpus seeds=()
   name=$(basename "$exe" _fuzz)
   corpus=build-fuzz/corpus/$name
   mkdir -p "$corpus"
-  seeds=()
   [ -d "tests/fuzz/seeds/$name" ] && seeds+=("tests/fuzz/seeds/$name")
-  echo "fuzz $name: ${seconds}s"
-  "$exe" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
-    "$corpus" "${seeds[@]}" 2>"build-fuzz/$name.log" || { tail -40 "build-fuzz/$name.log"; exit 1; }
-  grep -E "stat::number_of_executed_units" "build-fuzz/$name.log" || true
+  if ! "$exe" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \
+      "$corpus" "${seeds[@]}" 2>"build-fuzz/$name.log"; then
+    echo "fuzz $name: FAILED"; tail -40 "build-fuzz/$name.log"; touch "build-fuzz/$name.failed"; return 1
+  fi
+  echo "fuzz $name: ${seconds}s, $(grep -E "stat::number_of_executed_units" "build-fuzz/$name.log" || true)"
+}
+rm -f build-fuzz/*.failed
+for exe in build-fuzz/tests/fuzz/*_fuzz; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n || true; done
+  fuzz_one "$exe" &
 done
+wait
+if ls build-fuzz/*.failed >/dev/null 2>&1; then exit 1; fi
 echo "fuzz: no findings"

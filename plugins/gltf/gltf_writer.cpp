@@ -10,6 +10,7 @@
 
 #include <tiny_gltf.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,10 +18,10 @@
 #include <sstream>
 
 #include "exporter/metadata_json.h"
+#include "exporter/validate_asset.h"
 #include "plugins/gltf/gltf_buffer.h"
 #include "plugins/gltf/gltf_draco.h"
 #include "plugins/gltf/gltf_morphs.h"
-#include "exporter/morph_scales.h"
 
 namespace smpl {
 namespace {
@@ -94,68 +95,6 @@ int addJoints(GltfBuild& b, const std::vector<uint16_t>& joints, bool wide) {
   }
   return addIntegers(b, joints, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC4,
                      TINYGLTF_TARGET_ARRAY_BUFFER);
-}
-
-std::string shapeOf(Eigen::Index rows, Eigen::Index cols) {
-  return "(" + std::to_string(rows) + "," + std::to_string(cols) + ")";
-}
-
-Status expectShape(const char* what, Eigen::Index rows, Eigen::Index cols, Eigen::Index want_rows,
-                   Eigen::Index want_cols) {
-  if (rows == want_rows && cols == want_cols) return Status::success();
-  return makeError(std::string("glTF writer: ") + what + " has shape " + shapeOf(rows, cols) +
-                   "; expected " + shapeOf(want_rows, want_cols));
-}
-
-Status checkSkeleton(const Skeleton& s) {
-  const Eigen::Index k = Eigen::Index(s.names.size());
-  if (k == 0) return makeError("glTF writer: skeleton has no joints");
-  if (Eigen::Index(s.parents.size()) != k)
-    return makeError("glTF writer: skeleton has " + std::to_string(k) + " names but " +
-                     std::to_string(s.parents.size()) + " parents");
-  Status st = expectShape("skeleton.rest_local", s.rest_local.rows(), s.rest_local.cols(), k, 3);
-  if (!st) return st;
-  st = expectShape("skeleton.rest_world", s.rest_world.rows(), s.rest_world.cols(), k, 3);
-  if (!st) return st;
-  if (s.parents[0] != -1) return makeError("glTF writer: joint 0 must be the root (parent -1)");
-  for (Eigen::Index j = 1; j < k; ++j) {
-    // p(k) < k rules out loops and leaves joint 0 the only root (one skin root).
-    if (s.parents[j] < 0 || s.parents[j] >= j)
-      return makeError("glTF writer: joint " + std::to_string(j) + " ('" + s.names[j] +
-                       "') has parent " + std::to_string(s.parents[j]) + "; expected 0.." +
-                       std::to_string(j - 1));
-  }
-  if (!s.rest_local.allFinite() || !s.rest_world.allFinite())
-    return makeError("glTF writer: skeleton rest positions are not finite");
-  return Status::success();
-}
-
-Status checkMesh(const SkinnedMesh& m) {
-  const Eigen::Index v = m.positions.rows();
-  if (v == 0) return makeError("glTF writer: mesh has no vertices");
-  Status st = expectShape("mesh.positions", v, m.positions.cols(), v, 3);
-  if (st) st = expectShape("mesh.normals", m.normals.rows(), m.normals.cols(), v, 3);
-  if (st && m.uvs.rows() != 0) st = expectShape("mesh.uvs", m.uvs.rows(), m.uvs.cols(), v, 2);
-  if (st)
-    st = expectShape("mesh.triangles", m.triangles.rows(), m.triangles.cols(), m.triangles.rows(),
-                     3);
-  if (st && m.joints.cols() == 0) st = makeError("glTF writer: mesh has no skin influences");
-  if (st) st = expectShape("mesh.joints", m.joints.rows(), m.joints.cols(), v, m.joints.cols());
-  if (st) st = expectShape("mesh.weights", m.weights.rows(), m.weights.cols(), v, m.joints.cols());
-  if (!st) return st;
-  if (m.triangles.rows() == 0) return makeError("glTF writer: mesh has no triangles");
-  if (m.triangles.minCoeff() < 0 || m.triangles.maxCoeff() >= v)
-    return makeError("glTF writer: mesh.triangles index out of range 0.." + std::to_string(v - 1));
-  if (!m.positions.allFinite() || !m.normals.allFinite() || !m.uvs.allFinite())
-    return makeError("glTF writer: mesh positions, normals or uvs are not finite");
-  for (const MorphTarget& t : m.morph_targets) {
-    st = expectShape(("morph target '" + t.name + "'").c_str(), t.deltas.rows(), t.deltas.cols(), v,
-                     3);
-    if (!st) return st;
-    if (!t.deltas.allFinite())
-      return makeError("glTF writer: morph target '" + t.name + "' has non-finite deltas");
-  }
-  return Status::success();
 }
 
 std::vector<float> rowMajor(const Eigen::MatrixXf& m) {
@@ -345,21 +284,19 @@ void requireExtension(tinygltf::Model& model, const char* name) {
   model.extensionsRequired.push_back(name);
 }
 
-// Morph targets in the encoding of `options`; `scales` as in morph_scales.h.
+// Morph targets in the encoding of `options`; targets the asset marks
+// quantized (exportAsset, morph_scales.h) as normalised int16.
 void addMorphTargets(GltfBuild& b, const SkinnedMesh& m, const WriterOptions& options,
-                     const std::vector<bool>& quantized, const std::vector<double>& scales,
                      tinygltf::Primitive& prim, tinygltf::Mesh& mesh) {
   tinygltf::Value::Array names;
   for (size_t n = 0; n < m.morph_targets.size(); ++n) {
     const MorphTarget& t = m.morph_targets[n];
     MorphEncoding e;
     e.epsilon = options.morph_epsilon;
-    e.quantized = options.quantize_morphs && quantized[n];
-    e.scale = scales[n];
+    e.quantized = t.quantized;
     if (e.quantized) requireExtension(b.model, "KHR_mesh_quantization");
     prim.targets.push_back({{"POSITION", addMorphTarget(b, t.deltas, e)}});
-    // Non-zero only for the unit corrective encoding; times s_n when quantized.
-    mesh.weights.push_back(double(float(t.rest_weight * scales[n])));
+    mesh.weights.push_back(double(t.rest_weight));  // non-zero only for the unit corrective encoding
     names.emplace_back(t.name);
   }
   // An empty targetNames would serialise as null (tinygltf), so omit it.
@@ -367,8 +304,7 @@ void addMorphTargets(GltfBuild& b, const SkinnedMesh& m, const WriterOptions& op
     mesh.extras = tinygltf::Value(tinygltf::Value::Object{{"targetNames", tinygltf::Value(names)}});
 }
 
-Status addMesh(GltfBuild& b, const Asset& asset, const WriterOptions& options,
-               const std::vector<bool>& quantized, const std::vector<double>& scales) {
+Status addMesh(GltfBuild& b, const Asset& asset, const WriterOptions& options) {
   Result<MeshStreams> streams = meshStreams(asset.mesh, int(asset.skeleton.names.size()));
   if (!streams) return streams.error();
   tinygltf::Primitive prim;
@@ -382,7 +318,7 @@ Status addMesh(GltfBuild& b, const Asset& asset, const WriterOptions& options,
   }
   tinygltf::Mesh mesh;
   mesh.name = asset.name;
-  addMorphTargets(b, asset.mesh, options, quantized, scales, prim, mesh);
+  addMorphTargets(b, asset.mesh, options, prim, mesh);
   mesh.primitives.push_back(prim);
   b.model.meshes.push_back(mesh);
   return Status::success();
@@ -429,42 +365,6 @@ void addNodesAndSkin(GltfBuild& b, const Asset& asset) {
   b.model.defaultScene = 0;
 }
 
-Status checkClip(const AnimationClip& clip, const Asset& asset) {
-  const std::string where = "glTF writer: animation '" + clip.name + "': ";
-  const size_t t_count = clip.times.size();
-  if (t_count == 0) return makeError(where + "no frames");
-  for (size_t t = 0; t < t_count; ++t) {
-    // Checked in float: that is what the file stores and the validator reads.
-    float now = float(clip.times[t]);
-    if (!std::isfinite(clip.times[t]) || now < 0 || (t > 0 && !(now > float(clip.times[t - 1]))))
-      return makeError(where + "frame times must be finite, >= 0 and strictly increasing (frame " +
-                       std::to_string(t) + ")");
-  }
-  if (!clip.rotations.empty() && clip.rotations.size() != asset.skeleton.names.size())
-    return makeError(where + "rotations for " + std::to_string(clip.rotations.size()) +
-                     " joints; the skeleton has " + std::to_string(asset.skeleton.names.size()));
-  for (const auto& track : clip.rotations)
-    if (track.size() != t_count) return makeError(where + "a rotation track's length is not T");
-  if (!clip.root_translation.empty() && clip.root_translation.size() != t_count)
-    return makeError(where + "root_translation length is not T");
-  if (!clip.joint_translations.empty() && clip.joint_translations.size() != asset.skeleton.names.size())
-    return makeError(where + "joint_translations do not match the skeleton");
-  for (const auto& track : clip.joint_translations)
-    if (track.size() != t_count) return makeError(where + "a translation track's length is not T");
-  const Eigen::Index targets = Eigen::Index(asset.mesh.morph_targets.size());
-  if (clip.morph_weights.rows() != 0) {
-    Status st = expectShape(("animation '" + clip.name + "' morph_weights").c_str(),
-                            clip.morph_weights.rows(), clip.morph_weights.cols(),
-                            Eigen::Index(t_count), targets);
-    if (!st) return st;
-    if (targets == 0 || !clip.morph_weights.allFinite())
-      return makeError(where + "morph_weights need morph targets and finite values");
-  }
-  if (clip.rotations.empty() && clip.root_translation.empty() && clip.morph_weights.rows() == 0)
-    return makeError(where + "no channels");
-  return Status::success();
-}
-
 void addChannel(tinygltf::Animation& anim, int input, int output, int node, const char* path) {
   tinygltf::AnimationSampler sampler;
   sampler.input = input;
@@ -478,8 +378,7 @@ void addChannel(tinygltf::Animation& anim, int input, int output, int node, cons
   anim.channels.push_back(channel);
 }
 
-Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node,
-                    const std::vector<double>& scales) {
+Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node) {
   tinygltf::Animation anim;
   anim.name = clip.name;
   const std::vector<float> times(clip.times.begin(), clip.times.end());
@@ -509,23 +408,16 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node,
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
     addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), int(k), "translation");
   }
-  if (clip.morph_weights.rows() > 0) {
-    std::vector<float> w = rowMajor(clip.morph_weights);
-    for (size_t i = 0; i < w.size(); ++i)  // quantized targets: weights times s_n
-      if (scales[i % scales.size()] != 1.0) w[i] = float(w[i] * scales[i % scales.size()]);
+  if (clip.morph_weights.size() > 0) {  // T x 0 without morph targets: no channel
+    const std::vector<float> w = rowMajor(clip.morph_weights);
     addChannel(anim, input, addFloats(b, w, TINYGLTF_TYPE_SCALAR, 0, false), mesh_node, "weights");
   }
   b.model.animations.push_back(anim);
   return Status::success();
 }
 
-Status buildModel(const Asset& asset, const WriterOptions& options,
-                  const std::vector<bool>& quantized, const std::vector<double>& scales,
-                  GltfBuild& b) {
-  Status st = checkSkeleton(asset.skeleton);
-  if (st) st = checkMesh(asset.mesh);
-  for (const AnimationClip& clip : asset.animations)
-    if (st) st = checkClip(clip, asset);
+Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b) {
+  Status st = validateAsset(asset);  // the same rules for every writer (exporter/validate_asset.h)
   if (!st) return st;
 
   tinygltf::Model& model = b.model;
@@ -539,9 +431,9 @@ Status buildModel(const Asset& asset, const WriterOptions& options,
       tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholderText(kMetadataPlaceholder))}});
 
   addNodesAndSkin(b, asset);
-  st = addMesh(b, asset, options, quantized, scales);
+  st = addMesh(b, asset, options);
   for (const AnimationClip& clip : asset.animations)
-    if (st) st = addAnimation(b, clip, int(asset.skeleton.names.size()), scales);
+    if (st) st = addAnimation(b, clip, int(asset.skeleton.names.size()));
   if (!st) return st;
   b.bin.resize(align4(b.bin.size()), '\0');
   if (b.bin.size() > kMaxBufferBytes)
@@ -620,18 +512,31 @@ Result<std::string> serializeJson(tinygltf::Model& model, bool binary) {
   return stream.str();
 }
 
-// The metadata as written: correctives' scale/offset times s_n (morph_scales.h).
-std::string writtenMetadata(const Asset& asset, const std::vector<double>& scales) {
-  Asset names;  // metadataJson reads the skeleton, the metadata and target names only
-  names.skeleton.names = asset.skeleton.names;
-  names.skeleton.parents = asset.skeleton.parents;
-  names.metadata = asset.metadata;
-  for (const MorphTarget& t : asset.mesh.morph_targets) {
-    names.mesh.morph_targets.emplace_back();
-    names.mesh.morph_targets.back().name = t.name;
+// RFC 3986 percent-encoding of a file name for a glTF "uri".
+std::string uriEscape(const std::string& name) {
+  static const char hex[] = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : name) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') out += static_cast<char>(c);
+    else out += std::string("%") + hex[c >> 4] + hex[c & 15];
   }
-  foldScalesIntoMetadata(scales, asset.mesh, &names.metadata);
-  return metadataJson(names);
+  return out;
+}
+
+// A pretty-printed .gltf whose (empty, placeholder-named) buffer becomes the
+// external file `uri` of `size` bytes: tinygltf's stream writer can only
+// embed, so its buffer entry is rewritten in place.
+Status pointBufferAt(std::string& json, const std::string& uri, size_t size) {
+  const std::string data_uri = "\"uri\": \"data:application/octet-stream;base64,\"";
+  const size_t name = json.find(kBufferPlaceholder);
+  const size_t length = name == std::string::npos ? name : json.rfind("\"byteLength\": 0,", name);
+  const size_t data = name == std::string::npos ? name : json.find(data_uri, name);
+  if (length == std::string::npos || data == std::string::npos)
+    return makeError("glTF writer: the buffer entry was not found in the serialised JSON");
+  json.replace(data, data_uri.size(), "\"uri\": \"" + uriEscape(uri) + "\"");
+  json.replace(name, std::strlen(kBufferPlaceholder), "\"" + uriEscape(uri) + "\"");
+  json.replace(length, std::strlen("\"byteLength\": 0,"), "\"byteLength\": " + std::to_string(size) + ",");
+  return Status();
 }
 
 class GltfWriter : public Writer {
@@ -639,29 +544,33 @@ class GltfWriter : public Writer {
   const char* name() const override { return "glTF"; }
 
   Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
-    std::vector<bool> quantized(asset.mesh.morph_targets.size(), false);
-    std::vector<double> scales(asset.mesh.morph_targets.size(), 1.0);
-    if (options.quantize_morphs) {
-      quantized = quantizedTargets(asset);
-      scales = morphWeightScales(asset);
-    }
+    WriterOptions embedded = options;
+    embedded.buffer_uri.clear();
+    Result<Files> files = serializeFiles(asset, embedded);
+    if (!files) return files.error();
+    return std::move(files->bytes);
+  }
+
+  Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const override {
     GltfBuild b;
-    Status st = buildModel(asset, options, quantized, scales, b);
+    Status st = buildModel(asset, options, b);
     if (!st) return st.error();
     const std::string byte_length = "\"byteLength\":" + std::to_string(b.bin.size());
-    if (!options.binary) {  // .gltf: tinygltf embeds the buffer as a data URI
+    const bool external = !options.binary && !options.buffer_uri.empty();
+    if (!options.binary && !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
       b.model.buffers[0].name.clear();
       b.model.buffers[0].data.assign(b.bin.begin(), b.bin.end());
       std::string().swap(b.bin);
     }
     Result<std::string> json = serializeJson(b.model, options.binary);
-    if (!json) return json;
-    st = spliceMetadata(*json, writtenMetadata(asset, scales));
+    if (!json) return json.error();
+    st = spliceMetadata(*json, metadataJson(asset));
     if (st && options.binary)
       st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder), byte_length);
+    if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, b.bin.size());
     if (!st) return st.error();
-    if (!options.binary) return json;
-    return assembleGlb(std::move(*json), b.bin);
+    if (options.binary) return Files{assembleGlb(std::move(*json), b.bin), std::string()};
+    return Files{std::move(*json), external ? std::move(b.bin) : std::string()};
   }
 };
 

@@ -59,6 +59,16 @@ expect_failure betas-from-motion-without-betas 2 "no betas in the motion (--beta
 grep -q "animation: 50 frames" "$work/stdout"; check "--frames clamp: 50 frames baked" $?
 grep -q "note: smpl_72: --frames 10:100 ends after the motion's 60 frames; baked frames 10:60" "$work/stdout"
 check "--frames clamp note" $?
+# .gltf: the buffer goes to FILE.bin beside it (the JSON names it, with its size); --gltf-embed: one file.
+"$exe" --model builtin --out "$work/sep.gltf" -q; check ".gltf export" $?
+size=$(stat -c %s "$work/sep.bin" 2>/dev/null)
+grep -q "\"byteLength\": $size," "$work/sep.gltf" && grep -q '"uri": "sep.bin"' "$work/sep.gltf"
+check ".gltf names sep.bin and its $size bytes" $?
+"$exe" --model builtin --out "$work/emb.gltf" --gltf-embed -q; check "--gltf-embed export" $?
+[ ! -e "$work/emb.bin" ] && grep -q '"uri": "data:application/octet-stream;base64,' "$work/emb.gltf"
+check "--gltf-embed writes one file with a data URI" $?
+expect_failure gltf-embed-on-glb 1 "--gltf-embed applies only to .gltf output" --model builtin --out "$work/out.glb" --gltf-embed
+expect_failure gltf-bin-unwritable 4 "Error saving" --model builtin --out "$work/no/such/dir/out.gltf"
 expect_failure unwritable 4 "Error saving" --model "$models/smpl_small.npz" --out "$work/no/such/dir/out.glb"
 [ ! -e "$work/hostile-ran" ]; check "hostile pickle executed something" $?
 

@@ -13,6 +13,16 @@ add_test(NAME cli.dmpl
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/dmpl_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.dmpl PROPERTIES LABELS cli)
 
+# Every smpl-export example of the README, run on synthetic files (samples/run.py),
+# and proof that the run fails when a README example breaks.
+add_test(NAME cli.readme_samples
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/samples/run.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --work ${CMAKE_CURRENT_BINARY_DIR}/readme_samples)
+add_test(NAME cli.readme_samples_detect_breakage
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/readme_samples_breakage_test.sh ${SMPL_SYSTEM_PYTHON}
+          ${PROJECT_SOURCE_DIR} $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli.readme_samples cli.readme_samples_detect_breakage PROPERTIES LABELS cli)
+
 # The README's option table and docs/cli.md agree with --help (cli/options.cpp).
 add_test(NAME cli.docs
   COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check-cli-docs.py $<TARGET_FILE:smpl-export>

@@ -16,9 +16,9 @@ import sys
 import bpy
 import numpy as np
 
-np.bool = bool
 sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_harness as harness  # noqa: E402  (numpy patch, checks, exit status)
 import blender_roundtrip as rt  # noqa: E402
 import model_math  # noqa: E402
 
@@ -28,7 +28,7 @@ def parse_args():
     ap.add_argument("--zip", required=True)
     ap.add_argument("--asset", required=True)
     ap.add_argument("--model", required=True)
-    return ap.parse_args(sys.argv[sys.argv.index("--") + 1:])
+    return ap.parse_args(harness.script_args())
 
 
 def install(zip_path):
@@ -125,16 +125,8 @@ def main():
     leftover = [h for h in bpy.app.handlers.frame_change_post + bpy.app.handlers.depsgraph_update_post
                 if getattr(h, "__module__", "").startswith("smpl_correctives")]
     rt.check(not leftover, "handlers left after unregister: %s" % leftover)
-    print("%d check(s) failed" % len(rt.failures) if rt.failures else "OK")
-    sys.stdout.flush()
-    os._exit(1 if rt.failures else 0)
+    harness.finish()
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except BaseException:  # any error must fail the test, never leave Blender at exit 0
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        os._exit(1)
+    harness.run(main)

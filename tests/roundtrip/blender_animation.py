@@ -32,10 +32,10 @@ import time
 import bpy
 import numpy as np
 
-np.bool = bool  # Debian numpy vs Blender 3.4's glTF importer
 sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import blender_roundtrip as rt  # noqa: E402  (import helpers, failures list)
+import blender_harness as harness  # noqa: E402  (numpy patch, checks, exit status)
+import blender_roundtrip as rt  # noqa: E402  (import helpers)
 import model_math  # noqa: E402
 
 # AMASS world (Z-up) -> exported model axes (Y-up): -90 degrees about X.
@@ -43,7 +43,7 @@ Z_UP_TO_Y_UP = np.array([[1.0, 0, 0], [0, 0, 1], [0, -1, 0]])
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    argv = harness.script_args()
     ap = argparse.ArgumentParser()
     ap.add_argument("--asset", required=True)
     ap.add_argument("--model", required=True, help="model .npz (read with numpy)")
@@ -330,13 +330,7 @@ def main():
         subframe_report(ctx, ratio, count)
     print("blender_time_s %s %s %d %.2f max_err_m %.3e widened_max_err_m %.3e frames %s of %d"
           % (fmt, ctx["label"], m, seconds, worst, widened, frames, count))
-    if rt.failures:
-        print("%d check(s) failed" % len(rt.failures))
-        sys.stdout.flush()
-        os._exit(1)
-    print("OK")
-    sys.stdout.flush()
-    os._exit(0)
+    harness.finish()
 
 
 def read_max_influences(asset):
@@ -347,14 +341,4 @@ def read_max_influences(asset):
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except SystemExit as e:
-        print(e)
-        sys.stdout.flush()
-        os._exit(1)
-    except Exception:  # any error must fail the CTest run, not leave Blender at exit 0
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        os._exit(1)
+    harness.run(main)

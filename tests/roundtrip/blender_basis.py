@@ -17,9 +17,9 @@ import sys
 import bpy
 import numpy as np
 
-np.bool = bool  # Debian numpy vs Blender 3.4's glTF importer
 sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_harness as harness  # noqa: E402  (numpy patch, checks, exit status)
 import blender_roundtrip as rt  # noqa: E402
 import model_math  # noqa: E402
 
@@ -33,7 +33,7 @@ def parse_args():
     ap.add_argument("--betas", default="")
     ap.add_argument("--label", default="")
     ap.add_argument("--tol", type=float, default=1e-5)
-    args = ap.parse_args(sys.argv[sys.argv.index("--") + 1:])
+    args = ap.parse_args(harness.script_args())
     args.metadata_betas = False  # what rt.load_truth reads besides these
     return args
 
@@ -114,16 +114,8 @@ def main():
     rt.check(trunc.max() <= args.tol, "vs numpy rank-%d model: max vertex error %.3g m" % (k, trunc.max()))
     if k == p:
         rt.check(full.max() <= args.tol, "K = P: max vertex error %.3g m vs the full model" % full.max())
-    print("%d check(s) failed" % len(rt.failures) if rt.failures else "OK")
-    sys.stdout.flush()
-    os._exit(1 if rt.failures else 0)
+    harness.finish()
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except BaseException:  # any error must fail the test, never leave Blender at exit 0
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        os._exit(1)
+    harness.run(main)

@@ -20,18 +20,18 @@
 import contextlib
 import io
 import json
+import os
 import sys
 
 import bpy
 from mathutils import Vector
 
-failures = []
+sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_harness as harness  # noqa: E402  (checks, exit status)
 
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-    return ok
+check = harness.check
+failures = harness.failures
 
 
 def to_blender(p):
@@ -145,10 +145,10 @@ def check_animation(arm, mesh_obj, exp, tol):
 
 
 def main():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    argv = harness.script_args()
     if len(argv) != 2:
         print("usage: blender -b --python blender_fbx_import_check.py -- FILE.fbx EXPECT.json")
-        sys.exit(2)
+        sys.exit(2)  # harness.run: exit 1
     with open(argv[1]) as f:
         exp = json.load(f)
     tol = exp.get("tolerance", 1e-4)
@@ -168,11 +168,7 @@ def main():
             check_shape_keys(mesh_obj, exp)
     if arm and mesh_obj and "animation" in exp:
         check_animation(arm, mesh_obj, exp, tol)
-    for f in failures:
-        print("FAIL: " + f)
-    if failures:
-        sys.exit(1)
-    print("OK: %s imports as expected" % argv[0])
+    harness.finish("OK: %s imports as expected" % argv[0])
 
 
-main()
+harness.run(main)

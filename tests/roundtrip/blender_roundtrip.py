@@ -23,24 +23,19 @@ import time
 import bpy
 import numpy as np
 
-np.bool = bool  # Debian numpy vs Blender 3.4's glTF importer
 sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_harness as harness  # noqa: E402  (numpy patch, checks, exit status)
 import model_math  # noqa: E402
 
 # Model axes (+Y up) -> Blender world (+Z up): both importers turn +90 deg about X.
 MODEL_TO_WORLD = np.array([[1.0, 0, 0], [0, 0, -1], [0, 1, 0]])
-failures = []
-
-
-def check(ok, message):
-    if not ok:
-        failures.append(message)
-        print("FAIL:", message)
+check = harness.check  # rt.check / rt.failures: the other scripts use these names
+failures = harness.failures
 
 
 def parse_args():
-    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    argv = harness.script_args()
     ap = argparse.ArgumentParser()
     ap.add_argument("--asset", required=True)
     ap.add_argument("--addon-dir", required=True)
@@ -371,24 +366,8 @@ def main():
                   % (label, layout, dist.max(), args.tol))
     print("apply_cost K=%d keys=%d median_ms %.3f mean_ms %.3f max_ms %.3f" % (
         k, len(model_math.target_names(names)), 1e3 * np.median(cost), 1e3 * cost.mean(), 1e3 * cost.max()))
-    if failures:
-        print("%d check(s) failed" % len(failures))
-        sys.stdout.flush()
-        os._exit(1)
-    print("OK")
-    sys.stdout.flush()
-    os._exit(0)
+    harness.finish()
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except SystemExit as e:
-        print(e)
-        sys.stdout.flush()
-        os._exit(1)
-    except Exception:  # any error must fail the CTest run, not leave Blender at exit 0
-        import traceback
-        traceback.print_exc()
-        sys.stdout.flush()
-        os._exit(1)
+    harness.run(main)

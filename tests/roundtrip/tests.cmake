@@ -129,6 +129,13 @@ if(SMPL_ROUNDTRIP_FBX)
                         SUFFIX _autobones IMPORT_ARGS automatic_bone_orientation=True)
   endforeach()
 endif()
+# .gltf with its buffer in a separate .bin (the default) and embedded: both
+# import in Blender and pass the validator.
+smpl_roundtrip_case(smpl_small gltf ${SMPL_FIXTURE_DIR}/models/smpl_small.npz 4 ${SMPL_RT_BETAS})
+smpl_roundtrip_case(smpl_small gltf ${SMPL_FIXTURE_DIR}/models/smpl_small.npz 4 ${SMPL_RT_BETAS}
+                    SUFFIX _embed EXPORT_ARGS --gltf-embed)
+list(APPEND SMPL_RT_GLBS ${SMPL_ROUNDTRIP_DIR}/smpl_small_m4_gltf.gltf ${SMPL_ROUNDTRIP_DIR}/smpl_small_m4_gltf_embed.gltf)
+list(APPEND SMPL_RT_GLB_FIXTURES roundtrip_smpl_small_m4_gltf roundtrip_smpl_small_m4_gltf_embed)
 foreach(heuristic TEMPERANCE FORTUNE)
   smpl_roundtrip_case(smplx_small glb ${SMPL_FIXTURE_DIR}/models/smplx_small.npz 8 ${SMPL_RT_BETAS}
                       SUFFIX _${heuristic} IMPORT_ARGS bone_heuristic=${heuristic})

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "exporter/asset.h"
+#include "tests/unit/test_asset.h"
 
 namespace smpl {
 namespace fbx_test {
@@ -30,14 +31,10 @@ struct Lcg {
 };
 
 inline Skeleton testSkeleton() {
-  Skeleton s;
-  s.names = {"pelvis", "spine", "head", "left_leg", "right_leg"};
-  s.parents = {-1, 0, 1, 0, 0};
-  s.rest_world.resize(5, 3);
-  s.rest_world << 0, 0.9, 0, 0, 1.2, 0.02, 0, 1.5, 0, 0.1, 0.5, 0, -0.1, 0.5, 0;
-  s.rest_local = s.rest_world;
-  for (int k = 1; k < 5; ++k) s.rest_local.row(k) -= s.rest_world.row(s.parents[k]);
-  return s;
+  Eigen::MatrixXd rest_world(5, 3);
+  rest_world << 0, 0.9, 0, 0, 1.2, 0.02, 0, 1.5, 0, 0.1, 0.5, 0, -0.1, 0.5, 0;
+  return test::skeletonFromWorld({"pelvis", "spine", "head", "left_leg", "right_leg"}, {-1, 0, 1, 0, 0},
+                                 rest_world);
 }
 
 // Cylinder: kRings rings of kSegments vertices from y=0 to y=1.7, plus a

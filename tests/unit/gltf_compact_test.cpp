@@ -10,6 +10,7 @@
 #include "plugins/gltf/gltf_writer.h"
 #include "tools/morph_error.h"
 #include "exporter/morph_scales.h"
+#include "tests/unit/test_asset.h"
 
 namespace smpl {
 namespace {
@@ -19,12 +20,9 @@ namespace {
 Asset compactAsset() {
   Asset a;
   a.name = "body";
-  a.skeleton.names = {"pelvis", "left_hip", "left_knee"};
-  a.skeleton.parents = {-1, 0, 1};
-  a.skeleton.rest_world = Eigen::MatrixXd(3, 3);
-  a.skeleton.rest_world << 0, 1, 0, 0.1, 0.9, 0, 0.1, 0.5, 0;
-  a.skeleton.rest_local = a.skeleton.rest_world;
-  for (int k = 1; k < 3; ++k) a.skeleton.rest_local.row(k) -= a.skeleton.rest_world.row(k - 1);
+  Eigen::MatrixXd rest_world(3, 3);
+  rest_world << 0, 1, 0, 0.1, 0.9, 0, 0.1, 0.5, 0;
+  a.skeleton = test::skeletonFromWorld({"pelvis", "left_hip", "left_knee"}, {-1, 0, 1}, rest_world);
   const int v = 40;
   SkinnedMesh& m = a.mesh;
   m.positions.resize(v, 3);
@@ -98,9 +96,11 @@ TEST(GltfCompact, SparseKeepsExactlyTheDeltasAboveEpsilon) {
 
 TEST(GltfCompact, QuantizedWithinHalfAStepOfThePerTargetScale) {
   const Asset a = compactAsset();
-  WriterOptions o;
-  o.quantize_morphs = true;
-  Result<DecodedMorphs> d = decodeMorphs(write(a, o));
+  Asset folded = a;  // what exportAsset does for --quantize-morphs
+  foldMorphScales(&folded);
+  EXPECT_TRUE(folded.mesh.morph_targets[0].quantized && folded.mesh.morph_targets[1].quantized);
+  EXPECT_FALSE(folded.mesh.morph_targets[2].quantized);  // no corrective entry: stays FLOAT
+  Result<DecodedMorphs> d = decodeMorphs(write(folded, WriterOptions()));
   ASSERT_TRUE(d.ok()) << d.message();
   const std::vector<double> s = morphWeightScales(a);
   ASSERT_EQ(d->correctives.size(), 2u);
@@ -120,6 +120,30 @@ TEST(GltfCompact, QuantizedWithinHalfAStepOfThePerTargetScale) {
   Result<double> err = morphError(*d, a);
   ASSERT_TRUE(err.ok()) << err.message();
   EXPECT_LE(*err, 4 * (s[0] + s[1]) / 32767);
+}
+
+// The writer computes no scale: it stores the targets the asset marks
+// quantized as int16 and everything else as given.
+TEST(GltfCompact, WriterQuantizesExactlyTheMarkedTargets) {
+  Asset a = compactAsset();
+  a.mesh.morph_targets[0].deltas /= a.mesh.morph_targets[0].deltas.cwiseAbs().maxCoeff();
+  a.mesh.morph_targets[0].quantized = true;
+  tinygltf::Model m;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  const std::string bytes = write(a, WriterOptions());
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+                                          unsigned(bytes.size())))
+      << err;
+  const auto& targets = m.meshes[0].primitives[0].targets;
+  ASSERT_EQ(targets.size(), 3u);
+  EXPECT_EQ(m.accessors[size_t(targets[0].at("POSITION"))].componentType, TINYGLTF_COMPONENT_TYPE_SHORT);
+  EXPECT_EQ(m.accessors[size_t(targets[1].at("POSITION"))].componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  EXPECT_EQ(m.accessors[size_t(targets[2].at("POSITION"))].componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  Result<DecodedMorphs> d = decodeMorphs(bytes);
+  ASSERT_TRUE(d.ok()) << d.message();
+  EXPECT_DOUBLE_EQ(d->correctives[0].scale, 1.0);  // the metadata as the asset has it
+  EXPECT_LE((d->deltas[0] - a.mesh.morph_targets[0].deltas).cwiseAbs().maxCoeff(), 0.5f / 32767 + 1e-7f);
 }
 
 TEST(GltfCompact, FoldingTwiceIsTheIdentity) {

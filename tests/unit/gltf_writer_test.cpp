@@ -17,91 +17,13 @@
 
 #include "exporter/metadata_json.h"
 #include "plugins/writer.h"
+#include "tests/unit/test_asset.h"
 
 namespace smpl {
 namespace {
 
-struct AssetSpec {
-  int joints = 10;
-  int vertices = 12;
-  int influences = 4;
-  bool uvs = true;
-  int morph_targets = 2;
-  int frames = 0;
-};
-
-Eigen::MatrixXf randomMatrix(std::mt19937& rng, int rows, int cols, float lo, float hi) {
-  std::uniform_real_distribution<float> u(lo, hi);
-  Eigen::MatrixXf m(rows, cols);
-  for (int r = 0; r < rows; ++r)
-    for (int c = 0; c < cols; ++c) m(r, c) = u(rng);
-  return m;
-}
-
-void fillSkeleton(Asset& a, std::mt19937& rng, int k_count) {
-  Skeleton& s = a.skeleton;
-  Eigen::MatrixXf world = randomMatrix(rng, k_count, 3, -1.f, 1.f);
-  s.rest_world = world.cast<double>();
-  s.rest_local = s.rest_world;
-  for (int k = 0; k < k_count; ++k) {
-    s.names.push_back(k == 0 ? "pelvis" : "joint_" + std::to_string(k));
-    s.parents.push_back(k == 0 ? -1 : (k - 1) / 2);  // a binary tree, p(k) < k
-    if (k > 0) s.rest_local.row(k) = s.rest_world.row(k) - s.rest_world.row(s.parents.back());
-  }
-}
-
-// Distinct joints per vertex, positive weights summing to 1 in double.
-void fillSkin(SkinnedMesh& m, std::mt19937& rng, int v_count, int k_count, int influences) {
-  m.joints.resize(v_count, influences);
-  m.weights.resize(v_count, influences);
-  std::uniform_real_distribution<double> u(0.01, 1.0);
-  for (int v = 0; v < v_count; ++v) {
-    std::vector<double> w(static_cast<size_t>(influences));
-    double sum = 0;
-    for (double& x : w) sum += (x = u(rng));
-    for (int i = 0; i < influences; ++i) {
-      m.joints(v, i) = (v + 3 * i) % k_count;
-      m.weights(v, i) = float(w[size_t(i)] / sum);
-    }
-  }
-}
-
-void fillAnimation(Asset& a, std::mt19937& rng, int frames) {
-  AnimationClip clip;
-  clip.name = "walk";
-  std::normal_distribution<double> n(0.0, 1.0);
-  for (int t = 0; t < frames; ++t) clip.times.push_back(t / 30.0);
-  clip.rotations.resize(a.skeleton.names.size());
-  for (auto& track : clip.rotations)
-    for (int t = 0; t < frames; ++t)
-      track.push_back(Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized());
-  for (int t = 0; t < frames; ++t) clip.root_translation.emplace_back(n(rng), n(rng), n(rng));
-  clip.morph_weights = randomMatrix(rng, frames, int(a.mesh.morph_targets.size()), -2.f, 1.f);
-  a.animations.push_back(clip);
-}
-
-Asset makeAsset(const AssetSpec& spec) {
-  std::mt19937 rng(1234);
-  Asset a;
-  a.name = "body";
-  fillSkeleton(a, rng, spec.joints);
-  SkinnedMesh& m = a.mesh;
-  const int v_count = spec.vertices;
-  m.positions = randomMatrix(rng, v_count, 3, -1.f, 1.f);
-  m.normals = randomMatrix(rng, v_count, 3, -1.f, 1.f).rowwise().normalized();
-  if (spec.uvs) m.uvs = randomMatrix(rng, v_count, 2, 0.f, 1.f);
-  m.triangles.resize(v_count - 2, 3);
-  for (int f = 0; f < v_count - 2; ++f) m.triangles.row(f) << f, f + 1, f + 2;
-  fillSkin(m, rng, v_count, spec.joints, spec.influences);
-  for (int t = 0; t < spec.morph_targets; ++t)
-    m.morph_targets.push_back(
-        {"pose_joint_1_0" + std::to_string(t), randomMatrix(rng, v_count, 3, -0.1f, 0.1f)});
-  a.metadata = {"smpl",          "synthetic", "0.1.0",
-                {0.5, -1.25},    {},          {{0, "pose_joint_1_00", 1.0, 0.0}},
-                spec.influences, "meters",    "+Y",         {}, {}};
-  if (spec.frames > 0) fillAnimation(a, rng, spec.frames);
-  return a;
-}
+using test::AssetSpec;
+using test::makeAsset;
 
 void keepOutput(const std::string& name, const std::string& bytes) {
   const char* dir = std::getenv("SMPL_GLTF_OUT_DIR");
@@ -551,7 +473,7 @@ TEST(GltfWriter, RejectsInvalidAssetsWithMessages) {
   fails(a, "strictly increasing");
   a = makeAsset(spec);
   a.animations[0].morph_weights.resize(3, 5);
-  fails(a, "morph_weights");
+  fails(a, "morph weights");
   a = makeAsset({});
   a.skeleton.names[2] = "smpl-export:metadata:7c1e5a90";
   fails(a, "placeholder");

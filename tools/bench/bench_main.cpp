@@ -1,6 +1,6 @@
 // smpl-bench: prints the speed and size table of the product (issue "Speed and
 // size"). --compact: only the compact glTF table. Full-size synthetic models (bench/synthetic_model.h) stand in for the
-// licensed ones. Usage: smpl-bench [--quick] [--anim-minutes M]
+// licensed ones. Usage: smpl-bench [--quick] [--compact] [--anim-minutes M] (--help: usage)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -15,6 +15,7 @@
 #include "core/load/motion.h"
 #include "core/math/pose_sampler.h"
 #include "exporter/animation.h"
+#include "exporter/morph_scales.h"
 #include "exporter/pipeline.h"
 #include "tools/morph_error.h"
 #include "plugins/writer.h"
@@ -76,14 +77,15 @@ void benchCompact(const BodyModel& model, int repeats) {
                                 {"sparse 1e-5+quant", 1e-5, true, false}, {"draco", 0, false, true},
                                 {"sparse 1e-5+quant+draco", 1e-5, true, true}};
   const Writer* w = writerForPath("x.glb");
+  Asset folded = *asset;  // --quantize-morphs: exportAsset folds each corrective's peak into its weights
+  foldMorphScales(&folded);
   for (const Encoding& e : encodings) {
     WriterOptions o;
     o.morph_epsilon = e.epsilon;
-    o.quantize_morphs = e.quantize;
     o.draco = e.draco;
     std::string bytes;
     const double ms = timeMs(repeats, [&] {
-      Result<std::string> out = w->serialize(*asset, o);
+      Result<std::string> out = w->serialize(e.quantize ? folded : *asset, o);
       bytes = out.ok() ? *out : std::string();
     });
     Result<DecodedMorphs> decoded = decodeMorphs(bytes);
@@ -124,7 +126,7 @@ void benchAnimation(const BodyModel& model, double minutes) {
   Result<AnimationClip> clip = bakeAnimation(model, *asset, motion, AnimationOptions(), "bench");
   const double bake = msSince(start);
   asset->animations.push_back(std::move(*clip));
-  std::printf("| %-14s | bake %.0f min @120 fps (%d frames) | %8.0f ms | %9.0f frames/s |\n", model.name.c_str(),
+  std::printf("| %-14s | bake %g min @120 fps (%d frames) | %8.0f ms | %9.0f frames/s |\n", model.name.c_str(),
               minutes, frames, bake, frames / (bake / 1e3));
   for (const char* ext : {".glb", ".fbx"}) {
     const Writer* w = writerForPath(std::string("x") + ext);
@@ -144,6 +146,8 @@ int main(int argc, char** argv) {
   double minutes = 10;
   bool compact_only = false;
   for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h"))
+      return std::printf("usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"), 0;
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--compact")) compact_only = true;
     else if (!std::strcmp(argv[i], "--anim-minutes") && i + 1 < argc) minutes = std::atof(argv[++i]);

@@ -1,0 +1,33 @@
+#include "exporter/export_asset.h"
+
+#include "exporter/morph_scales.h"
+#include "exporter/validate_asset.h"
+
+namespace smpl {
+
+CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions) {
+  if (encoding != CorrectiveEncoding::Auto) return encoding;
+  return motions == 0 ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
+}
+
+Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
+                          const std::vector<MotionInput>& motions, const DmplInput* dmpl) {
+  ExportOptions resolved = options;
+  resolved.encoding = resolveEncoding(options.encoding, motions.size());
+  Result<Asset> asset = buildAsset(model, resolved);
+  if (!asset) return asset;
+  if (dmpl && dmpl->basis) addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
+  for (const MotionInput& m : motions) {
+    if (!m.motion) return makeError(m.context + ": no motion given");
+    Result<AnimationClip> clip = bakeAnimation(model, *asset, *m.motion, m.animation, m.context, m.progress);
+    if (!clip) return clip.error();
+    asset->animations.push_back(std::move(*clip));
+  }
+  // Quantized targets carry their scale s_n in the weight mapping: folded
+  // here so every writer and the sidecar see the same numbers.
+  if (options.quantize_morphs) foldMorphScales(&*asset);
+  if (Status st = validateAsset(*asset); !st) return st.error();
+  return asset;
+}
+
+}  // namespace smpl

@@ -1,0 +1,51 @@
+// exportAsset(): the whole library side of an export, model + options +
+// motions -> the finished Asset every writer serialises as it is. After
+// buildAsset (pipeline.h) it bakes each motion (animation.h), applies the
+// quantisation fold when asked (morph_scales.h: deltas / s_n, weights and the
+// metadata mapping * s_n) and runs validateAsset (validate_asset.h), so the
+// writers in plugins/ only translate and the sidecar written beside a file
+// carries the same numbers as the file.
+//
+//   std::vector<MotionInput> motions = {{&walk, "walk.npz", AnimationOptions(), nullptr}};
+//   Result<Asset> asset = exportAsset(model, options, motions);
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/body_model.h"
+#include "core/load/motion.h"
+#include "core/result.h"
+#include "exporter/animation.h"
+#include "exporter/asset.h"
+#include "exporter/dmpl_targets.h"
+#include "exporter/pipeline.h"
+
+namespace smpl {
+
+// One motion to bake into the asset: the motion (not owned, outlives the
+// call), the path or name that errors name, how to bake it (fps, frame range,
+// up axis) and an optional progress callback (fraction in [0, 1]).
+struct MotionInput {
+  const Motion* motion = nullptr;
+  std::string context;
+  AnimationOptions animation;
+  Progress progress;
+};
+
+// CorrectiveEncoding::Auto resolved for an export with `motions` baked
+// animations: Unit when there is at least one (importers such as Blender's
+// clamp animated weights to [0, 1]), else Signed. Other encodings unchanged.
+CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions);
+
+// buildAsset(model, options with the encoding resolved), one AnimationClip per
+// motion in order (asset.animations[i] from motions[i]), then, when
+// options.quantize_morphs, foldMorphScales; last validateAsset. Errors: those
+// of buildAsset, bakeAnimation (naming motions[i].context) and validateAsset;
+// one line each, no partial asset.
+// `dmpl` (optional): DMPL soft-tissue targets added after buildAsset, before
+// baking (dmpl_targets.h).
+Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
+                          const std::vector<MotionInput>& motions, const DmplInput* dmpl = nullptr);
+
+}  // namespace smpl

@@ -1,0 +1,159 @@
+#!/usr/bin/python3
+"""Runs every smpl-export example of the README on small synthetic files.
+
+The examples are read from README.md itself, not copied here: every line of
+an indented code block that starts with `smpl-export ` and every inline code
+span `smpl-export ...` (the "What you have -> the command" table). Lines with
+shell variables or "..." are templates, not examples, and are skipped.
+The README's file names (SMPL_NEUTRAL.npz, walk_poses.npz, models/, ...)
+are created in a sandbox as copies of synthetic fixtures written by
+tests/fixtures/make_*.py (random arrays with the real layouts; never model
+files from the authors), then each command runs verbatim there with the
+given smpl-export first on PATH. A command passes when it exits 0 and its
+--out file (or a file in its --out-dir) exists.
+
+    /usr/bin/python3 samples/run.py --exe build/cli/smpl-export [--fixtures build/fixtures]
+        [--readme README.md] [--work /tmp/smpl-samples]
+
+--fixtures reuses fixtures the build already generated (CTest does this);
+without it the fixture scripts are run into <work>/fixtures. Exit 0 when every
+example passes, 1 otherwise (each failure printed with its output).
+Needs numpy (Debian's /usr/bin/python3).
+"""
+import argparse
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCRIPTS = ["make_models.py", "make_motions.py", "make_motion_formats.py", "make_released_layouts.py"]
+MIN_EXAMPLES = 15  # the README has 19; fewer means the extraction broke
+
+# README name -> fixture (relative to the fixture directory). Folders are copied whole.
+FILES = {
+    "SMPL_NEUTRAL.npz": "models/smpl_small.npz",
+    "SMPL_NEUTRAL.pkl": "models/smpl_small_p2.pkl",
+    "basicModel_f_lbs_10_207_0_v1.0.0.pkl": "models/smpl_small_p2.pkl",
+    "SMPLH_NEUTRAL.npz": "models/smplh_small.npz",
+    "SMPLX_NEUTRAL.npz": "released/smplx_release.npz",
+    "M.npz": "models/smpl_small.npz",
+    "fit.npz": "released/betas_rows_differ.npz",
+    "walk_poses.npz": "motions/amass_smplh.npz",
+    "walk.npz": "motions/smpl_72.npz",
+    "x_stageii.npz": "released/amass_stageii.npz",
+    "dance.smpl": "formats/codec_root.smpl",
+    "000.pkl": "formats/fit_pca.pkl",
+    "gBR_sBM_cAll_d04_mBR0_ch01.pkl": "formats/aist.pkl",
+    "models": "released/smpl_folder",
+    "subject": "released/mixed_gender",
+    "CMU/01": "formats/subject",
+    "amass/walk_poses.npz": "motions/amass_smplh.npz",
+    "amass/smpl_72.npz": "motions/smpl_72.npz",
+    "smplh/female/model.npz": "dmpl/amass/smplh/female/model.npz",
+    "dmpls/female/model.npz": "dmpl/amass/dmpls/female/model.npz",
+    "run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
+    "body_models": "dmpl/amass",
+    "amass_dmpl/run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
+}
+
+
+def examples(readme):
+    """The smpl-export commands of the README, in order, without duplicates."""
+    found = []
+    with open(readme, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("    smpl-export "):
+                found.append(line.strip())
+            found += re.findall(r"`(smpl-export [^`]*)`", line)
+    seen = []
+    for cmd in found:
+        if "$" not in cmd and "..." not in cmd and cmd not in seen:
+            seen.append(cmd)
+    return seen
+
+
+def make_fixtures(work):
+    out = os.path.join(work, "fixtures")
+    os.makedirs(out, exist_ok=True)
+    for script in SCRIPTS:
+        subprocess.run([sys.executable, os.path.join(ROOT, "tests", "fixtures", script), out], check=True,
+                       stdout=subprocess.DEVNULL)
+    return out
+
+
+def sandbox(fixtures, work):
+    box = os.path.join(work, "sandbox")
+    shutil.rmtree(box, ignore_errors=True)
+    os.makedirs(box)
+    for name, source in FILES.items():
+        src, dst = os.path.join(fixtures, source), os.path.join(box, name)
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        (shutil.copytree if os.path.isdir(src) else shutil.copyfile)(src, dst)
+    # --betas-file betas.npy (3 betas) and a UV pair for M.npz (one uv per vertex, ft = the model's faces).
+    np.save(os.path.join(box, "betas.npy"), np.array([0.5, -1.2, 0.3]))
+    model = np.load(os.path.join(box, "M.npz"))
+    rng = np.random.default_rng(7)
+    np.save(os.path.join(box, "body_uv.npy"), rng.random((model["v_template"].shape[0], 2)))
+    np.save(os.path.join(box, "body_ft.npy"), model["f"].astype(np.int64))
+    # a.npz / b.npz: the fixture motions repeated past the README's --frames 0:600.
+    for name, source in (("a.npz", "motions/amass_smplh.npz"), ("b.npz", "motions/smpl_72.npz")):
+        long_motion(os.path.join(fixtures, source), os.path.join(box, name), 660)
+    return box
+
+
+def long_motion(src, dst, frames):
+    """`src` with its per-frame arrays (first axis T, as long as poses) repeated to `frames` frames."""
+    d = dict(np.load(src))
+    t = d["poses"].shape[0]
+    for key, value in d.items():
+        if value.ndim >= 1 and value.shape[0] == t:
+            d[key] = np.resize(value, (frames,) + value.shape[1:])
+    np.savez(dst, **d)
+
+
+def outputs_exist(args, box):
+    """Whether the --out file / some file in --out-dir exists (commands without either pass on exit 0)."""
+    for flag, check in (("--out", os.path.isfile), ("--out-dir", lambda d: os.path.isdir(d) and os.listdir(d))):
+        if flag in args:
+            target = os.path.join(box, args[args.index(flag) + 1])
+            if not check(target):
+                return flag + " " + target + " missing"
+    return ""
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--exe", required=True, help="the smpl-export binary to test")
+    p.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    p.add_argument("--fixtures", help="fixture directory the build generated (default: generate)")
+    p.add_argument("--work", help="scratch directory (default: a new temporary one)")
+    a = p.parse_args()
+    work = a.work or tempfile.mkdtemp(prefix="smpl-samples-")
+    fixtures = a.fixtures or make_fixtures(work)
+    box = sandbox(fixtures, work)
+    env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(a.exe)) + os.pathsep + os.environ["PATH"])
+    cmds = examples(a.readme)
+    failed = 0
+    for cmd in cmds:
+        args = shlex.split(cmd)
+        r = subprocess.run(args, cwd=box, env=env, capture_output=True, text=True)
+        problem = "exit %d" % r.returncode if r.returncode != 0 else outputs_exist(args, box)
+        print(("FAIL " if problem else "ok   ") + cmd + ("  (" + problem + ")" if problem else ""))
+        if problem:
+            failed += 1
+            print("     " + (r.stdout + r.stderr).strip().replace("\n", "\n     "))
+    print("%d README examples, %d failed" % (len(cmds), failed))
+    if len(cmds) < MIN_EXAMPLES:
+        print("expected at least %d examples in %s: the extraction found too few" % (MIN_EXAMPLES, a.readme))
+        return 1
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
