@@ -157,7 +157,7 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   if (!s.betas_given)
     if (Status st = betasFromMotion(model, s, job, *motions, &options); !st) return st.error();
   // Baked weights must survive importers that clamp (exportAsset resolves Auto the same way).
-  options.encoding = resolveEncoding(options.encoding, motions->size());
+  options.encoding = resolveEncoding(options.encoding, motions->size(), options.corrective_basis > 0);
   options.quantize_morphs = s.writer_options.quantize_morphs;
   // The finished asset: baked, quantisation folded, validated; the writer only translates it.
   ExportReport report;
@@ -167,6 +167,8 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   if (!asset) return exportFailure(job.out, asset.error(), options.uv_obj);
   reportMotions(model, s, job, *motions, *asset, &report);
   noteDmplJointCost(*asset, &report);
+  if (s.writer_options.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
+    report.notes.push_back("--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
   Result<std::string> producer = producerHashFor(s, job);
   if (!producer) return fail(ErrorKind::Load, "loading", s.model, producer.message());
   WriterOptions writer_options = s.writer_options;

@@ -23,6 +23,7 @@
 #include "core/io/printable.h"
 #include "core/load/validate_inputs.h"
 #include "core/memory_budget.h"
+#include "exporter/export_skin.h"
 #include "exporter/pruning_error.h"
 
 using namespace smpl;
@@ -47,8 +48,12 @@ void printSummary(const std::string& out, const ExportReport& r, const PruningEr
               r.joints, r.morph_targets, r.bytes / 1e6, r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
   for (const std::string& note : r.notes) std::printf("note: %s\n", printable(note, 4096).c_str());
-  std::printf("skinning error of %d influences vs all (%d random poses): mean %.3f mm, max %.3f mm\n",
-              r.max_influences, err.poses, err.mean_m * 1e3, err.max_m * 1e3);
+  std::printf("skinning error of %d influences vs all (%d held-out random poses): %s mean %.3f mm, max %.3f mm",
+              r.max_influences, err.poses, skinWeightMethodName(r.options.skin_weights), err.mean_m * 1e3,
+              err.max_m * 1e3);
+  if (r.options.skin_weights != SkinWeightMethod::Truncated)
+    std::printf("; truncated mean %.3f mm, max %.3f mm", err.truncated.mean_m * 1e3, err.truncated.max_m * 1e3);
+  std::printf("\n");
 }
 
 int run(int argc, char** argv, Stage* stage) {

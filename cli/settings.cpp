@@ -33,6 +33,21 @@ Status checkApplies(const Settings& s, bool batch, bool fbx) {
   return Status();
 }
 
+// Size options that would otherwise be silently ignored together (issue 13 item 6).
+Status checkSizeOptionPairs(const Settings& s) {
+  const ExportOptions& e = s.export_options;
+  if (given(s, "--corrective-weights") && !e.correctives)
+    return usageError("--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
+  if (given(s, "--quantize-morphs") && !e.correctives)
+    return usageError("--quantize-morphs quantizes corrective targets; with --correctives none there are none");
+  if (given(s, "--corrective-epsilon") && !e.correctives && e.shape_keys == 0 && e.expression_keys == 0)
+    return usageError("--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
+                      "--expression-keys there are none");
+  if (given(s, "--corrective-basis") && e.encoding == CorrectiveEncoding::Split)
+    return usageError("--corrective-basis conflicts with --corrective-weights split (basis weights are signed or unit)");
+  return Status();
+}
+
 Status checkConflicts(const Settings& s) {
   if (s.model.empty()) return usageError("missing --model PATH (use --model builtin for the demo body)");
   if (given(s, "--betas") && given(s, "--betas-file")) return usageError("--betas and --betas-file conflict: give one");
@@ -42,6 +57,7 @@ Status checkConflicts(const Settings& s) {
     return usageError("--corrective-basis conflicts with --correctives none");
   for (const char* o : {"--dmpl-count", "--dmpl-joints"})
     if (given(s, o) && s.dmpl.empty()) return usageError(std::string(o) + " needs --dmpl");
+  if (Status st = checkSizeOptionPairs(s); !st) return st;
   const bool batch = given(s, "--motion-dir") || given(s, "--out-dir");
   if (batch && (s.motion_dir.empty() || s.out_dir.empty()))
     return usageError("batch mode needs both --motion-dir and --out-dir");

@@ -91,8 +91,11 @@ void fillMorphWeights(const Asset& asset, const std::vector<int>& targets, const
                       Eigen::MatrixXf* weights, int frame) {
   const Eigen::VectorXd f = poseFeatures(rotations);
   const auto& correctives = asset.metadata.correctives;
-  for (size_t i = 0; i < correctives.size(); ++i)
-    (*weights)(frame, targets[i]) = static_cast<float>(correctives[i].scale * f[correctives[i].feature] + correctives[i].offset);
+  for (size_t i = 0; i < correctives.size(); ++i) {
+    const CorrectiveLayout& c = correctives[i];
+    const double w = c.scale * f[c.feature] + c.offset;
+    (*weights)(frame, targets[i]) = static_cast<float>(c.rectified ? std::max(0.0, w) : w);
+  }
   const CorrectiveBasis& basis = asset.metadata.corrective_basis;
   if (basis.targets.empty()) return;
   const Eigen::VectorXd w = basis.projection * f;

@@ -47,6 +47,7 @@ struct CorrectiveLayout {
   std::string target;                   // morph target name
   double scale = 1.0;
   double offset = 0.0;
+  bool rectified = false;               // split encoding: weight = max(0, scale * f[feature] + offset)
 };
 
 // --corrective-basis K (exporter/corrective_basis.h): K morph targets replace
@@ -98,7 +99,10 @@ struct AssetMetadata {
   std::string units = "meters";
   std::string up_axis = "+Y";
   CorrectiveBasis corrective_basis;     // last: keeps aggregate initialisers of the fields above valid
-  DmplInfo dmpl;                        // DMPL soft-tissue targets (empty without --dmpl)
+  // Added after corrective_basis for the same reason (aggregate initialisers stay valid).
+  std::string skin_weights = "truncated";      // "truncated" or "optimized" (export_skin.h)
+  std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (pipeline.h)
+  DmplInfo dmpl{};                      // DMPL soft-tissue targets (empty without --dmpl); last, as above
 };
 
 struct Asset {

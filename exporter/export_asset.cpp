@@ -5,15 +5,16 @@
 
 namespace smpl {
 
-CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions) {
+CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, bool basis) {
   if (encoding != CorrectiveEncoding::Auto) return encoding;
-  return motions == 0 ? CorrectiveEncoding::Signed : CorrectiveEncoding::Unit;
+  if (motions == 0) return CorrectiveEncoding::Signed;
+  return basis ? CorrectiveEncoding::Unit : CorrectiveEncoding::Split;
 }
 
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl) {
   ExportOptions resolved = options;
-  resolved.encoding = resolveEncoding(options.encoding, motions.size());
+  resolved.encoding = resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
   Result<Asset> asset = buildAsset(model, resolved);
   if (!asset) return asset;
   if (dmpl && dmpl->basis) addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);

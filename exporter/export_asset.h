@@ -34,9 +34,11 @@ struct MotionInput {
 };
 
 // CorrectiveEncoding::Auto resolved for an export with `motions` baked
-// animations: Unit when there is at least one (importers such as Blender's
-// clamp animated weights to [0, 1]), else Signed. Other encodings unchanged.
-CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions);
+// animations: Signed without one; with one, weights must survive importers
+// that clamp them to [0, 1] (Blender) and importers that ignore the file's
+// default weights (three.js FBXLoader): Split, or Unit with a corrective
+// basis (a basis has no split form). Other encodings unchanged.
+CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, bool basis = false);
 
 // buildAsset(model, options with the encoding resolved), one AnimationClip per
 // motion in order (asset.animations[i] from motions[i]), then, when

@@ -33,6 +33,7 @@ Json correctivesJson(const std::vector<CorrectiveLayout>& correctives) {
     entry["target"] = c.target;
     entry["scale"] = c.scale;
     entry["offset"] = c.offset;
+    if (c.rectified) entry["rectified"] = true;  // weight = max(0, scale * f + offset)
     list.push_back(std::move(entry));
   }
   return list;
@@ -88,8 +89,10 @@ Json metadataObject(const Asset& asset) {
   o["betas"] = m.betas;
   o["expression"] = m.expression;
   o["max_influences"] = m.max_influences;
+  o["skin_weights"] = m.skin_weights;
   o["units"] = m.units;
   o["up_axis"] = m.up_axis;
+  o["corrective_encoding"] = m.corrective_encoding;
   o["correctives"] = correctivesJson(m.correctives);
   if (!m.corrective_basis.targets.empty()) o["corrective_basis"] = basisJson(m.corrective_basis);
   if (!m.dmpl.targets.empty()) o["dmpl"] = dmplJson(m.dmpl);

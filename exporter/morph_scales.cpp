@@ -10,8 +10,9 @@ float peak(const MorphTarget& t) { return t.deltas.size() ? t.deltas.cwiseAbs().
 }  // namespace
 
 std::vector<bool> quantizedTargets(const Asset& asset) {
-  std::set<std::string> correctives;
+  std::set<std::string> correctives;  // per-feature targets and --corrective-basis targets
   for (const CorrectiveLayout& c : asset.metadata.correctives) correctives.insert(c.target);
+  for (const std::string& name : asset.metadata.corrective_basis.targets) correctives.insert(name);
   std::vector<bool> q;
   q.reserve(asset.mesh.morph_targets.size());
   for (const MorphTarget& t : asset.mesh.morph_targets)
@@ -34,6 +35,14 @@ void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mes
       if (mesh.morph_targets[n].name == c.target) {
         c.scale *= s[n];
         c.offset *= s[n];
+        break;
+      }
+  CorrectiveBasis& basis = metadata->corrective_basis;
+  for (size_t k = 0; k < basis.targets.size() && k < basis.scale.size() && k < basis.offset.size(); ++k)
+    for (size_t n = 0; n < mesh.morph_targets.size() && n < s.size(); ++n)
+      if (mesh.morph_targets[n].name == basis.targets[k]) {
+        basis.scale[k] *= s[n];
+        basis.offset[k] *= s[n];
         break;
       }
 }

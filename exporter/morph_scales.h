@@ -12,11 +12,14 @@
 // weight = scale * f + offset still holds with the file's own numbers. Rest
 // weights and animated weights are multiplied by s_n as well. The quantisation
 // error of target n is then at most s_n / 65534 per component instead of
-// 1 / 65534 m. Targets without a corrective entry (shape_<i>, expr_<i>) keep
-// FLOAT deltas and weight scale 1. exportAsset (export_asset.h) folds once and
-// marks the folded targets MorphTarget::quantized; the glTF writer stores
-// exactly those as int16 and computes no scale itself. Folding twice is the
-// identity (after one fold every scale is exactly 1).
+// 1 / 65534 m. --corrective-basis targets (pose_basis_<k>) are quantized the
+// same way, s_k folded into the basis' scale and offset. Targets without a
+// corrective mapping (shape_<i>, expr_<i>: their weight is the coefficient
+// itself) keep FLOAT deltas and weight scale 1; the CLI says so in a note.
+// exportAsset (export_asset.h) folds once and marks the folded targets
+// MorphTarget::quantized; the glTF writer stores exactly those as int16 and
+// computes no scale itself. Folding twice is the identity (after one fold
+// every scale is exactly 1).
 #pragma once
 
 #include <vector>
@@ -25,13 +28,13 @@
 
 namespace smpl {
 
-// Quantized targets: correctives with some non-zero delta.
+// Quantized targets: correctives and basis targets with some non-zero delta.
 std::vector<bool> quantizedTargets(const Asset& asset);
 
 // s_n per morph target: max |delta component| for quantized targets, else 1.
 std::vector<double> morphWeightScales(const Asset& asset);
 
-// Multiplies the metadata mapping of every corrective naming target n by s[n].
+// Multiplies the metadata mapping of every corrective (and basis target) naming target n by s[n].
 void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mesh,
                             AssetMetadata* metadata);
 

@@ -7,6 +7,7 @@
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
 #include "exporter/corrective_basis.h"
+#include "exporter/export_skin.h"
 #include "core/load/uv_source.h"
 
 namespace smpl {
@@ -24,8 +25,9 @@ Status checkOptions(const BodyModel& model, const ExportOptions& o) {
   if (static_cast<int>(o.expression.size()) > model.numExpressions())
     return makeError("expression: " + std::to_string(o.expression.size()) + " values given; the model " +
                      model.name + " has " + std::to_string(model.numExpressions()), ErrorKind::Usage);
-  if (o.max_influences < 1 || o.max_influences > 8)
-    return makeError("--max-influences must be between 1 and 8, got " + std::to_string(o.max_influences), ErrorKind::Usage);
+  if (o.max_influences != kAllInfluences && (o.max_influences < 1 || o.max_influences > model.numJoints()))
+    return makeError("--max-influences must be between 1 and " + std::to_string(model.numJoints()) +
+                     " (the model's joints) or 'all', got " + std::to_string(o.max_influences), ErrorKind::Usage);
   if (o.shape_keys < 0 || o.shape_keys > model.numBetas())
     return makeError("--shape-keys " + std::to_string(o.shape_keys) + ": the model has " +
                      std::to_string(model.numBetas()) + " shape directions", ErrorKind::Usage);
@@ -38,6 +40,9 @@ Status checkOptions(const BodyModel& model, const ExportOptions& o) {
                      std::to_string(model.numPoseFeatures()) + " pose correctives)", ErrorKind::Usage);
   if (o.corrective_basis > 0 && !o.correctives)
     return makeError("--corrective-basis needs correctives (conflicts with --correctives none)", ErrorKind::Usage);
+  if (o.corrective_basis > 0 && o.encoding == CorrectiveEncoding::Split)
+    return makeError("--corrective-basis drives its targets with signed or unit weights; it conflicts with "
+                     "--corrective-weights split", ErrorKind::Usage);
   return Status();
 }
 
@@ -97,7 +102,25 @@ void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
       mesh->positions(i, c) = static_cast<float>(mesh->positions(i, c) - shift(3 * mesh->source_vertex[i] + c));
 }
 
+// Split encoding of feature n (pipeline.h): one rectified target per sign
+// the feature can take; delta = P_n / scale, so weight * delta = f P_n.
+void addSplitCorrective(const BodyModel& model, int n, Asset* asset) {
+  const bool diagonal = (n % 9) / 3 == n % 3;
+  const std::string name = correctiveTargetName(model, n);
+  std::vector<CorrectiveLayout> parts;
+  if (diagonal) parts.push_back(CorrectiveLayout{n, name, -0.5, 0.0, true});
+  else parts = {CorrectiveLayout{n, name + "_pos", 1.0, 0.0, true}, CorrectiveLayout{n, name + "_neg", -1.0, 0.0, true}};
+  for (const CorrectiveLayout& c : parts) {
+    asset->mesh.morph_targets.push_back(directionTarget(c.target, model.posedirs, n, asset->mesh.source_vertex, c.scale));
+    asset->metadata.correctives.push_back(c);
+  }
+}
+
 void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+  if (o.encoding == CorrectiveEncoding::Split) {
+    for (int n = 0; n < model.numPoseFeatures(); ++n) addSplitCorrective(model, n, asset);
+    return;
+  }
   SkinnedMesh& mesh = asset->mesh;
   Eigen::VectorXd shift = Eigen::VectorXd::Zero(model.posedirs.rows());  // sum (offset/scale) P_n, in double
   for (int n = 0; n < model.numPoseFeatures(); ++n) {
@@ -186,6 +209,14 @@ void buildMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const Sp
 
 }  // namespace
 
+const char* correctiveEncodingName(CorrectiveEncoding encoding) {
+  switch (encoding) {
+    case CorrectiveEncoding::Unit: return "unit";
+    case CorrectiveEncoding::Split: return "split";
+    default: return "signed";
+  }
+}
+
 std::string correctiveTargetName(const BodyModel& model, int feature) {
   const int joint = feature / 9 + 1, r = (feature % 9) / 3, c = feature % 3;
   return "pose_" + model.joint_names[joint] + "_" + std::to_string(r) + std::to_string(c);
@@ -200,8 +231,9 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   Asset asset;
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);
-  const int m = std::min(o.max_influences, model.numJoints());
-  buildMesh(model, body->v_shaped, pruneWeights(model.weights, m), *uv ? &**uv : nullptr, &asset.mesh);
+  const SparseSkin skin = exportSkin(model, *body, o);
+  const int m = static_cast<int>(skin.joints.cols());  // influencesFor(), or fewer with "all"
+  buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
   AssetMetadata& meta = asset.metadata;
   meta.model_kind = modelKindName(model.kind);
   meta.model_name = model.name;
@@ -211,6 +243,8 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   meta.expression = o.expression;
   meta.expression.resize(model.numExpressions(), 0.0);
   meta.max_influences = m;
+  meta.skin_weights = skinWeightMethodName(o.skin_weights);
+  meta.corrective_encoding = correctiveEncodingName(o.encoding);
   if (Status s = addMorphTargets(model, o, &asset); !s) return s.error();
   return asset;
 }

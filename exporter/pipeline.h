@@ -22,14 +22,34 @@ namespace smpl {
 //           deltas are 2 P_n and the stored base mesh is v_shaped - sum 2 o P_n,
 //           so the rest pose (weights = o, written as the default weights)
 //           is exactly v_shaped. The mapping is in the metadata.
-//   Auto:   Unit when the export bakes an animation (importers such as
-//           Blender's clamp animated weights to [0, 1]), else Signed.
-enum class CorrectiveEncoding { Auto, Signed, Unit };
+//   Split:  exact with every weight at zero and every weight in [0, 1]:
+//           diagonal feature n (f in [-2, 0]) -> one target pose_<joint>_<rc>,
+//           delta -2 P_n, weight max(0, -f/2); off-diagonal (f in [-1, 1]) ->
+//           pose_<joint>_<rc>_pos (delta P_n, weight max(0, f)) and
+//           pose_<joint>_<rc>_neg (delta -P_n, weight max(0, -f)). Base mesh
+//           v_shaped, rest weights 0; metadata entries carry "rectified".
+//   Auto:   Split when the export bakes an animation (importers such as
+//           Blender's clamp animated weights to [0, 1], and some ignore the
+//           file's default weights, which Unit relies on), else Signed.
+enum class CorrectiveEncoding { Auto, Signed, Unit, Split };
+
+// "signed", "unit" or "split" (Auto: "signed", as buildAsset treats it).
+const char* correctiveEncodingName(CorrectiveEncoding encoding);
+
+// How the M skin influences per vertex are chosen (exporter/export_skin.h):
+//   Truncated: the M largest model weights, renormalised to sum 1.
+//   Optimized: the same M joints, weights fitted (non-negative, sum 1) to the
+//              unpruned model over training poses (core/math/skin_weight_fit.h).
+enum class SkinWeightMethod { Truncated, Optimized };
+
+// ExportOptions::max_influences value for "every joint" (--max-influences all).
+constexpr int kAllInfluences = 0;
 
 struct ExportOptions {
   std::vector<double> betas;       // zero-padded to the model's count; more is an error
   std::vector<double> expression;  // SMPL-X only
-  int max_influences = 4;
+  int max_influences = 4;          // 1..K, or kAllInfluences
+  SkinWeightMethod skin_weights = SkinWeightMethod::Optimized;  // --skin-weights
   bool correctives = true;         // one morph target per pose feature
   CorrectiveEncoding encoding = CorrectiveEncoding::Auto;  // resolved by the caller; Auto acts as Signed here
   int corrective_basis = 0;        // > 0: K principal components of posedirs replace the P

@@ -1,6 +1,9 @@
-// What pruning skin weights to M influences costs: vertex error of the model
-// posed with pruned weights against the same model with all its weights, over
-// a fixed set of random poses (deterministic seed), correctives included.
+// What reducing skin weights to M influences costs: vertex error of the model
+// posed with the exported weights (exporter/export_skin.h) against the same
+// model with all its weights, over a fixed set of random poses (seed 20261124,
+// which the weight fit never trains on: held-out poses), correctives
+// included. The truncated weights are measured on the same poses, so the
+// summary can show what the fit gains.
 #pragma once
 
 #include "core/body_model.h"
@@ -9,12 +12,24 @@
 
 namespace smpl {
 
-struct PruningError {
+struct SkinError {
   double mean_m = 0.0;  // mean over poses and vertices, metres
-  double max_m = 0.0;   // worst vertex over all poses
+  double max_m = 0.0;   // worst vertex over all poses, metres
+};
+
+struct PruningError {
+  double mean_m = 0.0;  // the exported weights (options.skin_weights): mean, metres
+  double max_m = 0.0;   // worst vertex over all poses, metres
+  SkinError truncated;  // the M largest weights renormalised, same poses
+  int influences = 0;   // M
   int poses = 0;
 };
 
+// Held-out error of `options`' skin (and of truncation) over `poses` poses.
 Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options, int poses);
+
+// Held-out error of one N x K dense weight matrix over `poses` poses (seed 20261124).
+Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& options,
+                                   const Eigen::MatrixXd& weights, int poses);
 
 }  // namespace smpl

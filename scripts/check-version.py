@@ -4,7 +4,8 @@
 VERSION is the one source: CMake reads it (project version, the exporter's
 `exporter_version`); the Blender add-on (bl_info, which Blender parses as a
 literal, and blender_manifest.toml), the Unity and web package.json cannot read a
-file, so this check keeps them equal. Exits 1 and names each mismatch.
+file, nor can the Maya module file, the Maya plug-in's registration and the
+Unreal .uplugin: this check keeps them equal. Exits 1 and names each mismatch.
     scripts/check-version.py [ROOT]
 """
 import ast
@@ -28,6 +29,12 @@ def main():
     m = re.search(r'^version\s*=\s*"([^"]+)"', manifest, re.M)
     found["blender/smpl_correctives/blender_manifest.toml"] = m.group(1) if m else None
     found["unity/package.json"] = json.loads((root / "unity/package.json").read_text()).get("version")
+    mod = re.search(r"^\+ smpl_maya (\S+) ", (root / "maya/smpl_maya.mod").read_text(), re.M)
+    found["maya/smpl_maya.mod"] = mod.group(1) if mod else None
+    node = re.search(r'MFnPlugin\(obj, "smpl-export", "([^"]+)"', (root / "maya/scripts/smpl_maya/node.py").read_text())
+    found["maya/scripts/smpl_maya/node.py MFnPlugin"] = node.group(1) if node else None
+    plugin = json.loads((root / "unreal/SmplCorrectives/SmplCorrectives.uplugin").read_text())
+    found["unreal/SmplCorrectives/SmplCorrectives.uplugin VersionName"] = plugin.get("VersionName")
     found["web/smpl-correctives/package.json"] = json.loads(
         (root / "web/smpl-correctives/package.json").read_text()).get("version")
     changelog = (root / "CHANGELOG.md").read_text()

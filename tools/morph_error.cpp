@@ -128,6 +128,7 @@ std::vector<CorrectiveLayout> correctivesOf(const tinygltf::Value& extras) {
     c.target = e.Get("target").IsString() ? e.Get("target").Get<std::string>() : "";
     c.scale = e.Get("scale").GetNumberAsDouble();
     c.offset = e.Get("offset").GetNumberAsDouble();
+    c.rectified = e.Get("rectified").IsBool() && e.Get("rectified").Get<bool>();
     out.push_back(c);
   }
   return out;
@@ -222,8 +223,8 @@ Eigen::MatrixXd weightsOverPoses(const std::vector<std::string>& names,
       auto it = by_name.find(names[n]);
       const CorrectiveLayout* c = it == by_name.end() ? nullptr : it->second;
       const bool valid = c && c->feature >= 0 && c->feature < features[p].size();
-      w(Eigen::Index(n), Eigen::Index(p)) =
-          valid ? c->scale * features[p][c->feature] + c->offset : rest[n];
+      const double mapped = valid ? c->scale * features[p][c->feature] + c->offset : rest[n];
+      w(Eigen::Index(n), Eigen::Index(p)) = valid && c->rectified ? std::max(0.0, mapped) : mapped;
     }
   return w;
 }

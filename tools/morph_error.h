@@ -3,7 +3,7 @@
 // expansion and dequantisation, and Draco for the base mesh), and compare the
 // pre-skinning mesh base + sum_n w_n(f) d_n with the exact asset's over a
 // fixed pose set (core/pose_sampler.h, seeded). w_n(f) = scale * f[feature] +
-// offset from each side's own metadata (so a scale folded into the weights,
+// offset from each side's own metadata (max(0, .) for "rectified" entries) (so a scale folded into the weights,
 // morph_scales.h, is accounted for); targets without a corrective entry use
 // their rest weight. Linear blend skinning with weights summing to 1 moves an
 // offset by at most its length, so the result bounds the added vertex error

@@ -1,6 +1,7 @@
 """SMPL correctives: drive the pose-corrective shape keys of assets written by
 smpl-export from the bone rotations, so Blender reproduces the body model's
 own output (docs/file-contract.md, "The robust runtime formula"). The math lives in
+core.py (numpy only, shared with the Maya package), its Blender glue in
 correctives.py, importable without the UI; this file is the panel and the
 operators (3D View > Sidebar > SMPL; File > Import > SMPL asset).
 

@@ -1,6 +1,8 @@
 """Drive SMPL pose-corrective shape keys from an armature's pose.
 
-The "robust runtime formula" of docs/file-contract.md, in Blender terms. For joint k,
+The Blender glue of core.py (the math, metadata and weight mapping shared with
+the Maya package; no bpy there, tested by CI without Blender). The "robust
+runtime formula" of docs/file-contract.md, in Blender terms. For joint k,
 with rotations taken in armature space (pose_bone.matrix vs bone.matrix_local):
 
     D_k = Q_k(now) Q_k(rest)^-1      rotation change since the bind pose
@@ -8,7 +10,9 @@ with rotations taken in armature space (pose_bone.matrix vs bone.matrix_local):
     R_k = C^-1 L_k C                 back to model axes
     f[9(k-1) + 3r + c] = R_k[r][c] - delta_rc
 
-and shape key `pose_<joint>_<r><c>` gets scale * f + offset. An export with
+and shape key `pose_<joint>_<r><c>` gets scale * f + offset (clamped below at
+0 for entries marked "rectified", the split encoding's `..._pos`/`..._neg`
+keys). An export with
 `--corrective-basis K` has K keys `pose_basis_<k>` instead, listed in the
 metadata's "corrective_basis" (targets, matrix C: K x P row-major over the
 whole f, scale, offset): key k gets scale_k * (C f)_k + offset_k. Importers
@@ -29,41 +33,29 @@ Module use (no operator needed):
     correctives.enable(arm, mesh)                         # every frame / edit
 """
 import json
-import math
-import os
-import re
-import struct
 
 import bpy
 import numpy as np
 from bpy.app.handlers import persistent
 from mathutils import Matrix
 
+from . import core
+from .core import metadata_from_file, read_gltf_json  # noqa: F401 (public, used by scripts)
+
 PROP_METADATA = "smpl_metadata"        # JSON text on the armature object
 PROP_AXES = "smpl_model_to_armature"   # 9 floats, row-major C, on the armature object
 PROP_ENABLED = "smpl_correctives"      # name of the armature, on a driven mesh object
 SLIDER_RANGE = (-2.0, 2.0)             # diagonal features reach -2; Blender clamps to [0, 1]
-_TARGET = re.compile(r"pose_(.+)_([0-2])([0-2])(?:\.\d+)?$")
 
 
 class Binding:
-    """Everything apply() needs, resolved once: bone indices, key indices, C."""
+    """Everything apply() needs, resolved once: the core's plan (names ->
+    slots, weight mapping, basis), pose bone indices, Q(rest)^-1 and C."""
 
     def __init__(self):
-        self.bone_index = None   # (J,) index into pose.bones of each driven joint
-        self.parent_slot = None  # (J,) slot of the parent joint in bone_index, -1 = none
+        self.plan = None         # core.Plan
+        self.bone_index = None   # (J,) index into pose.bones of each plan.driven joint
         self.rest_inv = None     # (J,3,3) Q_k(rest)^-1 (armature space)
-        self.key_index = None    # (T,) index into key_blocks
-        self.key_joint = None    # (T,) slot of the joint whose R drives the key
-        self.key_row = None      # (T,) r
-        self.key_col = None      # (T,) c
-        self.scale = None        # (T,)
-        self.offset = None       # (T,)
-        self.basis_key_index = None  # (B,) index into key_blocks of each basis key
-        self.basis_slots = None      # (K-1,) slot of joint k = 1..K-1: f = features[slots]
-        self.basis_matrix = None     # (B, 9(K-1)) rows of C for the bound basis keys
-        self.basis_scale = None      # (B,)
-        self.basis_offset = None     # (B,)
         self.axes = None         # (3,3) C
         self.signature = None    # detects edits that invalidate the cache
 
@@ -74,58 +66,6 @@ _in_apply = False
 
 
 # ---------------------------------------------------------------- metadata
-
-def read_gltf_json(path):
-    """The JSON document of a .gltf or .glb file (None if unreadable)."""
-    try:
-        with open(path, "rb") as f:
-            head = f.read(12)
-            if len(head) == 12 and head[:4] == b"glTF":
-                length, kind = struct.unpack("<II", f.read(8))
-                if kind != 0x4E4F534A:
-                    return None
-                return json.loads(f.read(length).decode("utf-8"))
-            return json.loads((head + f.read()).decode("utf-8"))
-    except (OSError, ValueError, UnicodeDecodeError, struct.error):
-        return None
-
-
-def metadata_from_file(path):
-    """glTF asset.extras.smpl, else the sidecar <path>.smpl.json, else None."""
-    if path and os.path.splitext(path)[1].lower() in (".glb", ".gltf"):
-        doc = read_gltf_json(path)
-        asset = doc.get("asset") if isinstance(doc, dict) else None
-        extras = asset.get("extras") if isinstance(asset, dict) else None
-        smpl = extras.get("smpl") if isinstance(extras, dict) else None
-        if isinstance(smpl, dict):
-            return smpl
-    if path and os.path.isfile(path + ".smpl.json"):
-        try:
-            with open(path + ".smpl.json", encoding="utf-8") as f:
-                meta = json.load(f)
-            return meta if isinstance(meta, dict) else None
-        except (OSError, ValueError):
-            return None
-    return None
-
-
-def _checked(metadata):
-    """Metadata with joint_names/parents dropped unless well formed (a list of
-    strings and a list of ints of one length): files are untrusted input."""
-    if not isinstance(metadata, dict):
-        return None
-    names, parents = metadata.get("joint_names"), metadata.get("parents")
-    ok = (isinstance(names, list) and isinstance(parents, list) and len(names) == len(parents)
-          and all(isinstance(n, str) for n in names) and all(isinstance(p, int) for p in parents))
-    if not ok:
-        metadata = {k: v for k, v in metadata.items() if k not in ("joint_names", "parents")}
-    if not isinstance(metadata.get("correctives", []), list):
-        metadata = {k: v for k, v in metadata.items() if k != "correctives"}
-    if not isinstance(metadata.get("corrective_basis", {}), dict) or (
-            "corrective_basis" in metadata and "joint_names" not in metadata):
-        metadata = {k: v for k, v in metadata.items() if k != "corrective_basis"}
-    return metadata
-
 
 def _stored_metadata(armature_obj, mesh_obj):
     for holder in (armature_obj, mesh_obj, mesh_obj.data, bpy.context.scene):
@@ -147,8 +87,7 @@ def _stored_metadata(armature_obj, mesh_obj):
 # ---------------------------------------------------------------- binding
 
 def _model_to_armature(armature_obj, metadata):
-    up = (metadata or {}).get("up_axis", "+Y")
-    to_world = Matrix.Rotation(math.radians(90.0), 3, "X") if up == "+Y" else Matrix.Identity(3)
+    to_world = Matrix(core.model_to_world((metadata or {}).get("up_axis", "+Y"), "Z").tolist())
     arm_rot = armature_obj.matrix_world.to_3x3().normalized()
     return np.array(arm_rot.inverted() @ to_world, dtype=np.float64)
 
@@ -177,87 +116,8 @@ def fit_axes(armature_obj, joints):
     names = [n for n in joints if n in armature_obj.data.bones]
     if len(names) < 3:
         return None, float("inf")
-    p = np.array([joints[n] for n in names])
-    q = np.array([np.array(armature_obj.data.bones[n].head_local) for n in names])
-    p, q = p - p.mean(0), q - q.mean(0)
-    u, _, vt = np.linalg.svd(q.T @ p)
-    c = u @ np.diag([1.0, 1.0, np.sign(np.linalg.det(u @ vt))]) @ vt
-    scale = np.linalg.norm(q) / max(np.linalg.norm(p), 1e-12)
-    return c, float(np.sqrt(((p @ c.T * scale - q) ** 2).sum(1).mean()))
-
-
-def _find_target(name, bone_names):
-    """'pose_left_knee_12' (any importer prefix/suffix) -> (joint, r, c) or None."""
-    start = name.find("pose_")
-    while start >= 0:
-        m = _TARGET.match(name, start)
-        if m and m.group(1) in bone_names:
-            return m.group(1), int(m.group(2)), int(m.group(3))
-        start = name.find("pose_", start + 1)
-    return None
-
-
-def _corrective_table(metadata):
-    """target name -> (scale, offset) from the metadata (empty: names only)."""
-    table = {}
-    for entry in (metadata or {}).get("correctives", []):
-        try:
-            table[str(entry["target"])] = (float(entry.get("scale", 1.0)), float(entry.get("offset", 0.0)))
-        except (KeyError, TypeError, ValueError, AttributeError):
-            continue  # a malformed entry falls back to names (scale 1, offset 0)
-    return table
-
-
-def _basis_table(metadata):
-    """The "corrective_basis" object validated (untrusted input): (targets,
-    matrix (K,P), scale (K,), offset (K,)) with P = 9 (joints - 1), else None."""
-    basis = (metadata or {}).get("corrective_basis")
-    names = (metadata or {}).get("joint_names")
-    if basis is None:
-        return None
-    try:
-        targets = [str(t) for t in basis["targets"]]
-        p = 9 * (len(names) - 1)
-        matrix = np.asarray(basis["matrix"], dtype=np.float64).reshape(len(targets), p)
-        scale = np.asarray(basis["scale"], dtype=np.float64).reshape(len(targets))
-        offset = np.asarray(basis["offset"], dtype=np.float64).reshape(len(targets))
-    except (KeyError, TypeError, ValueError, AttributeError):
-        print("smpl_correctives: malformed corrective_basis in the metadata; basis keys not driven")
-        return None
-    if not (np.isfinite(matrix).all() and np.isfinite(scale).all() and np.isfinite(offset).all()):
-        print("smpl_correctives: corrective_basis holds non-finite numbers; basis keys not driven")
-        return None
-    return targets, matrix, scale, offset
-
-
-def _find_basis_keys(blocks, targets):
-    """(key index, basis row) of every basis target present (importer prefixes 'Key|' allowed)."""
-    row = {t: i for i, t in enumerate(targets)}
-    found = []
-    for i, block in enumerate(blocks):
-        r = row.get(block.name, row.get(block.name.rsplit("|", 1)[-1]))
-        if r is not None:
-            found.append((i, r))
-            block.slider_min, block.slider_max = SLIDER_RANGE
-    return found
-
-
-def _model_parents(metadata, arm_data, joints):
-    """Parent joint name per driven joint: metadata first, else the bone tree."""
-    names = (metadata or {}).get("joint_names")
-    parents = (metadata or {}).get("parents")
-    by_name = dict(zip(names, parents)) if names else {}  # well formed: see _checked()
-    bones = arm_data.bones
-    out = []
-    for j in joints:
-        if j in by_name:
-            p = by_name[j]
-            name = names[p] if isinstance(p, int) and 0 <= p < len(names) else None
-            out.append(name if name is not None and name in bones else None)
-        else:
-            parent = arm_data.bones[j].parent
-            out.append(parent.name if parent else None)
-    return out
+    return core.kabsch([joints[n] for n in names],
+                       [np.array(armature_obj.data.bones[n].head_local) for n in names])
 
 
 def _signature(armature_obj, mesh_obj):
@@ -292,58 +152,29 @@ def bind(armature_obj, mesh_obj, source_path=None, metadata=None):
     slider range, stores metadata and C on the armature. Returns the number
     of bound shape keys.
     """
-    metadata = _checked(metadata or metadata_from_file(source_path) or _stored_metadata(armature_obj, mesh_obj))
+    metadata = core.checked(metadata or metadata_from_file(source_path) or _stored_metadata(armature_obj, mesh_obj))
     if metadata is not None:
         armature_obj[PROP_METADATA] = json.dumps(metadata)
     if source_path or armature_obj.get(PROP_AXES) is None:
         armature_obj[PROP_AXES] = [float(x) for x in _resolve_axes(armature_obj, metadata, source_path).ravel()]
     binding = _build_binding(armature_obj, mesh_obj, metadata)
     _bindings[(armature_obj.name, mesh_obj.name)] = binding
-    return len(binding.key_index) + len(binding.basis_key_index)
+    return len(binding.plan.all_key_index)
 
 
 def _build_binding(armature_obj, mesh_obj, metadata):
     keys = mesh_obj.data.shape_keys
     blocks = keys.key_blocks if keys else []
-    bone_names = {b.name for b in armature_obj.data.bones}
-    table = _corrective_table(metadata)
-    found = []
-    for i, block in enumerate(blocks):
-        hit = _find_target(block.name, bone_names)
-        if hit:
-            found.append((i, block, hit))
-            block.slider_min, block.slider_max = SLIDER_RANGE
-    basis = _basis_table(metadata)
-    basis_found = _find_basis_keys(blocks, basis[0]) if basis else []
-    basis_joints = list((metadata or {}).get("joint_names", []))[1:] if basis_found else []
-    if any(j not in bone_names for j in basis_joints):
-        print("smpl_correctives: a joint of the metadata has no bone; basis keys not driven")
-        basis_found, basis_joints = [], []
-    joints = sorted({hit[0] for _, _, hit in found} | set(basis_joints))
-    parents = _model_parents(metadata, armature_obj.data, joints)
-    driven = list(joints) + [p for p in parents if p and p not in joints]
-    slot = {name: s for s, name in enumerate(driven)}
+    bone_parent = {b.name: (b.parent.name if b.parent else None) for b in armature_obj.data.bones}
+    plan = core.make_plan(bone_parent, [block.name for block in blocks], metadata)
+    for i in plan.all_key_index:
+        blocks[int(i)].slider_min, blocks[int(i)].slider_max = SLIDER_RANGE
     pose_index = {pb.name: i for i, pb in enumerate(armature_obj.pose.bones)}
     b = Binding()
-    b.bone_index = np.array([pose_index[n] for n in driven], dtype=np.int64)
-    b.parent_slot = np.array([slot[p] if p else -1 for p in parents] + [-1] * (len(driven) - len(joints)),
-                             dtype=np.int64)
-    rest = np.array([np.array(armature_obj.data.bones[n].matrix_local.to_3x3().normalized()) for n in driven])
-    b.rest_inv = np.transpose(rest.reshape(-1, 3, 3), (0, 2, 1))
-    b.key_index = np.array([i for i, _, _ in found], dtype=np.int64)
-    b.key_joint = np.array([slot[hit[0]] for _, _, hit in found], dtype=np.int64)
-    b.key_row = np.array([hit[1] for _, _, hit in found], dtype=np.int64)
-    b.key_col = np.array([hit[2] for _, _, hit in found], dtype=np.int64)
-    scale_offset = [table.get(block.name, table.get("pose_%s_%d%d" % hit, (1.0, 0.0)))
-                    for _, block, hit in found]
-    b.scale = np.array([s for s, _ in scale_offset], dtype=np.float64)
-    b.offset = np.array([o for _, o in scale_offset], dtype=np.float64)
-    rows = np.array([r for _, r in basis_found], dtype=np.int64)
-    b.basis_key_index = np.array([i for i, _ in basis_found], dtype=np.int64)
-    b.basis_slots = np.array([slot[j] for j in basis_joints], dtype=np.int64)
-    b.basis_matrix = basis[1][rows] if basis_found else np.zeros((0, 0))
-    b.basis_scale = basis[2][rows] if basis_found else np.zeros(0)
-    b.basis_offset = basis[3][rows] if basis_found else np.zeros(0)
+    b.plan = plan
+    b.bone_index = np.array([pose_index[n] for n in plan.driven], dtype=np.int64)
+    b.rest_inv = core.rest_inverse([np.array(armature_obj.data.bones[n].matrix_local.to_3x3())
+                                    for n in plan.driven])
     b.axes = np.array(armature_obj.get(PROP_AXES), dtype=np.float64).reshape(3, 3)
     b.signature = _signature(armature_obj, mesh_obj)
     return b
@@ -359,20 +190,13 @@ def _binding(armature_obj, mesh_obj):
 
 # ---------------------------------------------------------------- per frame
 
-def pose_features(armature_obj, binding, pose_source=None):
-    """R_k - I for every driven joint slot, (J,3,3), model axes."""
+def world_rotations(armature_obj, binding, pose_source=None):
+    """Q_k(now) of every driven joint, (J,3,3), armature space."""
     bones = (pose_source or armature_obj).pose.bones
     flat = np.empty(len(bones) * 16, dtype=np.float32)
     bones.foreach_get("matrix", flat)
     # foreach_get yields column-major 4x4s: the transpose gives the rotation rows.
-    q_now = flat.reshape(-1, 4, 4)[binding.bone_index, :3, :3].transpose(0, 2, 1).astype(np.float64)
-    q_now /= np.linalg.norm(q_now, axis=1, keepdims=True)  # drop pose scale (unit columns)
-    d = q_now @ binding.rest_inv
-    parent = np.where(binding.parent_slot >= 0, binding.parent_slot, 0)
-    d_parent = np.where((binding.parent_slot >= 0)[:, None, None], d[parent], np.eye(3))
-    local = np.transpose(d_parent, (0, 2, 1)) @ d
-    c = binding.axes
-    return c.T @ local @ c - np.eye(3)
+    return flat.reshape(-1, 4, 4)[binding.bone_index, :3, :3].transpose(0, 2, 1).astype(np.float64)
 
 
 def apply(armature_obj, mesh_obj, depsgraph=None):
@@ -382,19 +206,16 @@ def apply(armature_obj, mesh_obj, depsgraph=None):
     Returns the key values written (numpy array, binding order).
     """
     binding = _binding(armature_obj, mesh_obj)
-    if binding.key_index.size == 0 and binding.basis_key_index.size == 0:
+    plan = binding.plan
+    if plan.all_key_index.size == 0:
         return np.zeros(0)
     source = armature_obj.evaluated_get(depsgraph) if depsgraph is not None else None
-    features = pose_features(armature_obj, binding, source)
-    values = binding.scale * features[binding.key_joint, binding.key_row, binding.key_col] + binding.offset
-    if binding.basis_key_index.size:  # f in docs/file-contract.md order: joint k's R - I row-major
-        f = features[binding.basis_slots].reshape(-1)
-        values = np.concatenate([values, binding.basis_scale * (binding.basis_matrix @ f) + binding.basis_offset])
+    values = core.evaluate(plan, world_rotations(armature_obj, binding, source), binding.rest_inv, binding.axes)
     key = mesh_obj.data.shape_keys
     current = np.empty(len(key.key_blocks), dtype=np.float32)
     key.key_blocks.foreach_get("value", current)
     new = current.copy()
-    new[np.concatenate([binding.key_index, binding.basis_key_index])] = values
+    new[plan.all_key_index] = values
     if not np.array_equal(new, current):  # writing tags a depsgraph update: only on change
         key.key_blocks.foreach_set("value", new)
         key.update_tag()

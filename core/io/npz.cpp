@@ -120,6 +120,20 @@ Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
   return parseNpyHeader(e->data.data(), e->data.size(), context_ + "/" + printable(find(key)->name));
 }
 
+Result<bool> NpzArchive::isObjectArray(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  constexpr size_t kPeek = 4096;  // numpy's headers are shorter; a longer one takes the full path
+  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kPeek, context_);
+  if (prefix) {
+    Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), context_ + "/" + printable(m->name));
+    if (h) return isObjectDescr(h->descr);
+  }
+  Result<NpyHeaderInfo> h = header(key);
+  if (!h) return h.error();
+  return isObjectDescr(h->descr);
+}
+
 // Before inflating a member: its header (from the first bytes only) tells how
 // large the decoded array will be; refuse it against the memory budget now,
 // so a small member that widens past the limit costs neither its inflated
@@ -127,11 +141,18 @@ Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
 Status NpzArchive::checkDecodedSize(const std::string& key) const {
   const ZipMember* m = find(key);
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
-  constexpr size_t kHeaderPeek = (1 << 20) + 16;  // the .npy reader's header limit plus its preamble
-  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kHeaderPeek, context_);
-  if (!prefix) return Status();  // extraction reports the problem in full
+  // numpy's headers fit in 4 KiB (it writes < 10000 bytes); only a longer
+  // one costs a second, full-size peek (the .npy reader's limit + preamble).
+  constexpr size_t kShortPeek = 4096, kHeaderPeek = (1 << 20) + 16;
   const std::string mctx = context_ + "/" + printable(m->name);
+  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kShortPeek, context_);
+  if (!prefix) return Status();  // extraction reports the problem in full
   Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
+  if (!h && prefix->size() == kShortPeek) {
+    prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kHeaderPeek, context_);
+    if (!prefix) return Status();
+    h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
+  }
   if (!h || isObjectDescr(h->descr)) return Status();
   Result<NumpyDtype> t = parseNumpyDescr(h->descr, mctx);
   if (!t) return Status();
@@ -146,6 +167,12 @@ Status NpzArchive::checkDecodedSize(const std::string& key) const {
 }
 
 Result<Array> NpzArchive::get(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  // The inflated member alone past the budget: refused as inflating, before
+  // the header is peeked at (the same check memberBytes makes).
+  if (Status st = checkMemory(m->usize, context_ + "/" + printable(m->name), "inflating the member"); !st)
+    return st.error();
   if (Status st = checkDecodedSize(key); !st) return st.error();
   Result<ZipEntry> e = memberBytes(key);
   if (!e) return e.error();

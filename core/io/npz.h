@@ -43,6 +43,9 @@ class NpzArchive {
   Result<ZipEntry> memberBytes(const std::string& key) const;
   // Header of the member (dtype, shape) without decoding its data.
   Result<NpyHeaderInfo> header(const std::string& key) const;
+  // True if the member is an object array ('|O'): from its first bytes only
+  // (no full inflate); errors as header().
+  Result<bool> isObjectArray(const std::string& key) const;
   // Decode one member. Object arrays ('|O') are refused here with
   //   "model.npz: 'key' is an object array ('|O'); expected numbers or text"
   // (core/load/npz_arrays decodes them with the data-only unpickler).

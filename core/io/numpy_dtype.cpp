@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "core/io/printable.h"
@@ -141,6 +142,39 @@ class SourceOrder {
   size_t src_ = 0;
 };
 
+// Numbers of a native-order dtype, loaded as T (memcpy: any alignment);
+// C-order float64 is one memcpy.
+template <class T>
+void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order, double* out) {
+  if (c_order && sizeof(T) == sizeof(double) && std::is_same<T, double>::value) {
+    std::memcpy(out, p, count * sizeof(double));
+    return;
+  }
+  for (size_t i = 0; i < count; ++i) {
+    T v;
+    std::memcpy(&v, p + (c_order ? i : order.next()) * sizeof(T), sizeof(T));
+    out[i] = static_cast<double>(v);
+  }
+}
+
+// The common dtypes in the host's byte order without the per-element
+// switch of loadNumber; false for the others (half floats, bools, 1- and
+// 2-byte integers, the other byte order), which take loadNumber.
+bool loadNative(const uint8_t* p, size_t count, const NumpyDtype& t, SourceOrder& order, bool c_order,
+                double* out) {
+  if (count == 0 || (t.big_endian && t.itemsize > 1) || hostIsBigEndian()) return false;
+  const char k = t.kind;
+  const size_t n = t.itemsize;
+  if (k == 'f' && n == 8) loadTyped<double>(p, count, order, c_order, out);
+  else if (k == 'f' && n == 4) loadTyped<float>(p, count, order, c_order, out);
+  else if (k == 'i' && n == 8) loadTyped<int64_t>(p, count, order, c_order, out);
+  else if (k == 'i' && n == 4) loadTyped<int32_t>(p, count, order, c_order, out);
+  else if (k == 'u' && n == 8) loadTyped<uint64_t>(p, count, order, c_order, out);
+  else if (k == 'u' && n == 4) loadTyped<uint32_t>(p, count, order, c_order, out);
+  else return false;
+  return true;
+}
+
 Status fillElements(const uint8_t* p, size_t count, const NumpyDtype& t, bool fortran, Array& a,
                     const std::string& ctx) {
   SourceOrder order(a.shape, fortran);
@@ -159,6 +193,8 @@ Status fillElements(const uint8_t* p, size_t count, const NumpyDtype& t, bool fo
     }
   } else {
     a.data.resize(count);
+    const bool c_order = !fortran || a.shape.size() <= 1;
+    if (loadNative(p, count, t, order, c_order, a.data.data())) return Status();
     for (size_t i = 0; i < count; ++i) a.data[i] = loadNumber(p + order.next() * t.itemsize, t);
   }
   return Status();

@@ -9,13 +9,12 @@
 namespace smpl {
 
 Result<Array> readNpzMember(const NpzArchive& npz, const std::string& key) {
+  Result<bool> object = npz.isObjectArray(key);  // from the header: each member is inflated once
+  if (!object) return object.error();
+  if (!*object) return npz.get(key);
   Result<ZipEntry> e = npz.memberBytes(key);
   if (!e) return e.error();
-  const std::string mctx = npz.context() + ": '" + printable(key) + "'";
-  Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
-  if (!h) return h.error();
-  if (isObjectDescr(h->descr)) return parseObjectNpy(e->data.data(), e->data.size(), mctx);
-  return npz.get(key);
+  return parseObjectNpy(e->data.data(), e->data.size(), npz.context() + ": '" + printable(key) + "'");
 }
 
 Result<ArrayDict> readNpzArrays(const std::string& path, const std::vector<std::string>& keys,

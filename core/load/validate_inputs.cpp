@@ -48,6 +48,9 @@ Status checkCoefficients(const std::vector<double>& values, const std::string& c
 }
 
 Status checkFloatRange(const Array& a, const std::string& context, const std::string& key) {
+  bool bad = false;  // one branch-free (vectorised) pass; the loop below names the element
+  for (double v : a.data) bad |= !(std::abs(v) <= FLT_MAX);
+  if (!bad) return Status();
   for (size_t i = 0; i < a.data.size(); ++i) {
     const double v = a.data[i];
     if (!std::isfinite(v)) return makeError(context + ": '" + key + "' contains NaN or infinite values");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <thread>
 
+#include "core/math/forward_batch_kernels.h"
+
 namespace smpl {
 namespace {
 
@@ -29,24 +31,19 @@ Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, c
   return a;
 }
 
-void runBlock(const BodyModel& model, const Eigen::MatrixXf& posedirs, const BatchInput& in,
-              const Eigen::MatrixXd& weights, int first, int count, Eigen::MatrixXd* out) {
-  const Eigen::Index n = model.numVertices(), p = model.numPoseFeatures();
+using Transforms = Eigen::Matrix<float, Eigen::Dynamic, 12, Eigen::RowMajor>;
+
+void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs, const BatchInput& in,
+              const Eigen::MatrixXf& weights, bool simd, int first, int count, Eigen::MatrixXd* out) {
+  const int n = static_cast<int>(model.numVertices()), p = model.numPoseFeatures();
   Eigen::MatrixXf features(p, count);
   for (int t = 0; t < count; ++t) features.col(t) = poseFeatures((*in.frames)[first + t]).cast<float>();
-  Eigen::MatrixXf v_posed(3 * n, count);
-  v_posed.noalias() = posedirs * features;  // 3N x count, the one big product
-  Eigen::Matrix<double, Eigen::Dynamic, 12> blended(n, 12);
+  Eigen::MatrixXf v_posed(posedirs.rows_padded, count);  // the correctives, one column per frame
+  batch::correctiveProduct(posedirs, features.data(), count, v_posed.data(), simd);
   for (int t = 0; t < count; ++t) {
-    blended.noalias() = weights * restRelative(model, (*in.frames)[first + t], in.body->joints);
-    double* dst = out->col(first + t).data();
-    const float* corr = v_posed.col(t).data();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const double x = in.body->v_shaped(i, 0) + corr[3 * i], y = in.body->v_shaped(i, 1) + corr[3 * i + 1],
-                   z = in.body->v_shaped(i, 2) + corr[3 * i + 2];
-      for (int r = 0; r < 3; ++r)
-        dst[3 * i + r] = blended(i, 4 * r) * x + blended(i, 4 * r + 1) * y + blended(i, 4 * r + 2) * z + blended(i, 4 * r + 3);
-    }
+    const Transforms a = restRelative(model, (*in.frames)[first + t], in.body->joints).cast<float>();
+    batch::skinFrame(weights.data(), n, model.numJoints(), a.data(), in.body->v_shaped.data(), v_posed.col(t).data(),
+                     out->col(first + t).data(), simd);
   }
 }
 
@@ -55,13 +52,15 @@ void runBlock(const BodyModel& model, const Eigen::MatrixXf& posedirs, const Bat
 Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
   const int frames = static_cast<int>(in.frames->size());
   Eigen::MatrixXd out(3 * model.numVertices(), frames);
-  const Eigen::MatrixXd& weights = in.weights ? *in.weights : model.weights;
-  const Eigen::MatrixXf posedirs = model.posedirs.cast<float>();
+  const Eigen::MatrixXf weights = (in.weights ? *in.weights : model.weights).cast<float>();
+  const batch::PackedPosedirs posedirs = batch::packPosedirs(
+      model.posedirs.data(), static_cast<int>(model.posedirs.rows()), static_cast<int>(model.posedirs.cols()));
+  const bool simd = in.simd && batch::haveAvx2Fma();
   const int block = std::max(1, in.block);
   const int blocks = (frames + block - 1) / block;
   auto work = [&](int worker, int workers) {
     for (int b = worker; b < blocks; b += workers)
-      runBlock(model, posedirs, in, weights, b * block, std::min(block, frames - b * block), &out);
+      runBlock(model, posedirs, in, weights, simd, b * block, std::min(block, frames - b * block), &out);
   };
   const int workers = std::max(1, std::min(in.threads, blocks));
   std::vector<std::thread> pool;

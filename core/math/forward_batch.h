@@ -2,8 +2,10 @@
 // the pose correctives of a block of frames are one (3N x P)(P x T) GEMM and
 // the skinning one (N x K)(K x 12) product per frame. Same math as forward()
 // (tests compare them); for benchmarks and bulk evaluation. The corrective
-// GEMM runs in single precision (twice the SIMD width, half the memory
-// traffic of posedirs): it adds ~1e-7 m, below float32 file precision.
+// GEMM and the blend of the joint transforms run in single precision (twice
+// the SIMD width, half the memory traffic of posedirs), the final position in
+// double: together they add < 1e-6 m, about float32 file precision. The loops
+// are core/math/forward_batch_kernels.h (AVX2+FMA when the CPU has it).
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +22,7 @@ struct BatchInput {
   const Eigen::MatrixXd* weights = nullptr; // N x K override; null = model's
   int threads = 1;                          // worker threads over blocks of frames
   int block = 256;                          // frames per GEMM
+  bool simd = true;                         // false: the portable kernels even on AVX2 CPUs (tests)
 };
 
 // Returns 3N x T: column t holds frame t's vertices (x0 y0 z0 x1 ...).

@@ -1,6 +1,6 @@
 #include "plugins/fbx/fbx_encoder.h"
 
-#include <zlib.h>
+#include <libdeflate.h>
 
 #include <algorithm>
 #include <atomic>
@@ -26,6 +26,13 @@ void putLE(std::string& out, T value) {
   uint64_t bits = 0;
   std::memcpy(&bits, &value, sizeof(T));
   for (size_t i = 0; i < sizeof(T); ++i) out.push_back(static_cast<char>((bits >> (8 * i)) & 0xff));
+}
+
+bool hostIsLittleEndian() {
+  const uint16_t one = 1;
+  uint8_t first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
 }
 
 template <class T>
@@ -55,27 +62,38 @@ FbxProperty encodeArray(char type, const std::vector<T>& values) {
     putLE(payload, uint32_t(0));
     putLE(payload, static_cast<uint32_t>(values.size() * sizeof(T)));
   }
-  for (const T& v : values) putLE(payload, v);
+  if (hostIsLittleEndian()) {  // the values' bytes are already the file's
+    payload.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+  } else {
+    for (const T& v : values) putLE(payload, v);
+  }
   return FbxProperty{type, std::move(payload), deflate};
 }
 
 // count + raw -> count, encoding 1, compressed length, zlib stream (raw
-// storage if zlib fails, which it only does when out of memory).
-std::string deflatePayload(const std::string& pending) {
-  const Bytef* raw = reinterpret_cast<const Bytef*>(pending.data() + 4);
-  const uLong raw_size = static_cast<uLong>(pending.size() - 4);
-  uLongf bound = compressBound(raw_size);
-  std::string out = pending.substr(0, 4);
-  std::string packed(bound, '\0');
-  if (compress2(reinterpret_cast<Bytef*>(&packed[0]), &bound, raw, raw_size, kFbxZlibLevel) != Z_OK) {
+// storage if compression fails, which it only does when out of memory).
+// libdeflate compresses the whole buffer in one call, several times faster
+// than zlib's compress2 at the same level; the stream is a standard zlib one.
+std::string deflatePayload(libdeflate_compressor* compressor, const std::string& pending) {
+  const char* raw = pending.data() + 4;
+  const size_t raw_size = pending.size() - 4;
+  std::string out;
+  size_t packed = 0;
+  if (compressor) {
+    out.resize(12 + libdeflate_zlib_compress_bound(compressor, raw_size));
+    packed = libdeflate_zlib_compress(compressor, raw, raw_size, &out[12], out.size() - 12);
+  }
+  if (packed == 0) {
+    out = pending.substr(0, 4);
     putLE(out, uint32_t(0));
     putLE(out, static_cast<uint32_t>(raw_size));
     return out + pending.substr(4);
   }
-  packed.resize(bound);
-  putLE(out, uint32_t(1));
-  putLE(out, static_cast<uint32_t>(packed.size()));
-  return out + packed;
+  out.resize(12 + packed);
+  std::memcpy(&out[0], pending.data(), 4);
+  patchLE(out, 4, uint32_t(1));
+  patchLE(out, 8, static_cast<uint32_t>(packed));
+  return out;
 }
 
 void collectDeflates(const FbxNode& n, std::vector<const FbxProperty*>* pending) {
@@ -92,7 +110,9 @@ std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector
   std::vector<std::string> done(pending.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
-    for (size_t i; (i = next++) < pending.size();) done[i] = deflatePayload(pending[i]->payload);
+    libdeflate_compressor* compressor = libdeflate_alloc_compressor(kFbxZlibLevel);
+    for (size_t i; (i = next++) < pending.size();) done[i] = deflatePayload(compressor, pending[i]->payload);
+    if (compressor) libdeflate_free_compressor(compressor);
   };
   const size_t threads = std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size());
   std::vector<std::thread> pool;

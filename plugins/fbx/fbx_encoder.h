@@ -65,7 +65,7 @@ struct FbxNode {
 
 // Arrays whose raw size exceeds this many bytes are deflated.
 constexpr size_t kFbxCompressThreshold = 128;
-// zlib level for array compression: fast, and fixed so output is stable.
+// Compression level (libdeflate) for arrays: fast, and fixed so output is stable.
 constexpr int kFbxZlibLevel = 1;
 
 // Serialises top-level nodes as a complete binary FBX file. version is 7400

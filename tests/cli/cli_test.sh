@@ -45,7 +45,7 @@ expect_failure truncated-npz 2 "truncated.npz" --model "$work/truncated.npz" --o
 expect_failure truncated-pkl 2 "truncated.pkl" --model "$work/truncated.pkl" --out "$work/out.glb"
 expect_failure hostile-pkl 2 "posix.system" --model "$work/hostile.pkl" --out "$work/out.glb"
 expect_failure too-many-betas 1 "Error in arguments: betas: 11 values given" --model "$models/smpl_small.npz" --out "$work/out.glb" --betas 0,0,0,0,0,0,0,0,0,0,1
-expect_failure too-many-influences 1 "Error in arguments: --max-influences must be between 1 and 8" --model "$models/smpl_small.npz" --out "$work/out.glb" --max-influences 9
+expect_failure too-many-influences 1 "Error in arguments: --max-influences must be between 1 and 24 (the model's joints) or 'all'" --model "$models/smpl_small.npz" --out "$work/out.glb" --max-influences 25
 expect_failure too-many-shape-keys 1 "Error in arguments: --shape-keys 100" --model "$models/smpl_small.npz" --out "$work/out.glb" --shape-keys 100
 expect_failure missing-uv 2 "Error loading $work/no_such.obj: cannot open: No such file or directory" --model "$models/smpl_small.npz" --out "$work/out.glb" --uv "$work/no_such.obj"
 expect_failure glb-option-in-fbx-batch 1 "--draco applies only to glTF output" --model builtin --motion-dir "$work" --out-dir "$work/b" --format fbx --draco
@@ -77,6 +77,7 @@ status=$?
 check "export smpl_small: $(cat "$work/summary")" $status
 grep -q "morph targets" "$work/summary"; check "summary printed" $?
 grep -q "skinning error of 4 influences" "$work/summary"; check "pruning error printed" $?
+grep -q "optimized mean .* mm, max .* mm; truncated mean .* mm, max .* mm" "$work/summary"; check "fitted and truncated skin errors printed" $?
 [ -s "$work/a.glb.smpl.json" ]; check "sidecar written" $?
 "$exe" --model "$models/smpl_small.npz" --out "$work/b.glb" --betas 0.5,-1 -q
 cmp -s "$work/a.glb" "$work/b.glb"; check "GLB output is deterministic" $?

@@ -23,6 +23,22 @@ add_test(NAME cli.readme_samples_detect_breakage
           ${PROJECT_SOURCE_DIR} $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.readme_samples cli.readme_samples_detect_breakage PROPERTIES LABELS cli)
 
+# Fitted skin weights checked by numpy (tests/roundtrip/skin_fit_check.py): the
+# weights read from the exported GLB beat numpy's truncation on held-out poses.
+set(SMPL_SKIN_FIT_DIR ${CMAKE_BINARY_DIR})
+foreach(method optimized truncated)
+  add_test(NAME cli.skin_fit.${method}.export
+    COMMAND $<TARGET_FILE:smpl-export>
+            --model ${SMPL_FIXTURE_DIR}/models/smpl_small.npz --betas 0.8,-0.5,0.3,1.2
+            --skin-weights ${method} --out ${SMPL_SKIN_FIT_DIR}/skin_fit_smpl_small_${method}.glb --quiet)
+  add_test(NAME cli.skin_fit.${method}
+    COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/roundtrip/skin_fit_check.py
+            ${SMPL_FIXTURE_DIR}/models/smpl_small.npz ${SMPL_SKIN_FIT_DIR}/skin_fit_smpl_small_${method}.glb
+            --betas 0.8,-0.5,0.3,1.2 --expect ${method})
+  set_tests_properties(cli.skin_fit.${method}.export PROPERTIES LABELS cli FIXTURES_SETUP skin_fit_${method})
+  set_tests_properties(cli.skin_fit.${method} PROPERTIES LABELS cli FIXTURES_REQUIRED skin_fit_${method})
+endforeach()
+
 # The README's option table and docs/cli.md agree with --help (cli/options.cpp).
 add_test(NAME cli.docs
   COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check-cli-docs.py $<TARGET_FILE:smpl-export>

@@ -208,8 +208,8 @@ def import_asset(path, fps):
     return fmt, arms[0], meshes[0]
 
 
-def key_blocks(mesh_obj, names, evaluated=True):
-    """Shape key blocks in corrective feature order (importers may prefix names)."""
+def key_blocks(mesh_obj, targets, evaluated=True):
+    """Shape key blocks of the corrective entries' targets, in entry order (importers may prefix names)."""
     keys = mesh_obj.data.shape_keys
     if evaluated:
         keys = keys.evaluated_get(bpy.context.evaluated_depsgraph_get())
@@ -217,7 +217,24 @@ def key_blocks(mesh_obj, names, evaluated=True):
     for kb in keys.key_blocks:
         table[kb.name] = kb
         table.setdefault(kb.name.rsplit("|", 1)[-1], kb)
-    return [table[t] for t in model_math.target_names(names)]
+    return [table[t] for t in targets]
+
+
+def corrective_entries(asset):
+    """The metadata's corrective entries (signed, unit or split: one or two per feature)."""
+    import json
+    with open(asset + ".smpl.json", encoding="utf-8") as fh:
+        meta = json.load(fh)
+    return meta["correctives"], meta.get("skin_weights", "truncated")
+
+
+def decode_features(entries, values, count):
+    """Per feature, sum over its entries of (value - offset) / scale: f for every encoding
+    (split: the _pos and _neg parts add up to f)."""
+    f = np.zeros(count)
+    for e, v in zip(entries, values):
+        f[e["feature"]] += (v - e.get("offset", 0.0)) / e.get("scale", 1.0)
+    return f
 
 
 def evaluate(scene, frame, subframe=0.0):
@@ -249,11 +266,12 @@ def check_frame(ctx, out_frame, position, tol, tag):
     want, want_joints, f = ref.at(position)
     err = np.linalg.norm(got - want[index], axis=1).max()
     joint_err = np.abs(rt.posed_joints(ctx["arm"], ref.names) - want_joints).max()
-    blocks = key_blocks(ctx["mesh"], ref.names)
+    entries = ctx["entries"]
+    blocks = key_blocks(ctx["mesh"], [e["target"] for e in entries])
     # Key values decoded to features: weight = scale * f + offset (file metadata).
-    keys = (np.array([kb.value for kb in blocks]) - ctx["offset_w"]) / ctx["scale"]
-    lo = (np.array([kb.slider_min for kb in blocks]) - ctx["offset_w"]) / ctx["scale"]
-    hi = (np.array([kb.slider_max for kb in blocks]) - ctx["offset_w"]) / ctx["scale"]
+    keys = decode_features(entries, [kb.value for kb in blocks], f.size)
+    lo = decode_features(entries, [kb.slider_min for kb in blocks], f.size)
+    hi = decode_features(entries, [kb.slider_max for kb in blocks], f.size)
     print("%s %s%s %d %d %.3e" % (ctx["fmt"], ctx["label"], tag, ctx["m"], out_frame, err))
     print("  joints_err_m %.3e key_value_err %.3e (f in [%.3f, %.3f])"
           % (joint_err, np.abs(keys - f).max(), f.min(), f.max()))
@@ -310,13 +328,16 @@ def main():
     fmt, arm, mesh_obj = import_asset(args.asset, fps_out)
     m = read_max_influences(args.asset)
     ref = Reference(model, motion, model_math.prune(model["weights"], m))
-    names = model_math.target_names(ref.names)
-    scale, offset = rt.corrective_encoding(args.asset, len(names))
-    index, _ = rt.vertex_map(mesh_obj, ref.v_shaped, rt.rest_positions(mesh_obj, dict(zip(names, offset))))
+    entries, skin_method = corrective_entries(args.asset)
+    rest_weights = {e["target"]: e.get("offset", 0.0) for e in entries}
+    index, _ = rt.vertex_map(mesh_obj, ref.v_shaped, rt.rest_positions(mesh_obj, rest_weights))
+    # The skin as the file carries it (optimized weights are fitted, not a truncation).
+    got_weights = rt.file_weights(mesh_obj, ref.names, index, len(ref.v_shaped))
+    ref.weights = rt.check_weights(got_weights, m, skin_method, model, None)
     ratio = motion["fps"] / fps_out  # source frames per output frame
     count = int(np.floor((motion["frames"] - 1) / ratio + 1e-9)) + 1
     ctx = {"fmt": fmt, "arm": arm, "mesh": mesh_obj, "ref": ref, "index": index, "m": m,
-           "scale": scale, "offset_w": offset,
+           "entries": entries,
            "label": args.label or os.path.splitext(os.path.basename(args.model))[0],
            "offset": 1 if fmt == "fbx" else 0}  # Blender's FBX importer starts at frame 1
     frames = sorted({0, count // 2, count - 1})

@@ -101,7 +101,9 @@ def main():
     rt.check(bound == k, "bind found %d of %d basis keys" % (bound, k))
 
     m = int(meta.get("max_influences", 4))
-    pruned = model_math.prune(model["weights"], m)
+    # The skin as the file carries it (optimized weights are fitted, not a truncation).
+    got_weights = rt.file_weights(mesh_obj, names, index, n)
+    pruned = rt.check_weights(got_weights, m, meta.get("skin_weights", "truncated"), model, ref)
     poses = ref["poses"]
     got = rt.run_poses(arm, mesh_obj, names, poses, index)[0]
     want_trunc = rt.numpy_reference(dict(model, posedirs=truncated), v_shaped, rest_joints, poses, pruned)[0]

@@ -196,8 +196,8 @@ def check_skeleton(arm, names, parents):
     check(len(bones) == len(names), "%d bones, expected %d" % (len(bones), len(names)))
 
 
-def check_weights(mesh_obj, names, index, expected):
-    """Vertex groups against the model's weights pruned here with numpy."""
+def file_weights(mesh_obj, names, index, num_vertices):
+    """The skin weights as Blender imported them from the file: (N,K) per model vertex."""
     group_joint = {g.index: names.index(g.name) for g in mesh_obj.vertex_groups if g.name in names}
     check(len(group_joint) == len(mesh_obj.vertex_groups), "vertex groups not named after joints")
     got = np.zeros((len(index), len(names)))
@@ -205,8 +205,34 @@ def check_weights(mesh_obj, names, index, expected):
         for g in v.groups:
             if g.group in group_joint:
                 got[v.index, group_joint[g.group]] = g.weight
-    err = np.abs(got - expected[index]).max()
-    check(err <= 2e-6, "skin weights differ from numpy's pruned weights by %.3g" % err)
+    model_w = np.zeros((num_vertices, len(names)))
+    model_w[index] = got
+    return model_w
+
+
+def check_weights(got, m, method, model, ref):
+    """The file's weights: a skin of at most M influences summing to 1; truncated
+    ones equal numpy's pruning, optimized ones smpl-reference's fit (skin_weights)."""
+    check(got.min() >= 0 and int((got > 0).sum(1).max()) <= m, "skin: negative weights or more than %d influences" % m)
+    check(np.abs(got.sum(1) - 1).max() <= 2e-6, "skin weights do not sum to 1")
+    expected = model_math.prune(model["weights"], m) if method == "truncated" else (ref or {}).get("skin_weights")
+    if expected is not None:
+        err = np.abs(got - expected).max()
+        check(err <= 2e-6, "skin weights differ from the %s reference weights by %.3g" % (method, err))
+    return expected if expected is not None else got
+
+
+def check_fit_gain(model, v_shaped, rest_joints, poses, got, m):
+    """Optimized weights read from the file: numpy's error against all weights, over
+    these (held-out) poses, is below numpy's own truncation's."""
+    full = numpy_reference(model, v_shaped, rest_joints, poses, model["weights"])[0]
+    errors = {}
+    for label, w in (("file", got), ("truncated", model_math.prune(model["weights"], m))):
+        dist = np.linalg.norm(numpy_reference(model, v_shaped, rest_joints, poses, w)[0] - full, axis=2)
+        errors[label] = (dist.mean(), dist.max())
+    print("skin_fit m=%d file mean %.4g max %.4g truncated mean %.4g max %.4g" % (
+        m, errors["file"][0], errors["file"][1], errors["truncated"][0], errors["truncated"][1]))
+    check(errors["file"][0] < errors["truncated"][0], "optimized weights are not better than truncation")
 
 
 def key_lookup(mesh_obj):
@@ -337,8 +363,9 @@ def main():
     scale, offset = corrective_encoding(args.asset, len(targets))
     rest = rest_positions(mesh_obj, dict(zip(targets, offset))) if offset.any() else None
     index, _ = vertex_map(mesh_obj, v_shaped, rest)
-    pruned = model_math.prune(model["weights"], m)
-    check_weights(mesh_obj, names, index, pruned)
+    method = meta.get("skin_weights", "truncated")
+    got_weights = file_weights(mesh_obj, names, index, len(v_shaped))
+    pruned = check_weights(got_weights, m, method, model, ref)
     check_morph_targets(mesh_obj, names, model["posedirs"], index, scale, args.delta_tol)
     correctives.bind(arm, mesh_obj, source_path=args.asset)
     check_axes(arm, correctives)
@@ -351,6 +378,9 @@ def main():
     compare_reference(ref, "joints", want_joints)
     compare_reference(ref, "vertices_pruned", want)
     compare_reference(ref, "vertices_full", want_full)
+    lossy = int((model["weights"] > 0).sum(1).max()) > m
+    if method == "optimized" and lossy:
+        check_fit_gain(model, v_shaped, rest_joints, poses, got_weights, m)
     err = np.abs(got_joints - want_joints).max()
     check(err <= args.tol, "posed joints differ by %.3g m: bone rotation conversion is wrong" % err)
 

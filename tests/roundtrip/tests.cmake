@@ -182,3 +182,15 @@ include(${CMAKE_CURRENT_LIST_DIR}/anim_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/compact_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/basis_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/dmpl_tests.cmake)
+
+# --- --max-influences all: every joint an influence (SMPL-X: 55, 14 JOINTS/WEIGHTS
+# sets in glTF; FBX has no limit). Blender reads them all; the validator checks the GLB.
+smpl_roundtrip_reference(smplx_small ${SMPL_FIXTURE_DIR}/models/smplx_small.npz all ${SMPL_RT_BETAS})
+foreach(format ${SMPL_RT_FORMATS})
+  smpl_roundtrip_case(smplx_small ${format} ${SMPL_FIXTURE_DIR}/models/smplx_small.npz all ${SMPL_RT_BETAS})
+endforeach()
+add_test(NAME roundtrip.validator.all_influences
+  COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js
+          ${SMPL_ROUNDTRIP_DIR}/smplx_small_mall_glb.glb)
+set_tests_properties(roundtrip.validator.all_influences PROPERTIES
+  FIXTURES_REQUIRED roundtrip_smplx_small_mall_glb LABELS validator)

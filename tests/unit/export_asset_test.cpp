@@ -44,9 +44,12 @@ TEST(ExportAsset, BakesEachMotionAndResolvesTheEncoding) {
   ASSERT_TRUE(moving.ok()) << moving.message();
   ASSERT_EQ(moving->animations.size(), 2u);
   EXPECT_EQ(moving->animations[0].times.size(), in.motion.frames.size());
-  EXPECT_NE(moving->mesh.morph_targets[0].rest_weight, 0.f);  // Auto with motions: unit (rest weight o)
+  // Auto with motions: split (rest weights 0, more targets than features, _pos/_neg pairs)
+  EXPECT_EQ(moving->metadata.corrective_encoding, "split");
+  EXPECT_GT(moving->mesh.morph_targets.size(), still->mesh.morph_targets.size());
   EXPECT_EQ(resolveEncoding(CorrectiveEncoding::Auto, 0), CorrectiveEncoding::Signed);
-  EXPECT_EQ(resolveEncoding(CorrectiveEncoding::Auto, 1), CorrectiveEncoding::Unit);
+  EXPECT_EQ(resolveEncoding(CorrectiveEncoding::Auto, 1), CorrectiveEncoding::Split);
+  EXPECT_EQ(resolveEncoding(CorrectiveEncoding::Auto, 1, /*basis=*/true), CorrectiveEncoding::Unit);
   EXPECT_EQ(resolveEncoding(CorrectiveEncoding::Signed, 3), CorrectiveEncoding::Signed);
 }
 

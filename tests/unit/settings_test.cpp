@@ -51,12 +51,36 @@ TEST(Settings, RejectsBeforeWork) {
       {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--correctives", "none"}, "conflicts with --correctives none"},
       {{"--model", "builtin", "--out", "a.fbx", "--draco"}, "applies only to glTF"},
       {{"--model", "builtin", "--out", "a.glb", "--frames", "0:10"}, "needs --motion"},
+      {{"--model", "builtin", "--out", "a.glb", "--skin-weights", "best"}, "expected 'truncated' or 'optimized'"},
+      {{"--model", "builtin", "--out", "a.glb", "--max-influences", "0"}, "expected a count >= 1 or 'all'"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-weights", "half"}, "expected 'signed', 'unit' or 'split'"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-weights", "unit", "--correctives", "none"},
+       "--corrective-weights conflicts with --correctives none"},
+      {{"--model", "builtin", "--out", "a.glb", "--quantize-morphs", "--correctives", "none"},
+       "with --correctives none there are none"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--corrective-weights", "split"},
+       "conflicts with --corrective-weights split"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-epsilon", "0.001", "--correctives", "none"},
+       "there are none"},
   };
   for (const Bad& c : cases) {
     Result<Settings> s = parse(c.args);
     ASSERT_FALSE(s.ok()) << c.message;
     EXPECT_NE(s.message().find(c.message), std::string::npos) << s.message();
   }
+}
+
+TEST(Settings, SkinWeightsInfluencesAndSplitEncoding) {
+  Result<Settings> s = parse({"--model", "builtin", "--out", "a.glb", "--skin-weights", "truncated",
+                              "--max-influences", "all", "--corrective-weights", "split"});
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(s->export_options.skin_weights, SkinWeightMethod::Truncated);
+  EXPECT_EQ(s->export_options.max_influences, kAllInfluences);
+  EXPECT_EQ(s->export_options.encoding, CorrectiveEncoding::Split);
+  Result<Settings> d = parse({"--model", "builtin", "--out", "a.glb", "--max-influences", "12"});
+  ASSERT_TRUE(d.ok()) << d.message();
+  EXPECT_EQ(d->export_options.skin_weights, SkinWeightMethod::Optimized);
+  EXPECT_EQ(d->export_options.max_influences, 12);
 }
 
 TEST(Settings, BetasFileJson) {

@@ -109,7 +109,7 @@ inline Asset makeAsset(const AssetSpec& spec) {
     m.morph_targets.push_back({"pose_joint_1_0" + std::to_string(t), randomMatrix(rng, v_count, 3, -0.1f, 0.1f)});
   a.metadata = {"smpl",          "synthetic", "0.1.0",
                 {0.5, -1.25},    {},          {{0, "pose_joint_1_00", 1.0, 0.0}},
-                spec.influences, "meters",    "+Y",         {}, {}};
+                spec.influences, "meters",    "+Y",         {}};
   if (spec.frames > 0) fillAnimation(a, rng, spec.frames);
   return a;
 }

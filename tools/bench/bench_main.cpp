@@ -1,6 +1,7 @@
 // smpl-bench: prints the speed and size table of the product (issue "Speed and
 // size"). --compact: only the compact glTF table. Full-size synthetic models (bench/synthetic_model.h) stand in for the
 // licensed ones. Usage: smpl-bench [--quick] [--compact] [--anim-minutes M] (--help: usage)
+// smpl-bench --compare [--smplx CHECKOUT]: side by side with the peers (compare.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <string>
 #include <thread>
 
+#include "tools/bench/compare.h"
 #include "tools/bench/synthetic_model.h"
 #include "core/math/forward.h"
 #include "core/demo/demo_body.h"
@@ -141,18 +143,31 @@ void benchAnimation(const BodyModel& model, double minutes) {
 
 }  // namespace
 
+const char kUsage[] =
+    "usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"
+    "       smpl-bench --compare [--smplx CHECKOUT] [--standin DIR] [--blender PATH] [--frames N]\n";
+
 int main(int argc, char** argv) {
   bool quick = false;
   double minutes = 10;
   bool compact_only = false;
+  CompareOptions compare;
+  bool compare_only = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h"))
-      return std::printf("usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"), 0;
-    if (!std::strcmp(argv[i], "--quick")) quick = true;
+      return std::printf("%s", kUsage), 0;
+    if (!std::strcmp(argv[i], "--compare")) compare_only = true;
+    else if (!std::strcmp(argv[i], "--smplx") && i + 1 < argc) compare.smplx = argv[++i];
+    else if (!std::strcmp(argv[i], "--standin") && i + 1 < argc) compare.standin = argv[++i];
+    else if (!std::strcmp(argv[i], "--blender") && i + 1 < argc) compare.blender = argv[++i];
+    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) compare.frames = std::max(1, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--compact")) compact_only = true;
     else if (!std::strcmp(argv[i], "--anim-minutes") && i + 1 < argc) minutes = std::atof(argv[++i]);
-    else return std::fprintf(stderr, "usage: smpl-bench [--quick] [--compact] [--anim-minutes M]\n"), 1;
+    else
+      return std::fprintf(stderr, "%s", kUsage), 1;
   }
+  if (compare_only) return runCompare(compare);
   std::printf("smpl-bench: %u hardware threads%s\n\n", std::thread::hardware_concurrency(), quick ? " (quick)" : "");
   const BodyModel smpl = syntheticModel(ModelKind::Smpl, 6890, 10, 0, 1);
   if (compact_only) {  // only the compact glTF table

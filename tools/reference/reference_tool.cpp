@@ -1,18 +1,21 @@
 // smpl-reference: the C++ reference forward pass (core/forward.h) for a set of
 // seeded random poses, written for the round-trip tests to compare an engine's
-// output against. With pruned weights (what the exported asset carries) and
-// with the model's own weights.
+// output against. With the exported skin (exporter/export_skin.h: truncated or
+// fitted to M influences, what the exported asset carries) and with the
+// model's own weights.
 //
 //   smpl-reference --model PATH|builtin --out PREFIX [--betas v,v,..]
-//                  [--max-influences M] [--poses P] [--seed S] [--dump-model]
+//                  [--max-influences M] [--skin-weights truncated|optimized]
+//                  [--poses P] [--seed S] [--dump-model]
 //
 // Output: PREFIX.json, a header
 //   {"model_kind","joint_names","parents","max_influences","num_vertices",
 //    "num_joints","arrays":{name:{"shape":[..],"offset":o}}}
 // and PREFIX.bin, the arrays as little-endian float64, C order, `offset`
 // counted in doubles. Arrays: poses (P,K,3) axis-angle, features (P,9(K-1)),
-// joints (P,K,3) posed, vertices_pruned (P,N,3), vertices_full (P,N,3),
-// v_shaped (N,3), rest_joints (K,3); with --dump-model also posedirs
+// joints (P,K,3) posed, vertices_pruned (P,N,3) (the exported skin),
+// vertices_full (P,N,3), v_shaped (N,3), rest_joints (K,3), skin_weights (N,K)
+// (the exported skin, dense); the header also names "skin_weights"; with --dump-model also posedirs
 // (N,3,9(K-1)) and weights (N,K), for models that have no file (builtin).
 #include <Eigen/Core>
 #include <cstdint>
@@ -29,6 +32,7 @@
 #include "core/load/model_loader.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
+#include "exporter/export_skin.h"
 
 namespace {
 
@@ -38,6 +42,7 @@ struct Options {
   int max_influences = 4, poses = 20;
   uint64_t seed = 1;
   bool dump_model = false;
+  smpl::SkinWeightMethod skin_weights = smpl::ExportOptions().skin_weights;  // the CLI's default
 };
 
 struct Output {
@@ -81,7 +86,11 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
     if (a == "--model") o->model = v;
     else if (a == "--out") o->out = v;
     else if (a == "--betas") { if (!parseList(v, &o->betas)) return *error = "--betas: bad list", false; }
-    else if (a == "--max-influences") o->max_influences = std::atoi(v);
+    else if (a == "--max-influences") o->max_influences = std::strcmp(v, "all") ? std::atoi(v) : smpl::kAllInfluences;
+    else if (a == "--skin-weights") {
+      if (std::strcmp(v, "truncated") && std::strcmp(v, "optimized")) return *error = "--skin-weights: bad value", false;
+      o->skin_weights = std::strcmp(v, "truncated") ? smpl::SkinWeightMethod::Optimized : smpl::SkinWeightMethod::Truncated;
+    }
     else if (a == "--poses") o->poses = std::atoi(v);
     else if (a == "--seed") o->seed = std::strtoull(v, nullptr, 10);
     else if (a == "--dump-model") o->dump_model = true;
@@ -89,7 +98,8 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
     if (needs) ++i;
   }
   if (o->model.empty() || o->out.empty()) return *error = "--model and --out are required", false;
-  if (o->max_influences < 1 || o->poses < 1) return *error = "--max-influences and --poses must be >= 1", false;
+  if ((o->max_influences < 1 && o->max_influences != smpl::kAllInfluences) || o->poses < 1)
+    return *error = "--max-influences (a count or all) and --poses must be >= 1", false;
   return true;
 }
 
@@ -104,7 +114,8 @@ bool writeFiles(const Options& o, const smpl::BodyModel& model, const Output& ou
   for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << quoted(model.joint_names[k]);
   json << "],\"parents\":[";
   for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << model.parents[k];
-  json << "],\"max_influences\":" << o.max_influences << ",\"num_vertices\":" << model.numVertices()
+  json << "],\"max_influences\":" << (o.max_influences == smpl::kAllInfluences ? model.numJoints() : o.max_influences) << ",\"skin_weights\":"
+       << quoted(smpl::skinWeightMethodName(o.skin_weights)) << ",\"num_vertices\":" << model.numVertices()
        << ",\"num_joints\":" << model.numJoints() << ",\"arrays\":{" << out.arrays.str() << "}}\n";
   return bin.good() && json.good();
 }
@@ -125,7 +136,16 @@ int main(int argc, char** argv) {
     return 3;
   }
   const int n = model->numVertices(), k = model->numJoints(), p = o.poses;
-  const Eigen::MatrixXd pruned = smpl::denseWeights(smpl::pruneWeights(model->weights, o.max_influences), k);
+  smpl::ExportOptions export_options;
+  export_options.max_influences = o.max_influences;
+  export_options.skin_weights = o.skin_weights;
+  const Eigen::VectorXd betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(), Eigen::Index(o.betas.size()));
+  smpl::Result<smpl::ShapedBody> body = smpl::shapeBody(*model, betas);
+  if (!body) {
+    std::fprintf(stderr, "smpl-reference: %s\n", body.message().c_str());
+    return 3;
+  }
+  const Eigen::MatrixXd pruned = smpl::denseWeights(smpl::exportSkin(*model, *body, export_options), k);
   const std::vector<Eigen::VectorXd> poses = smpl::samplePoses(k, p, o.seed, 0.6);
   Eigen::MatrixXd pose_rows(p, 3 * k), features(p, 9 * (k - 1)), joints(p, 3 * k);
   Eigen::MatrixXd v_pruned(p, 3 * n), v_full(p, 3 * n), v_shaped, rest_joints;
@@ -158,6 +178,7 @@ int main(int argc, char** argv) {
   out.addMatrix("vertices_full", {p, n, 3}, v_full);
   out.addMatrix("v_shaped", {n, 3}, v_shaped);
   out.addMatrix("rest_joints", {k, 3}, rest_joints);
+  out.addMatrix("skin_weights", {n, k}, pruned);
   if (o.dump_model) {
     // posedirs is 3N x F with row 3i+c; C order (N,3,F) is exactly those rows.
     out.addMatrix("posedirs", {n, 3, 9 * (k - 1)}, model->posedirs);

@@ -260,6 +260,17 @@ namespace SmplExport.Correctives
         }
 
         /// <summary>
+        /// The weight mapping of a "correctives" entry (docs/file-contract.md):
+        /// scale * feature + offset, clamped below at 0 when the entry is
+        /// "rectified" (the split encoding's _pos/_neg targets).
+        /// </summary>
+        public static double Weight(double feature, double scale, double offset, bool rectified)
+        {
+            double w = scale * feature + offset;
+            return rectified && !(w > 0) ? 0.0 : w;
+        }
+
+        /// <summary>
         /// Weights of basis blend shapes (--corrective-basis): for each i,
         /// weights[i] = scale[rows[i]] * (matrix row rows[i] . features) + offset[rows[i]],
         /// matrix row-major with FeatureCount columns. No allocation.

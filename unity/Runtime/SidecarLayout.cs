@@ -17,6 +17,8 @@ namespace SmplExport.Correctives
         public string Target;
         public double Scale = 1.0;
         public double Offset = 0.0;
+        /// <summary>"rectified": true (split encoding): weight = max(0, Scale f + Offset).</summary>
+        public bool Rectified;
     }
 
     public sealed class CorrectiveBasisLayout
@@ -181,6 +183,7 @@ namespace SmplExport.Correctives
                     return "'correctives'[" + i + "].scale must be a number";
                 if (entry.TryGetValue("offset", out v) && !ReadDouble(v, out b.Offset))
                     return "'correctives'[" + i + "].offset must be a number";
+                b.Rectified = entry.TryGetValue("rectified", out v) && v is bool && (bool)v;
                 Correctives[i] = b;
             }
             return null;

@@ -49,6 +49,7 @@ namespace SmplExport.Correctives
         double[] features;
         int[] shapeIndex, shapeFeature;
         double[] shapeScale, shapeOffset;
+        bool[] shapeRectified;
         int[] basisShapeIndex, basisRow;   // --corrective-basis blend shapes and their rows of C
         double[] basisWeights;
 
@@ -111,7 +112,8 @@ namespace SmplExport.Correctives
             for (int i = 0; i < shapeIndex.Length; ++i)
             {
                 double f = features[shapeFeature[i]];
-                skin.SetBlendShapeWeight(shapeIndex[i], (float)(100.0 * (shapeScale[i] * f + shapeOffset[i])));
+                skin.SetBlendShapeWeight(shapeIndex[i],
+                    (float)(100.0 * CorrectiveMath.Weight(f, shapeScale[i], shapeOffset[i], shapeRectified[i])));
             }
             if (basisRow.Length == 0) return;
             CorrectiveMath.ProjectBasis(layout.Basis, basisRow, features, basisWeights);
@@ -224,6 +226,7 @@ namespace SmplExport.Correctives
             shapeFeature = new int[found];
             shapeScale = new double[found];
             shapeOffset = new double[found];
+            shapeRectified = new bool[found];
             int n = 0;
             for (int c = 0; c < match.Length; ++c)
             {
@@ -232,6 +235,7 @@ namespace SmplExport.Correctives
                 shapeFeature[n] = layout.Correctives[c].Feature;
                 shapeScale[n] = layout.Correctives[c].Scale;
                 shapeOffset[n] = layout.Correctives[c].Offset;
+                shapeRectified[n] = layout.Correctives[c].Rectified;
                 ++n;
             }
             if (found < match.Length)

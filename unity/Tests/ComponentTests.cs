@@ -127,6 +127,7 @@ namespace SmplExport.Correctives.Tests
             WrongAxisConventionIsDetected(model);
             MissingBone(model);
             BasisSidecar(model);
+            SplitSidecar(model);
             TestRig.DestroyAll();
         }
 
@@ -162,6 +163,71 @@ namespace SmplExport.Correctives.Tests
                     worst = Math.Max(worst, Math.Abs(rig.Skin.GetBlendShapeWeight(basisIndex[k]) / 100.0 - pose.BasisWeights[k]));
             }
             CorrectivesTests.CheckClose(worst, CorrectivesTests.FloatTolerance, model.Name + ": basis blend shape weights / 100");
+        }
+
+        // The split encoding (exact with every weight at zero): diagonal
+        // feature n -> one shape, weight -f/2; off-diagonal -> pose_..._pos
+        // (max(f, 0)) and pose_..._neg (max(-f, 0)), entries "rectified": true.
+        static void SplitSidecar(ReferenceModel model)
+        {
+            var rig = new TestRig(model, "", "");
+            var sb = new StringBuilder("{\"joint_names\":[");
+            for (int k = 0; k < model.JointCount; ++k) sb.Append(k > 0 ? "," : "").Append('"').Append(model.JointNames[k]).Append('"');
+            sb.Append("],\"parents\":[").Append(string.Join(",", Array.ConvertAll(model.Parents, p => p.ToString(CultureInfo.InvariantCulture))));
+            sb.Append("],\"corrective_encoding\":\"split\",\"correctives\":[");
+            var entries = new List<KeyValuePair<string, double[]>>();  // target -> {feature, scale}
+            for (int n = 0; n < 9 * (model.JointCount - 1); ++n)
+            {
+                int k = n / 9 + 1, rc = n % 9;
+                string target = "pose_" + model.JointNames[k] + "_" + (rc / 3) + (rc % 3);
+                if (rc % 4 == 0) entries.Add(new KeyValuePair<string, double[]>(target, new double[] { n, -0.5 }));
+                else
+                {
+                    entries.Add(new KeyValuePair<string, double[]>(target + "_pos", new double[] { n, 1 }));
+                    entries.Add(new KeyValuePair<string, double[]>(target + "_neg", new double[] { n, -1 }));
+                }
+            }
+            var index = new Dictionary<string, int>();
+            for (int i = 0; i < entries.Count; ++i)
+            {
+                string target = entries[i].Key;
+                bool half = target.EndsWith("_pos") || target.EndsWith("_neg");
+                sb.Append(i > 0 ? "," : "").Append("{\"feature\":").Append((int)entries[i].Value[0])
+                  .Append(",\"target\":\"").Append(target).Append("\",\"scale\":")
+                  .Append(entries[i].Value[1].ToString("R", CultureInfo.InvariantCulture)).Append(",\"offset\":0")
+                  .Append(half ? ",\"rectified\":true}" : "}");
+                if (half)
+                {
+                    index[target] = rig.Skin.sharedMesh.blendShapeCount;
+                    rig.AddBlendShape(target);
+                }
+                else index[target] = rig.ShapeIndex[target];
+            }
+            rig.Driver.sidecar = TestRig.Text("split.glb.smpl.json", sb.Append("]}").ToString());
+            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
+            rig.Pose(Identities(model.JointCount));
+            bool ready = rig.Driver.Initialize();
+            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
+                                   model.Name + ": split setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            if (!ready) return;
+            double worst = 0, decoded = 0, below = 0;
+            foreach (ReferencePose pose in model.Poses)
+            {
+                rig.Pose(pose.IdentityRestWorld);
+                rig.Driver.Evaluate();
+                foreach (var e in entries)
+                {
+                    double f = pose.Features[(int)e.Value[0]], w = rig.Skin.GetBlendShapeWeight(index[e.Key]) / 100.0;
+                    bool half = e.Key.EndsWith("_pos") || e.Key.EndsWith("_neg");
+                    worst = Math.Max(worst, Math.Abs(w - (half ? Math.Max(0, e.Value[1] * f) : -0.5 * f)));
+                    below = Math.Min(below, w);
+                    if (e.Key.EndsWith("_pos"))  // the pair decodes to f: posedirs * (w_pos - w_neg)
+                        decoded = Math.Max(decoded, Math.Abs(w - rig.Skin.GetBlendShapeWeight(index[e.Key.Replace("_pos", "_neg")]) / 100.0 - f));
+                }
+            }
+            CorrectivesTests.CheckClose(worst, CorrectivesTests.FloatTolerance, model.Name + ": split blend shape weights / 100");
+            CorrectivesTests.CheckClose(decoded, CorrectivesTests.FloatTolerance, model.Name + ": split pairs decode to f");
+            CorrectivesTests.Check(below >= 0, model.Name + ": a split weight below 0: " + below);
         }
 
         // Identity-rest bones with Mixamo-style names, rest taken at Start.

@@ -17,6 +17,23 @@ namespace SmplExport.Correctives.Tests
             HostileJson();
             AxisMapValidation();
             RotationFromScaledMatrix();
+            RectifiedWeights();
+        }
+
+        // "rectified": true only when literally true; Weight() clamps those below at 0.
+        static void RectifiedWeights()
+        {
+            string text = "{\"joint_names\":[\"root\",\"a\"],\"parents\":[-1,0],\"correctives\":[" +
+                          "{\"feature\":1,\"target\":\"pose_a_01_neg\",\"scale\":-1,\"offset\":0,\"rectified\":true}," +
+                          "{\"feature\":1,\"target\":\"pose_a_01\",\"scale\":-1,\"rectified\":1}]}";
+            string error;
+            SidecarLayout layout = SidecarLayout.Parse(text, "x.smpl.json", out error);
+            Check(layout != null && layout.Correctives[0].Rectified && !layout.Correctives[1].Rectified,
+                  "rectified parsed (only true counts): " + error);
+            Check(CorrectiveMath.Weight(0.25, -1, 0, true) == 0 && CorrectiveMath.Weight(-0.25, -1, 0, true) == 0.25,
+                  "rectified weight max(0, scale f + offset)");
+            Check(CorrectiveMath.Weight(0.25, -1, 0, false) == -0.25 && CorrectiveMath.Weight(0.5, 0.5, 0.5, false) == 0.75,
+                  "plain weight scale f + offset");
         }
 
         static void NameMatching()

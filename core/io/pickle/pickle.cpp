@@ -116,11 +116,12 @@ Result<bool> convert(Heap& heap, Ref r, Array* out, int depth) {
       return false;
     case Kind::List: case Kind::Tuple: return listToArray(heap, r, out);
     case Kind::Str: case Kind::Bytes: {
-      PK_TRY(heap.charge(o.text.size(), "string"));
-      a.strings.push_back(o.text);
+      const std::string_view text = o.bytes();
+      PK_TRY(heap.charge(text.size(), "string"));
+      a.strings.emplace_back(text);
       size_t chars = 0;  // numpy's <Un counts code points, not UTF-8 bytes
-      for (char c : o.text) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-      a.dtype = o.kind == Kind::Str ? "<U" + std::to_string(chars) : "|S" + std::to_string(o.text.size());
+      for (char c : text) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+      a.dtype = o.kind == Kind::Str ? "<U" + std::to_string(chars) : "|S" + std::to_string(text.size());
       break;
     }
     case Kind::Int: a.data.push_back(static_cast<double>(o.i)); a.dtype = "<i8"; break;

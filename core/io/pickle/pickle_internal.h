@@ -9,6 +9,7 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/array.h"
@@ -54,6 +55,12 @@ struct PyObj {
   int64_t i = 0;                       // Int, Bool
   double f = 0;                        // Float
   std::string text;                    // Str (UTF-8), Bytes, Global/Instance name "module.name"
+  // A large Bytes payload (py2 str, bytes opcodes) is not copied into `text`:
+  // `view` points into the pickle's own bytes, which outlive the Heap.
+  // Read Str/Bytes contents through bytes(), never `text` directly.
+  const char* view = nullptr;
+  size_t view_size = 0;
+  std::string_view bytes() const { return view ? std::string_view(view, view_size) : std::string_view(text); }
   std::vector<Ref> items;              // List/Tuple/Set; Dict as key,value,key,value; Instance ctor args
   Ref state = 0;                       // Instance: BUILD state (0 = none; 0 is always the None object)
   DtypeInfo dtype;                     // Dtype

@@ -56,7 +56,7 @@ std::string typeName(const Heap& heap, Ref r) {
 bool stringValue(const Heap& heap, Ref r, std::string* out) {
   const PyObj& o = heap.at(r);
   if (o.kind != Kind::Str && o.kind != Kind::Bytes) return false;
-  *out = o.text;
+  *out = std::string(o.bytes());
   return true;
 }
 
@@ -163,21 +163,23 @@ Result<Ref> encodeLatin1(Heap& heap, Ref text, Ref encoding) {
   if (enc != "latin1" && enc != "latin-1" && enc != "iso-8859-1" && enc != "iso8859-1") {
     return heap.fail("_codecs.encode with encoding '" + enc.substr(0, 40) + "' is not supported");
   }
-  const std::string& s = heap.at(text).text;
-  std::string out;
-  out.reserve(s.size());
+  const std::string_view s = heap.at(text).bytes();
+  std::string out(s.size(), '\0');  // the latin-1 bytes are never more than the UTF-8 ones
+  const unsigned char* in = reinterpret_cast<const unsigned char*>(s.data());
+  size_t w = 0;
   for (size_t k = 0; k < s.size();) {
-    unsigned char c = static_cast<unsigned char>(s[k]);
+    const unsigned char c = in[k];
     if (c < 0x80) {
-      out.push_back(static_cast<char>(c));
+      out[w++] = static_cast<char>(c);
       k += 1;
-    } else if ((c & 0xE0) == 0xC0 && k + 1 < s.size() && c <= 0xC3 && (s[k + 1] & 0xC0) == 0x80) {
-      out.push_back(static_cast<char>(((c & 0x03) << 6) | (s[k + 1] & 0x3F)));
+    } else if ((c & 0xE0) == 0xC0 && k + 1 < s.size() && c <= 0xC3 && (in[k + 1] & 0xC0) == 0x80) {
+      out[w++] = static_cast<char>(((c & 0x03) << 6) | (in[k + 1] & 0x3F));
       k += 2;
     } else {
       return heap.fail("_codecs.encode: text is not latin-1");
     }
   }
+  out.resize(w);
   return makeObj(heap, Kind::Bytes, {}, std::move(out));
 }
 
@@ -203,7 +205,7 @@ Result<Ref> fromIterable(Heap& heap, Kind kind, const std::vector<Ref>& args, co
 Result<Ref> makeByteArray(Heap& heap, const std::vector<Ref>& args) {
   if (args.empty()) return makeObj(heap, Kind::Bytes);
   if (args.size() == 1 && heap.at(args[0]).kind == Kind::Bytes) {
-    return makeObj(heap, Kind::Bytes, {}, heap.at(args[0]).text);
+    return makeObj(heap, Kind::Bytes, {}, std::string(heap.at(args[0]).bytes()));
   }
   if (args.size() == 2) return encodeLatin1(heap, args[0], args[1]);
   return heap.fail("bytearray() with these arguments is not supported");
@@ -294,7 +296,7 @@ Result<Ref> makeScalar(Heap& heap, const std::vector<Ref>& args) {
   DtypeInfo d = heap.at(args[0]).dtype;
   if (d.kind == 'O') return heap.fail("object scalars are not supported");
   if (heap.at(args[1]).kind != Kind::Bytes) return heap.fail("scalar() data is not bytes");
-  const std::string& raw = heap.at(args[1]).text;
+  const std::string_view raw = heap.at(args[1]).bytes();
   return arrayObject(heap, decodeArray(heap, d, {}, false, reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
 }
 
@@ -308,7 +310,7 @@ Result<Ref> fromBuffer(Heap& heap, const std::vector<Ref>& args) {
   Result<std::vector<int64_t>> shape = shapeOf(heap, args[2]);
   if (!shape) return shape.error();
   DtypeInfo d = heap.at(args[1]).dtype;
-  const std::string& raw = heap.at(args[0]).text;
+  const std::string_view raw = heap.at(args[0]).bytes();
   return arrayObject(heap, decodeArray(heap, d, *shape, order == "F",
                                        reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
 }
@@ -398,7 +400,7 @@ Status setArrayState(Heap& heap, Ref obj, Ref state) {
   const PyObj& fortran = heap.at(fortran_ref);
   bool is_fortran = (fortran.kind == Kind::Bool || fortran.kind == Kind::Int) && fortran.i != 0;
   Result<Array> array = decodeArray(heap, d, *shape, is_fortran,
-                                    reinterpret_cast<const uint8_t*>(raw.text.data()), raw.text.size());
+                                    reinterpret_cast<const uint8_t*>(raw.bytes().data()), raw.bytes().size());
   if (!array) return array.error();
   heap.at(obj).array = std::make_unique<Array>(std::move(*array));
   return Status::success();

@@ -15,6 +15,9 @@ namespace pickle {
 
 namespace {
 
+// Bytes payloads at least this long are viewed in place, not copied.
+constexpr uint64_t kViewBytes = 4096;
+
 class Vm {
  public:
   Vm(Heap& heap, const uint8_t* data, size_t size, const PickleLimits& limits)
@@ -486,6 +489,14 @@ Status Vm::stepPayload(uint8_t op, bool* handled) {
   if (!n) return n.error();
   if (op == 'T' && (*n & 0x80000000u)) return fail("BINSTRING has a negative length");
   PK_TRY(checkPayload(*n, name));
+  if (kind == Kind::Bytes && *n >= kViewBytes) {  // array payloads: no copy (PyObj::view)
+    PyObj o;
+    o.kind = kind;
+    o.view = reinterpret_cast<const char*>(data_ + pos_);
+    o.view_size = static_cast<size_t>(*n);
+    pos_ += o.view_size;
+    return pushNew(std::move(o));
+  }
   return pushString(take(static_cast<size_t>(*n)), kind);
 }
 

@@ -1,0 +1,54 @@
+// Fitted skin weights: instead of keeping the M largest weights of a vertex
+// and renormalising them (pruneWeights, the usual practice), choose M joints
+// and non-negative weights summing to 1 that best reproduce the unpruned model
+// over a set of training poses. Linear blend skinning is linear in the
+// weights, so per vertex this is a small quadratic program:
+//
+//   a_ps = A_{k_s}(p) v_posed_i(p)          (3-vector: vertex i moved by joint k_s alone)
+//   y_p  = sum_k w_ik A_k(p) v_posed_i(p)   (the model with all its weights)
+//   minimise  sum_p |sum_s u_s a_ps - y_p|^2 + lambda |u - u_trunc|^2
+//   over u >= 0, sum_s u_s = 1,
+//
+// solved exactly by a primal active-set method (Nocedal & Wright, "Numerical
+// Optimization", 2nd ed., algorithm 16.3) started from the truncated weights
+// u_trunc. The tiny ridge lambda (1e-6 of the mean diagonal) only keeps the
+// system regular when two joints move a vertex alike. Support rule: the
+// lower training error of (a) the M joints with the largest model weights and
+// (b) greedy forward selection among the vertex's largest non-zero weights
+// (each step adds the joint that lowers the fitted error most). Guard: a
+// vertex whose fit is worse than truncation at its worst training pose keeps
+// the truncated weights. A vertex with at most M non-zero weights keeps its
+// exact weights. Poses: samplePoses
+// (core/math/pose_sampler.h) with a seed of its own, so reports that measure
+// the error on the default report seed (20261124) measure held-out poses.
+// Deterministic: the result does not depend on the thread count.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "core/body_model.h"
+#include "core/math/forward.h"
+#include "core/math/skin_weights.h"
+
+namespace smpl {
+
+struct SkinFitOptions {
+  int max_influences = 4;               // M, 1..K
+  int training_poses = 48;              // poses of the fit (axis-angle, uniform in +-pose_scale rad)
+  uint64_t seed = 0x5157a11f17ull;      // training set; differs from the report's held-out seed
+  double pose_scale = 0.6;              // radians, as samplePoses
+  int threads = 2;                      // worker threads over vertices (result is thread-independent)
+};
+
+// Fitted N x M skin of the subject `body` (shapeBody of the exported betas).
+// Same layout as pruneWeights: joints sorted by descending fitted weight
+// (ties: lower joint index), unused slots joint 0 with weight 0, rows sum to 1.
+SparseSkin fitSkinWeights(const BodyModel& model, const ShapedBody& body, const SkinFitOptions& options);
+
+// The quadratic program of one vertex: minimise 1/2 u'Hu - c'u over
+// u >= 0, sum u = 1 (H symmetric positive definite, m x m), from the feasible
+// start `u0` (u0 >= 0, sum 1). Returns the minimiser (exact up to rounding).
+Eigen::VectorXd solveSimplexQp(const Eigen::MatrixXd& h, const Eigen::VectorXd& c, const Eigen::VectorXd& u0);
+
+}  // namespace smpl

@@ -1,0 +1,2 @@
+// Stand-in for the header Unreal Header Tool generates (nothing to generate here).
+#pragma once

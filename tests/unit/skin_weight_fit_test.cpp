@@ -1,0 +1,115 @@
+// Fitted skin weights (core/math/skin_weight_fit.h): the simplex QP against a
+// known solution and a brute-force search, the fit's held-out error against
+// truncation (exporter/pruning_error.h: poses the fit never trains on), and
+// the layout contract (non-negative, sum 1, at most M, thread-independent).
+#include "core/math/skin_weight_fit.h"
+
+#include <gtest/gtest.h>
+
+#include "core/demo/demo_body.h"
+#include "core/load/model_loader.h"
+#include "exporter/export_skin.h"
+#include "exporter/pruning_error.h"
+
+namespace smpl {
+namespace {
+
+TEST(SolveSimplexQp, ProjectsOntoTheSimplex) {
+  // min |u - t|^2 on the simplex, t = (1.5, -0.5, 0.2): the projection is (1, 0, 0).
+  const Eigen::Vector3d t(1.5, -0.5, 0.2);
+  const Eigen::VectorXd u = solveSimplexQp(2.0 * Eigen::Matrix3d::Identity(), 2.0 * t, Eigen::Vector3d::Constant(1.0 / 3));
+  EXPECT_NEAR(u(0), 1.0, 1e-12);
+  EXPECT_NEAR(u(1), 0.0, 1e-12);
+  EXPECT_NEAR(u(2), 0.0, 1e-12);
+  // t = (0.6, 0.5, -1): both positive entries shift by 0.05 -> (0.55, 0.45, 0).
+  const Eigen::VectorXd v = solveSimplexQp(2.0 * Eigen::Matrix3d::Identity(), 2.0 * Eigen::Vector3d(0.6, 0.5, -1.0),
+                                           Eigen::Vector3d(0, 0, 1));
+  EXPECT_NEAR(v(0), 0.55, 1e-12);
+  EXPECT_NEAR(v(1), 0.45, 1e-12);
+  EXPECT_NEAR(v(2), 0.0, 1e-12);
+}
+
+TEST(SolveSimplexQp, NoGridPointIsBetter) {
+  for (int seed = 1; seed <= 20; ++seed) {
+    std::srand(unsigned(seed));
+    const Eigen::Matrix3d a = Eigen::Matrix3d::Random();
+    const Eigen::Matrix3d h = a * a.transpose() + 1e-3 * Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d c = Eigen::Vector3d::Random();
+    auto objective = [&](const Eigen::Vector3d& u) { return 0.5 * u.dot(h * u) - c.dot(u); };
+    const Eigen::VectorXd u = solveSimplexQp(h, c, Eigen::Vector3d(1, 0, 0));
+    EXPECT_GE(u.minCoeff(), 0.0);
+    EXPECT_NEAR(u.sum(), 1.0, 1e-12);
+    const int steps = 200;
+    for (int i = 0; i <= steps; ++i)
+      for (int j = 0; i + j <= steps; ++j) {
+        const Eigen::Vector3d g(double(i) / steps, double(j) / steps, double(steps - i - j) / steps);
+        EXPECT_LE(objective(u), objective(g) + 1e-12) << "seed " << seed;
+      }
+  }
+}
+
+struct Errors {
+  SkinError truncated, fitted;
+};
+
+Errors heldOut(const BodyModel& model, int m) {
+  ExportOptions o;
+  o.max_influences = m;
+  o.skin_weights = SkinWeightMethod::Optimized;
+  Result<PruningError> e = measurePruningError(model, o, 32);
+  EXPECT_TRUE(e.ok()) << e.message();
+  return {e->truncated, SkinError{e->mean_m, e->max_m}};
+}
+
+TEST(FitSkinWeights, HeldOutErrorOnTheSmplFixtureIsWellBelowTruncation) {
+  Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
+  ASSERT_TRUE(model.ok()) << model.message();
+  const Errors e = heldOut(*model, 4);
+  EXPECT_LE(e.fitted.mean_m, 0.7 * e.truncated.mean_m) << e.fitted.mean_m << " vs " << e.truncated.mean_m;
+  EXPECT_LE(e.fitted.max_m, e.truncated.max_m) << e.fitted.max_m << " vs " << e.truncated.max_m;
+}
+
+TEST(FitSkinWeights, HeldOutMeanErrorOfTheBuiltinBodyIsBelowTruncation) {
+  const Errors e = heldOut(demoBody(), 4);
+  EXPECT_LE(e.fitted.mean_m, 0.95 * e.truncated.mean_m) << e.fitted.mean_m << " vs " << e.truncated.mean_m;
+}
+
+TEST(FitSkinWeights, RowsAreConvexCombinationsAndThreadIndependent) {
+  const BodyModel& model = demoBody();
+  Result<ShapedBody> body = shapeBody(model, Eigen::VectorXd());
+  ASSERT_TRUE(body.ok());
+  SkinFitOptions o;
+  o.max_influences = 3;
+  o.threads = 1;
+  const SparseSkin one = fitSkinWeights(model, *body, o);
+  o.threads = 3;
+  const SparseSkin three = fitSkinWeights(model, *body, o);
+  ASSERT_EQ(one.weights.cols(), 3);
+  EXPECT_TRUE(one.weights == three.weights && one.joints == three.joints);
+  EXPECT_GE(one.weights.minCoeff(), 0.0);
+  EXPECT_LE((one.weights.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-12);
+  for (Eigen::Index i = 0; i < one.weights.rows(); ++i)
+    for (Eigen::Index s = 1; s < 3; ++s) EXPECT_LE(one.weights(i, s), one.weights(i, s - 1));
+}
+
+TEST(FitSkinWeights, VerticesWithAtMostMInfluencesKeepTheirWeights) {
+  Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
+  ASSERT_TRUE(model.ok()) << model.message();
+  Result<ShapedBody> body = shapeBody(*model, Eigen::VectorXd());
+  ASSERT_TRUE(body.ok());
+  SkinFitOptions o;
+  o.max_influences = 8;  // the fixture has at most 6 influences per vertex
+  const Eigen::MatrixXd dense = denseWeights(fitSkinWeights(*model, *body, o), model->numJoints());
+  EXPECT_LE((dense - model->weights).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(ExportSkin, AllInfluencesIsEveryJoint) {
+  ExportOptions o;
+  o.max_influences = kAllInfluences;
+  EXPECT_EQ(influencesFor(demoBody(), o), demoBody().numJoints());
+  o.max_influences = 6;
+  EXPECT_EQ(influencesFor(demoBody(), o), 6);
+}
+
+}  // namespace
+}  // namespace smpl

@@ -1,0 +1,255 @@
+// smpl-bench --compare (compare.h). Every number comes from this one run:
+//  - load: loadModel() of the full-size SMPL stand-in as a Python 2 chumpy
+//    .pkl, a stored .npz and a deflated .npz (tools/bench/make_standin.py),
+//    warm (read once first), median of 5, MB of file per wall second;
+//  - whole-process CLI export: smpl-export --model <stand-in .pkl> --out
+//    x.glb / x.fbx, process start to exit, median of 3;
+//  - in-process write: GLB and FBX serialisation of the same asset, median of 5;
+//  - forward pass: forwardBatch on 1 thread vs smplx.SMPL (the authors'
+//    PyTorch code, tools/bench/smplx_forward_time.py) on 1 thread, same model,
+//    same frame count and batch size, CPU time per frame (robust to other load);
+//  - Blender 3.4's own glTF and FBX exporters writing the asset smpl-export
+//    wrote (imported first; only the export is timed).
+#include "tools/bench/compare.h"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/load/model_loader.h"
+#include "core/math/forward_batch.h"
+#include "core/math/pose_sampler.h"
+#include "exporter/pipeline.h"
+#include "plugins/writer.h"
+
+namespace smpl {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+const char* const kStandins[] = {"standin_smpl_py2.pkl", "standin_smpl_stored.npz", "standin_smpl_deflated.npz"};
+
+double seconds(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+double clockSeconds(clockid_t clock) {
+  timespec ts{};
+  clock_gettime(clock, &ts);
+  return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+double threadCpuSeconds() { return clockSeconds(CLOCK_THREAD_CPUTIME_ID); }
+
+// CPU seconds (user + system) of this process, or of its finished children.
+double cpuSeconds(bool children) {
+  if (!children) return clockSeconds(CLOCK_PROCESS_CPUTIME_ID);
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return u.ru_utime.tv_sec + u.ru_stime.tv_sec + (u.ru_utime.tv_usec + u.ru_stime.tv_usec) * 1e-6;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Median wall and CPU seconds of `repeats` calls (CPU: this process's, or
+// its children's when fn runs a program). On a loaded machine wall time
+// includes waiting for a core; CPU time does not.
+struct Timing {
+  double wall = -1, cpu = -1;
+};
+Timing medianSeconds(int repeats, const std::function<void()>& fn, bool children = false) {
+  std::vector<double> wall, cpu;
+  for (int i = 0; i < repeats; ++i) {
+    const double cpu0 = cpuSeconds(children);
+    const auto start = Clock::now();
+    fn();
+    wall.push_back(seconds(start));
+    cpu.push_back(cpuSeconds(children) - cpu0);
+  }
+  return {median(wall), median(cpu)};
+}
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// Runs a shell command; returns its exit status and combined output.
+int run(const std::string& command, std::string* output) {
+  output->clear();
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
+  if (!p) return -1;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) output->append(buf, n);
+  const int status = pclose(p);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The value after `tag` on the line that starts with it, or a negative number.
+double field(const std::string& text, const std::string& tag, int index = 0) {
+  const size_t at = text.find(tag + " ");
+  if (at == std::string::npos) return -1;
+  const char* p = text.c_str() + at + tag.size();
+  for (int i = 0; i < index; ++i) std::strtod(p, const_cast<char**>(&p));
+  return std::strtod(p, nullptr);
+}
+
+bool ensureStandins(const std::string& dir) {
+  bool present = true;
+  for (const char* name : kStandins) present = present && fs::exists(fs::path(dir) / name);
+  if (present) return true;
+  std::printf("making the full-size stand-in in %s ...\n", dir.c_str());
+  std::string out;
+  const int rc = run("/usr/bin/python3 " + quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/make_standin.py") + " " +
+                         quote(dir), &out);
+  if (rc != 0) std::fprintf(stderr, "smpl-bench: make_standin.py failed (%d): %s\n", rc, out.c_str());
+  return rc == 0;
+}
+
+void row(const char* what, const std::string& ours, const std::string& peer, const std::string& ratio) {
+  std::printf("| %-44s | %-16s | %-26s | %-12s |\n", what, ours.c_str(), peer.c_str(), ratio.c_str());
+}
+
+std::string fmt(const char* format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+void compareLoad(const std::string& dir) {
+  const char* names[] = {"load .pkl (py2 chumpy, latin-1 payloads)", "load .npz (stored)", "load .npz (deflated)"};
+  for (int i = 0; i < 3; ++i) {
+    const std::string path = (fs::path(dir) / kStandins[i]).string();
+    const double mb = fs::file_size(path) / 1e6;
+    (void)loadModel(path);  // warm: the file is in the page cache
+    const Timing t = medianSeconds(5, [&] { (void)loadModel(path); });
+    row(names[i], fmt("%.0f", mb / t.wall) + fmt(" / %.0f MB/s", mb / t.cpu), fmt("%.1f MB file", mb), "");
+  }
+}
+
+struct CliTimes {
+  Timing glb, fbx;
+  std::string glb_path;
+};
+
+CliTimes compareCli(const std::string& dir) {
+  CliTimes t;
+  const std::string model = (fs::path(dir) / kStandins[0]).string();
+  for (const char* ext : {"glb", "fbx"}) {
+    const std::string out = (fs::path(dir) / (std::string("cli.") + ext)).string();
+    std::string log;
+    bool ok = true;
+    const Timing s = medianSeconds(3, [&] {
+      ok = ok && run(quote(SMPL_EXPORT_BIN) + " --model " + quote(model) + " --out " + quote(out), &log) == 0;
+    }, /*children=*/true);
+    if (!ok) std::fprintf(stderr, "smpl-bench: smpl-export failed: %s\n", log.c_str());
+    (std::string(ext) == "glb" ? t.glb : t.fbx) = ok ? s : Timing();
+    if (std::string(ext) == "glb") t.glb_path = out;
+  }
+  row("whole-process CLI export, .pkl -> .glb", fmt("%.2f", t.glb.wall) + fmt(" / %.2f s", t.glb.cpu), "", "");
+  row("whole-process CLI export, .pkl -> .fbx", fmt("%.2f", t.fbx.wall) + fmt(" / %.2f s", t.fbx.cpu), "",
+      fmt("%.2f", t.fbx.wall / t.glb.wall) + fmt(" / %.2fx GLB", t.fbx.cpu / t.glb.cpu));
+  return t;
+}
+
+void compareWrite(const BodyModel& model) {
+  Result<Asset> asset = buildAsset(model, ExportOptions());
+  if (!asset) return row("in-process write", asset.message(), "", "");
+  Timing t[2];
+  int i = 0;
+  for (const char* ext : {".glb", ".fbx"}) {
+    const Writer* w = writerForPath(std::string("x") + ext);
+    t[i++] = medianSeconds(5, [&] { (void)w->serialize(*asset, WriterOptions()); });
+  }
+  row("in-process write GLB", fmt("%.0f", 1e3 * t[0].wall) + fmt(" / %.0f ms", 1e3 * t[0].cpu), "", "");
+  row("in-process write FBX (deflate on all cores)", fmt("%.0f", 1e3 * t[1].wall) + fmt(" / %.0f ms", 1e3 * t[1].cpu), "",
+      fmt("%.1f", t[1].wall / t[0].wall) + fmt(" / %.1fx GLB", t[1].cpu / t[0].cpu));
+}
+
+void compareForward(const BodyModel& model, const CompareOptions& o, const std::string& npz) {
+  std::vector<Rotations> frames;
+  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), o.frames, 5)) frames.push_back(rotationsFromAxisAngle(pose));
+  Result<ShapedBody> body = shapeBody(model, Eigen::VectorXd());
+  BatchInput in{&*body, &frames, nullptr, 1, o.batch};
+  std::vector<double> cpu;
+  for (int r = 0; r < 3; ++r) {
+    const double start = threadCpuSeconds();
+    (void)forwardBatch(model, in);
+    cpu.push_back(threadCpuSeconds() - start);
+  }
+  const double ours = 1e3 * *std::min_element(cpu.begin(), cpu.end()) / o.frames;
+  if (o.smplx.empty())
+    return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: absent (--smplx PATH)", "-");
+  std::string out;
+  const int rc = run("OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/python3 " +
+                         quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/smplx_forward_time.py") + " " +
+                         quote(o.smplx) + " " + quote(npz) + " " + std::to_string(o.frames) + " " +
+                         std::to_string(o.batch), &out);
+  const double peer = field(out, "SMPLX_FORWARD");
+  if (rc != 0 || peer <= 0)
+    return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: failed to run", "-"),
+           (void)std::fprintf(stderr, "smpl-bench: smplx run failed: %s\n", out.c_str());
+  row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), fmt("smplx/torch %.3f ms", peer),
+      fmt("%.1fx", peer / ours));
+}
+
+void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::string& dir) {
+  std::string out;
+  if (cli.glb.wall <= 0 || run(quote(o.blender) + " --version", &out) != 0) {
+    row("Blender glTF exporter", "", "Blender: absent", "-");
+    return row("Blender FBX exporter", "", "Blender: absent", "-");
+  }
+  const int rc = run(quote(o.blender) + " -b --factory-startup --python-exit-code 1 --python " +
+                         quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/blender_export_time.py") + " -- " +
+                         quote(cli.glb_path) + " " + quote(dir), &out);
+  const Timing gltf{field(out, "BLENDER_EXPORT gltf"), field(out, "BLENDER_EXPORT gltf", 1)},
+      fbx{field(out, "BLENDER_EXPORT fbx"), field(out, "BLENDER_EXPORT fbx", 1)};
+  if (rc != 0 || gltf.wall <= 0 || fbx.wall <= 0) {
+    std::fprintf(stderr, "smpl-bench: Blender run failed: %s\n", out.c_str());
+    row("Blender glTF exporter", "", "Blender: failed to run", "-");
+    return row("Blender FBX exporter", "", "Blender: failed to run", "-");
+  }
+  row("Blender glTF exporter vs whole-process CLI", fmt("%.2f", cli.glb.wall) + fmt(" / %.2f s", cli.glb.cpu),
+      fmt("Blender 3.4 %.2f", gltf.wall) + fmt(" / %.2f s", gltf.cpu),
+      fmt("%.1f", gltf.wall / cli.glb.wall) + fmt(" / %.1fx", gltf.cpu / cli.glb.cpu));
+  row("Blender FBX exporter vs whole-process CLI", fmt("%.2f", cli.fbx.wall) + fmt(" / %.2f s", cli.fbx.cpu),
+      fmt("Blender 3.4 %.2f", fbx.wall) + fmt(" / %.2f s", fbx.cpu),
+      fmt("%.1f", fbx.wall / cli.fbx.wall) + fmt(" / %.1fx", fbx.cpu / cli.fbx.cpu));
+}
+
+}  // namespace
+
+int runCompare(const CompareOptions& o) {
+  const std::string dir = o.standin.empty() ? (fs::temp_directory_path() / "smpl-bench-standin").string() : o.standin;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!ensureStandins(dir)) return 1;
+  const std::string npz = (fs::path(dir) / kStandins[1]).string();
+  Result<BodyModel> model = loadModel(npz);
+  if (!model) return std::fprintf(stderr, "smpl-bench: %s\n", model.message().c_str()), 1;
+  std::printf("Side by side: full-size SMPL stand-in (%lld vertices, %d pose features), %d forward frames.\n"
+              "Times are wall / CPU (user + system, all threads); ratios are peer / smpl-export.\n\n",
+              static_cast<long long>(model->numVertices()), model->numPoseFeatures(), o.frames);
+  row("measure", "smpl-export", "peer", "ratio");
+  std::printf("|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(18, '-').c_str(),
+              std::string(28, '-').c_str(), std::string(14, '-').c_str());
+  compareLoad(dir);
+  const CliTimes cli = compareCli(dir);
+  compareWrite(*model);
+  compareForward(*model, o, npz);
+  compareBlender(o, cli, dir);
+  return 0;
+}
+
+}  // namespace smpl
