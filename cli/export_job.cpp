@@ -10,6 +10,7 @@
 #include "core/io/printable.h"
 #include "core/load/motion.h"
 #include "core/load/motion_fit.h"
+#include "cli/dmpl_job.h"
 #include "cli/output_guard.h"
 #include "cli/producer.h"
 #include "exporter/animation.h"
@@ -159,10 +160,13 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   options.encoding = resolveEncoding(options.encoding, motions->size(), options.corrective_basis > 0);
   options.quantize_morphs = s.writer_options.quantize_morphs;
   // The finished asset: baked, quantisation folded, validated; the writer only translates it.
-  Result<Asset> asset = exportAsset(model, options, motionInputs(s, job, *motions));
-  if (!asset) return exportFailure(job.out, asset.error(), options.uv_obj);
   ExportReport report;
+  Result<PreparedDmpl> dmpl = prepareDmpl(model, s, job, *motions, &report);  // --dmpl (dmpl_job.h)
+  if (!dmpl) return dmpl.error();
+  Result<Asset> asset = exportAsset(model, options, motionInputs(s, job, *motions), &dmpl->input);
+  if (!asset) return exportFailure(job.out, asset.error(), options.uv_obj);
   reportMotions(model, s, job, *motions, *asset, &report);
+  noteDmplJointCost(*asset, &report);
   if (s.writer_options.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
     report.notes.push_back("--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
   Result<std::string> producer = producerHashFor(s, job);

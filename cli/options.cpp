@@ -205,6 +205,26 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) { return s->export_options.uv_obj = v, Status(); }},
     {"--name", nullptr, "NAME", Applies::Any, nullptr, "mesh name (default body)",
      [](V v, S* s) { return s->export_options.name = v, Status(); }},
+    {"--dmpl", nullptr, "FILE|DIR", Applies::Any, nullptr,
+     "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
+     "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
+     "--motion at weight 0. DIR: per motion gender, DIR/dmpls/<gender>/model.npz or "
+     "DIR/<gender>/model.npz (AMASS layout)",
+     [](V v, S* s) { return s->dmpl = v, Status(); }},
+    {"--dmpl-count", nullptr, "N", Applies::Any, nullptr, "keep the first N DMPL directions (default all)",
+     [](V v, S* s) {
+       Status st = intInto(v, "--dmpl-count", &s->dmpl_count);
+       if (st && s->dmpl_count < 1) return Status(usageError("--dmpl-count: expected N >= 1, got '" + v + "'"));
+       return st;
+     }},
+    {"--dmpl-joints", nullptr, "fixed|regressed", Applies::Any, nullptr,
+     "fixed (default): keep the betas-only skeleton (the cost is printed); regressed: animate joint "
+     "translations to follow the displaced template (the published math, exact)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--dmpl-joints", {"fixed", "regressed"});
+       if (!c) return Status(c.error());
+       return s->dmpl_regressed_joints = *c == 1, Status();
+     }},
     {"--fbx-units", nullptr, "m|cm", Applies::Fbx, nullptr, "FBX geometry units (default m)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-units", {"m", "cm"});

@@ -15,7 +15,7 @@ namespace {
 // (hashed by identity below).
 const char* const kNotHashed[] = {"--threads", "--quiet",   "-q",       "--force", "--out",
                                   "--out-dir", "--motion-dir", "--memory-limit", "--shard",
-                                  "--manifest", "--model",  "--motion", "--betas-file", "--uv",
+                                  "--manifest", "--model",  "--motion", "--betas-file", "--uv", "--dmpl",
                                   "--help",    "-h",        "--version"};
 
 bool hashed(const std::string& option) {
@@ -58,6 +58,19 @@ Status addInput(const std::string& tag, const std::string& path, ContentHash* h)
   return Status();
 }
 
+// --dmpl DIR: every basis it can pick (core/load/dmpl.h findDmplBasis), by content.
+Status addDmplFolder(const std::string& dir, ContentHash* h) {
+  std::error_code ec;
+  if (dir.empty() || !fs::is_directory(dir, ec)) return Status();
+  for (const char* sub : {"dmpls/", ""})
+    for (const char* gender : {"female", "male", "neutral"}) {
+      const std::string path = dir + "/" + sub + gender + "/model.npz";
+      if (!fs::is_regular_file(path, ec)) continue;
+      if (Status st = addInput(std::string("dmpl ") + sub + gender, path, h); !st) return st;
+    }
+  return Status();
+}
+
 }  // namespace
 
 Result<ContentHash> producerBase(const Settings& s) {
@@ -72,6 +85,8 @@ Result<ContentHash> producerBase(const Settings& s) {
   if (Status st = addInput("model", s.model, &h); !st) return st.error();
   if (Status st = addInput("betas", s.betas_file, &h); !st) return st.error();
   if (Status st = addInput("uv", s.export_options.uv_obj, &h); !st) return st.error();
+  if (Status st = addInput("dmpl", s.dmpl, &h); !st) return st.error();
+  if (Status st = addDmplFolder(s.dmpl, &h); !st) return st.error();
   return h;
 }
 

@@ -55,6 +55,8 @@ Status checkConflicts(const Settings& s) {
     return usageError("--betas-from-motion conflicts with --betas/--betas-file");
   if (given(s, "--corrective-basis") && !s.export_options.correctives)
     return usageError("--corrective-basis conflicts with --correctives none");
+  for (const char* o : {"--dmpl-count", "--dmpl-joints"})
+    if (given(s, o) && s.dmpl.empty()) return usageError(std::string(o) + " needs --dmpl");
   if (Status st = checkSizeOptionPairs(s); !st) return st;
   const bool batch = given(s, "--motion-dir") || given(s, "--out-dir");
   if (batch && (s.motion_dir.empty() || s.out_dir.empty()))

@@ -40,6 +40,9 @@ struct Settings {
   bool flat_hand_mean = false;  // --flat-hand-mean: fit hand poses are flat-hand relative
   int shard_index = 0, shard_count = 1;  // --shard I/N (batch): this run's share
   std::string manifest;     // --manifest FILE (batch): JSON-lines record of every motion
+  std::string dmpl;         // --dmpl FILE|DIR: DMPL soft-tissue basis (DIR: per motion gender, core/load/dmpl.h)
+  int dmpl_count = 0;       // --dmpl-count N: keep the first N directions (0 = all)
+  bool dmpl_regressed_joints = false;  // --dmpl-joints regressed: animate joint translations (published math)
 };
 
 // Parse argv through the option table, then check the rules between options.

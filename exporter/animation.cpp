@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/joint_names.h"
+#include "exporter/dmpl_targets.h"
 
 namespace smpl {
 namespace {
@@ -163,6 +164,9 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, 
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
+    if (const int d = static_cast<int>(asset.metadata.dmpl.targets.size()); d > 0)  // DMPL soft tissue (dmpl_targets.h)
+      if (Status st = applyDmplFrame(asset, dmplAt(motion, samples[i].frame, samples[i].t, d), local, up, i, &clip); !st)
+        return st.error();
     if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
   }
   for (auto& track : clip.rotations) makeContinuous(&track);

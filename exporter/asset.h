@@ -59,6 +59,22 @@ struct CorrectiveBasis {
   std::vector<double> offset;           // K
 };
 
+// DMPL soft-tissue target (exporter/dmpl_targets.h): weight = scale * c[direction] + offset,
+// c = the motion's `dmpls` row of the frame.
+struct DmplLayout {
+  int direction = 0;                    // column of the basis / of `dmpls`
+  std::string target;                   // morph target name dmpl_<i>
+  double scale = 1.0;
+  double offset = 0.0;
+};
+
+struct DmplInfo {
+  std::string basis;                    // basis file name ("" = no DMPL targets)
+  bool animate_joints = false;          // --dmpl-joints regressed: per-frame joint translations
+  std::vector<DmplLayout> targets;
+  Eigen::MatrixXd joint_directions;     // 3K x D: J_regressor * direction d, row 3k + c (not serialised)
+};
+
 struct AnimationClip {
   std::string name;
   double fps = 30.0;
@@ -66,6 +82,9 @@ struct AnimationClip {
   std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
   std::vector<Eigen::Vector3d> root_translation;    // T root node translations (model axes)
   Eigen::MatrixXf morph_weights;                    // T x (#morph targets), in target order
+  // [joint][frame] local translations of every joint (--dmpl-joints regressed); empty = rest_local
+  std::vector<std::vector<Eigen::Vector3d>> joint_translations;
+  double dmpl_joint_error = 0.0;                    // max vertex error (m) that betas-only joints cost (DMPL)
   MemoryCharge charge;                              // the arrays above, against the memory budget
 };
 
@@ -83,6 +102,7 @@ struct AssetMetadata {
   // Added after corrective_basis for the same reason (aggregate initialisers stay valid).
   std::string skin_weights = "truncated";      // "truncated" or "optimized" (export_skin.h)
   std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (pipeline.h)
+  DmplInfo dmpl{};                      // DMPL soft-tissue targets (empty without --dmpl); last, as above
 };
 
 struct Asset {

@@ -18,6 +18,7 @@
 #include "core/result.h"
 #include "exporter/animation.h"
 #include "exporter/asset.h"
+#include "exporter/dmpl_targets.h"
 #include "exporter/pipeline.h"
 
 namespace smpl {
@@ -44,7 +45,9 @@ CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, 
 // options.quantize_morphs, foldMorphScales; last validateAsset. Errors: those
 // of buildAsset, bakeAnimation (naming motions[i].context) and validateAsset;
 // one line each, no partial asset.
+// `dmpl` (optional): DMPL soft-tissue targets added after buildAsset, before
+// baking (dmpl_targets.h).
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
-                          const std::vector<MotionInput>& motions);
+                          const std::vector<MotionInput>& motions, const DmplInput* dmpl = nullptr);
 
 }  // namespace smpl

@@ -52,6 +52,26 @@ Json basisJson(const CorrectiveBasis& basis) {
   return o;
 }
 
+// "dmpl": {"basis": file name, "joints": "fixed"|"regressed",
+//          "targets": [{"direction": i, "target": "dmpl_<i>", "scale": s, "offset": o}, ...]}
+// weight = scale * dmpls[frame][direction] + offset (exporter/dmpl_targets.h).
+Json dmplJson(const DmplInfo& dmpl) {
+  Json o = Json::object();
+  o["basis"] = dmpl.basis;
+  o["joints"] = dmpl.animate_joints ? "regressed" : "fixed";
+  Json list = Json::array();
+  for (const DmplLayout& d : dmpl.targets) {
+    Json entry = Json::object();
+    entry["direction"] = d.direction;
+    entry["target"] = d.target;
+    entry["scale"] = d.scale;
+    entry["offset"] = d.offset;
+    list.push_back(std::move(entry));
+  }
+  o["targets"] = std::move(list);
+  return o;
+}
+
 Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
   Json names = Json::array();
   for (const MorphTarget& t : targets) names.push_back(t.name);
@@ -75,6 +95,7 @@ Json metadataObject(const Asset& asset) {
   o["corrective_encoding"] = m.corrective_encoding;
   o["correctives"] = correctivesJson(m.correctives);
   if (!m.corrective_basis.targets.empty()) o["corrective_basis"] = basisJson(m.corrective_basis);
+  if (!m.dmpl.targets.empty()) o["dmpl"] = dmplJson(m.dmpl);
   o["morph_targets"] = morphTargetNamesJson(asset.mesh.morph_targets);
   return o;
 }

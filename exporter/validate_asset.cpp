@@ -81,6 +81,11 @@ Status checkClip(const AnimationClip& clip) {
     for (int c = 0; c < 3; ++c)
       if (std::string p = problem(clip.root_translation[f][c], true); !p.empty())
         return makeError(what + " frame " + std::to_string(f) + " root translation " + p);
+  for (size_t j = 0; j < clip.joint_translations.size(); ++j)
+    for (size_t f = 0; f < clip.joint_translations[j].size(); ++f)
+      for (int c = 0; c < 3; ++c)
+        if (std::string p = problem(clip.joint_translations[j][f][c], true); !p.empty())
+          return makeError(what + " joint " + std::to_string(j) + " frame " + std::to_string(f) + " translation " + p);
   return checkRows(clip.morph_weights, what + " morph weights of frame", true);
 }
 
@@ -91,6 +96,9 @@ Status checkMetadata(const AssetMetadata& m) {
     for (double v : {c.scale, c.offset})
       if (std::string p = problem(v, false); !p.empty())
         return makeError("metadata corrective " + c.target + " scale/offset " + p);
+  for (const DmplLayout& d : m.dmpl.targets)
+    for (double v : {d.scale, d.offset})
+      if (std::string p = problem(v, false); !p.empty()) return makeError("metadata dmpl " + d.target + " scale/offset " + p);
   const CorrectiveBasis& b = m.corrective_basis;
   if (Status st = checkRows(b.projection, "metadata corrective basis matrix row", false); !st) return st;
   if (Status st = checkList(b.scale, "metadata corrective basis scale", false); !st) return st;

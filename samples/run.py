@@ -55,6 +55,11 @@ FILES = {
     "CMU/01": "formats/subject",
     "amass/walk_poses.npz": "motions/amass_smplh.npz",
     "amass/smpl_72.npz": "motions/smpl_72.npz",
+    "smplh/female/model.npz": "dmpl/amass/smplh/female/model.npz",
+    "dmpls/female/model.npz": "dmpl/amass/dmpls/female/model.npz",
+    "run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
+    "body_models": "dmpl/amass",
+    "amass_dmpl/run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
 }
 
 

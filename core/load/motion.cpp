@@ -162,6 +162,28 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
   return Status();
 }
 
+// AMASS `dmpls` (T,D): soft-tissue coefficients (core/load/dmpl.h). Needed
+// only with a DMPL basis, so a malformed array does not fail the load: the
+// problem is kept in m->dmpls_problem for the exporter to report when used.
+Status decodeDmpls(const ArrayDict& d, const std::string& path, Motion* m) {
+  const Array* a = find(d, "dmpls");
+  if (!a) return Status();
+  const int64_t t = static_cast<int64_t>(m->frames.size());
+  if (a->isString() || a->shape.size() != 2 || a->shape[0] != t || a->shape[1] < 1) {
+    m->dmpls_problem = path + ": 'dmpls' has shape " + shapeString(a->shape) + "; expected (" + std::to_string(t) +
+                       ",D) to match 'poses'";
+    return Status();
+  }
+  if (Status st = motion_detail::checkNumbers(*a, path, "dmpls"); !st) {
+    m->dmpls_problem = st.message();
+    return Status();
+  }
+  if (Status st = m->charge.add(static_cast<uint64_t>(a->size()) * sizeof(double), path, "dmpls"); !st) return st;
+  m->dmpls = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      a->data.data(), a->shape[0], a->shape[1]);
+  return Status();
+}
+
 Status decodeExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   const size_t t = m->frames.size();
   m->translation.assign(t, Eigen::Vector3d::Zero());
@@ -180,6 +202,7 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, Motion* m) {
     if (rows->averaged) m->notes.push_back(betasRowsNote(*rows));
   }
   if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty()) m->gender = gender->strings[0];
+  if (Status st = decodeDmpls(d, path, m); !st) return st;
   m->fps = 0.0;
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
     const Array* rate = find(d, key);
@@ -234,7 +257,7 @@ void settleFps(const MotionOptions& o, double fallback, const char* why, Motion*
 const std::vector<std::string>& motionKeys() {
   static const std::vector<std::string> keys = {
       "poses", "root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand", "trans", "betas",
-      "gender", "mocap_framerate", "mocap_frame_rate", "fps", "surface_model_type",
+      "gender", "dmpls", "mocap_framerate", "mocap_frame_rate", "fps", "surface_model_type",
       // SMPLCodec
       "smplVersion", "shapeParameters", "frameCount", "frameRate", "bodyTranslation", "bodyPose", "headPose",
       "leftHandPose", "rightHandPose", "expressionParameters", "globalOrient",

@@ -44,6 +44,9 @@ struct Motion {
   std::vector<Eigen::Vector3d> translation;  // T root translations in metres (zeros if absent)
   std::vector<double> betas;        // empty if the file has none
   std::string gender;               // "" if absent
+  Eigen::MatrixXd dmpls;            // T x D DMPL soft-tissue coefficients (AMASS `dmpls`); 0 x 0 if absent
+  std::string dmpls_problem;        // "<path>: 'dmpls' ..." when present but unusable (shape, NaN); the
+                                    // error of an export that needs them (core/load/dmpl.h)
   bool amass = false;               // AMASS-style file (Z-up world)
   PendingHands hands;               // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;   // for the user: what was assumed or averaged, one line each

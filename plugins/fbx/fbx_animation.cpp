@@ -123,6 +123,12 @@ void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
     addVectorCurves(ctx, prefix + "/T/0", "T", layer, ctx.joint_models[0], "Lcl Translation", times,
                     t);
   }
+  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // --dmpl-joints regressed
+    std::vector<Eigen::Vector3d> t(clip.joint_translations[k].size());
+    for (size_t i = 0; i < t.size(); ++i) t[i] = clip.joint_translations[k][i] * ctx.scale;
+    addVectorCurves(ctx, prefix + "/T/" + std::to_string(k), "T", layer, ctx.joint_models[k],
+                    "Lcl Translation", times, t);
+  }
   if (clip.morph_weights.size() > 0) addMorphCurves(ctx, clip, prefix, layer, times);
 }
 

@@ -402,6 +402,12 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node) {
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
     addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), 0, "translation");
   }
+  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // --dmpl-joints regressed
+    std::vector<float> xyz;
+    for (const Eigen::Vector3d& p : clip.joint_translations[k])
+      xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
+    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), int(k), "translation");
+  }
   if (clip.morph_weights.size() > 0) {  // T x 0 without morph targets: no channel
     const std::vector<float> w = rowMajor(clip.morph_weights);
     addChannel(anim, input, addFloats(b, w, TINYGLTF_TYPE_SCALAR, 0, false), mesh_node, "weights");
