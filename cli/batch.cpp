@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <mutex>
 #include <thread>
@@ -24,7 +24,8 @@ void describeOutput(const std::string& out, bool manifest, ManifestEntry* e) {
   e->output = out;
   std::error_code ec;
   e->bytes = static_cast<size_t>(fs::file_size(out, ec));
-  if (Result<std::string> digest = manifest ? sha256File(out) : Result<std::string>(std::string()); digest)
+  if (Result<std::string> digest = manifest ? sha256File(out) : Result<std::string>(std::string());
+      digest)
     e->sha256 = *digest;
 }
 
@@ -44,10 +45,11 @@ void printHeader(const Settings& s, const BatchPlan& plan) {
   for (const std::string& note : plan.notes) std::printf("note: %s\n", note.c_str());
   for (const std::string& error : plan.errors) std::fprintf(stderr, "%s\n", error.c_str());
   if (plan.listed == 0)
-    std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n", s.motion_dir.c_str());
+    std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n",
+                 s.motion_dir.c_str());
   else if (plan.outputs.empty() && !s.quiet)
-    std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index, s.shard_count, plan.listed,
-                s.motion_dir.c_str());
+    std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index,
+                s.shard_count, plan.listed, s.motion_dir.c_str());
 }
 
 }  // namespace
@@ -66,7 +68,9 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   auto worker = [&] {
     for (size_t i; (i = next++) < motions.size();) {
       const auto start = std::chrono::steady_clock::now();
-      auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+      auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      };
       const std::string& out = motions[i].out;
       ManifestEntry& entry = manifest[i];
       entry.input = motions[i].motion;
@@ -84,13 +88,16 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         entry.seconds = seconds();
         std::lock_guard<std::mutex> lock(print);
         ++summary.no_poses;
-        if (!s.quiet) std::printf("note: skipped %s: %s\n", entry.input.c_str(), entry.message.c_str());
+        if (!s.quiet)
+          std::printf("note: skipped %s: %s\n", entry.input.c_str(), entry.message.c_str());
         continue;
       }
-      Result<ModelPick> pick = models.forMotion(motions[i].motion);  // per motion: a folder picks by gender
+      Result<ModelPick> pick =
+          models.forMotion(motions[i].motion);  // per motion: a folder picks by gender
       const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
-      Result<ExportReport> r = !pick ? Result<ExportReport>(makeError(errorLine("loading", s.model, pick.message())))
-                                     : runExport(*pick->model, s, job);
+      Result<ExportReport> r =
+          !pick ? Result<ExportReport>(makeError(errorLine("loading", s.model, pick.message())))
+                : runExport(*pick->model, s, job);
       if (r) describeOutput(out, record, &entry);
       entry.status = r ? "converted" : "failed";
       entry.message = r ? "" : r.message();
@@ -103,17 +110,20 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
       }
       ++summary.converted;
       if (s.quiet) continue;
-      std::printf("%s: %d frames, %.2f MB, %.0f ms, model %s%s%s\n", out.c_str(), r->frames, r->bytes / 1e6,
-                  r->seconds * 1e3, pick->path.c_str(), pick->note.empty() ? "" : "; note: ", pick->note.c_str());
+      std::printf("%s: %d frames, %.2f MB, %.0f ms, model %s%s%s\n", out.c_str(), r->frames,
+                  r->bytes / 1e6, r->seconds * 1e3, pick->path.c_str(),
+                  pick->note.empty() ? "" : "; note: ", pick->note.c_str());
       for (const std::string& note : r->notes) std::printf("note: %s\n", note.c_str());
     }
   };
-  const unsigned threads = s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads =
+      s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
-  for (unsigned t = 0; t < std::min<size_t>(threads, std::max<size_t>(1, motions.size())); ++t) pool.emplace_back(worker);
+  for (unsigned t = 0; t < std::min<size_t>(threads, std::max<size_t>(1, motions.size())); ++t)
+    pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
-  std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n", summary.converted,
-              summary.skipped, summary.failed, summary.no_poses);
+  std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n",
+              summary.converted, summary.skipped, summary.failed, summary.no_poses);
   if (record)
     if (Status st = writeManifest(s.manifest, manifest); !st) {
       std::fprintf(stderr, "%s\n", errorLine("saving", s.manifest, st.message()).c_str());

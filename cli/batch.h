@@ -9,17 +9,17 @@
 // --manifest writes cli/manifest.h's JSON lines.
 #pragma once
 
-#include "core/body_model.h"
 #include "cli/batch_plan.h"
 #include "cli/model_source.h"
 #include "cli/settings.h"
+#include "core/body_model.h"
 
 namespace smpl {
 
 struct BatchSummary {
   int converted = 0, skipped = 0, failed = 0;  // skipped: up to date
-  int no_poses = 0;                             // skipped: no pose data
-  bool manifest_failed = false;                 // --manifest could not be written
+  int no_poses = 0;                            // skipped: no pose data
+  bool manifest_failed = false;                // --manifest could not be written
 };
 
 // Converts `plan` (from planBatch with the same settings); prints its notes

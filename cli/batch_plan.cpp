@@ -7,10 +7,10 @@
 #include <map>
 #include <set>
 
-#include "core/io/file_io.h"
 #include "cli/batch_shard.h"
 #include "cli/output_guard.h"
 #include "cli/producer.h"
+#include "core/io/file_io.h"
 #include "exporter/metadata_json.h"
 
 namespace smpl {
@@ -18,7 +18,8 @@ namespace fs = std::filesystem;
 namespace {
 
 bool isMotionName(const std::string& name) {
-  return (hasSuffix(name, ".npz") || hasSuffix(name, ".json") || hasSuffix(name, ".smpl") || hasSuffix(name, ".pkl")) &&
+  return (hasSuffix(name, ".npz") || hasSuffix(name, ".json") || hasSuffix(name, ".smpl") ||
+          hasSuffix(name, ".pkl")) &&
          !hasSuffix(name, ".smpl.json");
 }
 
@@ -27,8 +28,9 @@ Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* 
   std::error_code ec;
   const fs::file_status st = fs::status(dir, ec);
   if (ec || !fs::is_directory(st))
-    return makeError(errorLine("loading", dir, fs::exists(st) ? "not a directory (--motion-dir)"
-                                                              : "no such directory (--motion-dir)"),
+    return makeError(errorLine("loading", dir,
+                               fs::exists(st) ? "not a directory (--motion-dir)"
+                                              : "no such directory (--motion-dir)"),
                      ErrorKind::Load);
   std::vector<std::string> motions;
   auto it = fs::directory_iterator(dir, ec);
@@ -37,9 +39,12 @@ Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* 
     if (!isMotionName(it->path().filename().string())) continue;
     std::error_code entry_ec;
     const fs::file_status entry = it->status(entry_ec);  // follows symbolic links, once
-    if (entry_ec) plan->errors.push_back(errorLine("loading", path, "cannot read: " + entry_ec.message()));
-    else if (!fs::is_regular_file(entry)) plan->notes.push_back(path + ": not a regular file; skipped");
-    else motions.push_back(path);
+    if (entry_ec)
+      plan->errors.push_back(errorLine("loading", path, "cannot read: " + entry_ec.message()));
+    else if (!fs::is_regular_file(entry))
+      plan->notes.push_back(path + ": not a regular file; skipped");
+    else
+      motions.push_back(path);
   }
   if (ec) plan->errors.push_back(errorLine("loading", dir, "cannot list: " + ec.message()));
   std::sort(motions.begin(), motions.end());
@@ -73,14 +78,17 @@ Status checkCollisions(const std::vector<PlannedOutput>& outputs) {
   return Status();
 }
 
-Error usage(const std::string& message) { return makeError("Error in arguments: " + message, ErrorKind::Usage); }
+Error usage(const std::string& message) {
+  return makeError("Error in arguments: " + message, ErrorKind::Usage);
+}
 
 // --shard I/N: this run's share of the (sorted) motions.
 void keepShard(const Settings& s, BatchPlan* plan) {
   if (s.shard_count <= 1) return;
   std::vector<std::string> all;
   for (const PlannedOutput& p : plan->outputs) all.push_back(p.motion);
-  const std::vector<std::string> share = shardMotions(all, s.motion_dir, s.shard_index, s.shard_count);
+  const std::vector<std::string> share =
+      shardMotions(all, s.motion_dir, s.shard_index, s.shard_count);
   const std::set<std::string> keep(share.begin(), share.end());
   std::vector<PlannedOutput> kept;
   for (const PlannedOutput& p : plan->outputs)
@@ -111,9 +119,11 @@ Result<BatchPlan> planBatch(const Settings& s) {
     }
     names.push_back(baseName(p.out) + ".smpl.json");
   }
-  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st) return usage(st.message());
+  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st)
+    return usage(st.message());
   Result<ContentHash> base = producerBase(s);
-  if (!base) return makeError("Error loading " + base.message(), ErrorKind::Load);  // names the input file
+  if (!base)
+    return makeError("Error loading " + base.message(), ErrorKind::Load);  // names the input file
   removeStaleTemps(s.out_dir, names);
   for (PlannedOutput& p : plan.outputs) {
     p.producer_hash = producerHash(*base, {p.motion});

@@ -36,10 +36,10 @@ struct PlannedOutput {
 };
 
 struct BatchPlan {
-  std::vector<PlannedOutput> outputs;     // sorted by motion path
-  std::vector<std::string> errors;        // "Error loading DIR/x.npz: ..." per unreadable entry
-  std::vector<std::string> notes;         // "DIR/x.npz: not a regular file; skipped"
-  size_t listed = 0;                      // motions in DIR before --shard kept this run's share
+  std::vector<PlannedOutput> outputs;  // sorted by motion path
+  std::vector<std::string> errors;     // "Error loading DIR/x.npz: ..." per unreadable entry
+  std::vector<std::string> notes;      // "DIR/x.npz: not a regular file; skipped"
+  size_t listed = 0;                   // motions in DIR before --shard kept this run's share
 };
 
 // The plan, or an error (one line for the user; its kind gives the exit

@@ -6,12 +6,17 @@
 namespace smpl {
 namespace fs = std::filesystem;
 
-std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root, int index, int count) {
-  auto key = [&](const std::string& p) { return fs::path(p).lexically_relative(root).generic_string(); };
-  std::sort(files.begin(), files.end(), [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
+std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root,
+                                      int index, int count) {
+  auto key = [&](const std::string& p) {
+    return fs::path(p).lexically_relative(root).generic_string();
+  };
+  std::sort(files.begin(), files.end(),
+            [&](const std::string& a, const std::string& b) { return key(a) < key(b); });
   std::vector<std::string> share;
   for (size_t p = 0; p < files.size(); ++p)
-    if (count <= 1 || static_cast<int>(p % static_cast<size_t>(count)) == index) share.push_back(files[p]);
+    if (count <= 1 || static_cast<int>(p % static_cast<size_t>(count)) == index)
+      share.push_back(files[p]);
   return share;
 }
 

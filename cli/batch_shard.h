@@ -16,6 +16,7 @@ namespace smpl {
 
 // Share `index` of `count` (0 <= index < count) of `files` (paths under
 // `root`), in the sorted order above.
-std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root, int index, int count);
+std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root,
+                                      int index, int count);
 
 }  // namespace smpl

@@ -12,7 +12,8 @@ namespace smpl {
 namespace {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
@@ -41,10 +42,12 @@ Result<std::vector<double>> readBetasFile(const std::string& path, std::string* 
   nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded()) return makeError(path + ": not valid JSON");
   if (j.is_object() && j.contains("betas")) j = j["betas"];
-  if (!j.is_array()) return makeError(path + ": expected a JSON array of numbers or {\"betas\": [...]}");
+  if (!j.is_array())
+    return makeError(path + ": expected a JSON array of numbers or {\"betas\": [...]}");
   std::vector<double> betas;
   for (const auto& v : j) {
-    if (!v.is_number() || !std::isfinite(v.get<double>())) return makeError(path + ": 'betas' holds a non-number");
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      return makeError(path + ": 'betas' holds a non-number");
     betas.push_back(v.get<double>());
   }
   return betas;

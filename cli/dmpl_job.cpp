@@ -14,11 +14,13 @@ Error failWith(const std::string& path, const std::string& message) {
 }
 
 // The basis file: --dmpl FILE, or from --dmpl DIR by the first motion's gender.
-Result<std::string> dmplPath(const Settings& s, const std::vector<Motion>& motions, ExportReport* report) {
+Result<std::string> dmplPath(const Settings& s, const std::vector<Motion>& motions,
+                             ExportReport* report) {
   std::error_code ec;
   if (!std::filesystem::is_directory(s.dmpl, ec)) return s.dmpl;
   std::string note;
-  Result<std::string> found = findDmplBasis(s.dmpl, motions.empty() ? "" : motions[0].gender, &note);
+  Result<std::string> found =
+      findDmplBasis(s.dmpl, motions.empty() ? "" : motions[0].gender, &note);
   if (found && !note.empty()) report->notes.push_back(note);
   return found;
 }
@@ -26,9 +28,11 @@ Result<std::string> dmplPath(const Settings& s, const std::vector<Motion>& motio
 void noteIgnoredDmpls(const std::vector<Motion>& motions, ExportReport* report) {
   for (const Motion& m : motions)
     if (m.dmpls.rows() > 0 && m.dmpls.cwiseAbs().maxCoeff() > 0)
-      report->notes.push_back(m.name + ": the motion has DMPL soft-tissue coefficients 'dmpls' (" +
-                              std::to_string(m.dmpls.cols()) + " per frame), not baked: add --dmpl FILE|DIR "
-                              "(the DMPL basis, e.g. AMASS dmpls/<gender>/model.npz) to bake them as morph targets");
+      report->notes.push_back(
+          m.name + ": the motion has DMPL soft-tissue coefficients 'dmpls' (" +
+          std::to_string(m.dmpls.cols()) +
+          " per frame), not baked: add --dmpl FILE|DIR "
+          "(the DMPL basis, e.g. AMASS dmpls/<gender>/model.npz) to bake them as morph targets");
 }
 
 }  // namespace
@@ -47,16 +51,20 @@ Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, cons
   const int total = static_cast<int>(basis->directions.cols());
   if (s.dmpl_count > total)
     return failWith(*path, "--dmpl-count " + std::to_string(s.dmpl_count) + ": the basis has " +
-                                        std::to_string(total) + " directions");
+                               std::to_string(total) + " directions");
   std::vector<const Eigen::MatrixXd*> coefficients;
   for (size_t i = 0; i < motions.size(); ++i) {
     if (Status st = checkDmplCoefficients(motions[i], job.motions[i], total, *path); !st)
       return failWith(job.motions[i], st.message());
-    if (motions[i].dmpls.rows() > 0) coefficients.push_back(&motions[i].dmpls);
-    else report->notes.push_back(motions[i].name + ": no 'dmpls' in the motion; its DMPL targets stay at rest");
+    if (motions[i].dmpls.rows() > 0)
+      coefficients.push_back(&motions[i].dmpls);
+    else
+      report->notes.push_back(motions[i].name +
+                              ": no 'dmpls' in the motion; its DMPL targets stay at rest");
   }
   if (!motions.empty() && coefficients.empty()) {
-    report->notes.push_back("--dmpl: no motion has 'dmpls' (DMPL coefficients): no DMPL targets exported");
+    report->notes.push_back(
+        "--dmpl: no motion has 'dmpls' (DMPL coefficients): no DMPL targets exported");
     return out;
   }
   const int count = s.dmpl_count > 0 ? s.dmpl_count : total;
@@ -71,10 +79,13 @@ void noteDmplJointCost(const Asset& asset, ExportReport* report) {
   for (const AnimationClip& clip : asset.animations) {
     char text[300];
     if (asset.metadata.dmpl.animate_joints)
-      std::snprintf(text, sizeof text, "%s: DMPL joints regressed per frame (published math); fixed joints would cost "
-                    "up to %.3f mm", clip.name.c_str(), clip.dmpl_joint_error * 1000);
+      std::snprintf(text, sizeof text,
+                    "%s: DMPL joints regressed per frame (published math); fixed joints would cost "
+                    "up to %.3f mm",
+                    clip.name.c_str(), clip.dmpl_joint_error * 1000);
     else
-      std::snprintf(text, sizeof text, "%s: DMPL with the betas-only skeleton (fixed joints) costs up to %.3f mm of "
+      std::snprintf(text, sizeof text,
+                    "%s: DMPL with the betas-only skeleton (fixed joints) costs up to %.3f mm of "
                     "vertex error against the published math (--dmpl-joints regressed removes it)",
                     clip.name.c_str(), clip.dmpl_joint_error * 1000);
     report->notes.push_back(text);

@@ -10,10 +10,14 @@ enum ExitCode { kExitOk = 0, kExitUsage = 1, kExitLoad = 2, kExitExport = 3, kEx
 // Usage -> 1, Load -> 2, Export (and an error no stage classified) -> 3, Write -> 4.
 inline ExitCode exitCodeFor(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::Usage: return kExitUsage;
-    case ErrorKind::Load: return kExitLoad;
-    case ErrorKind::Write: return kExitSave;
-    default: return kExitExport;
+    case ErrorKind::Usage:
+      return kExitUsage;
+    case ErrorKind::Load:
+      return kExitLoad;
+    case ErrorKind::Write:
+      return kExitSave;
+    default:
+      return kExitExport;
   }
 }
 

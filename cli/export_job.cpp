@@ -1,18 +1,19 @@
 #include "cli/export_job.h"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <new>
-#include <unistd.h>
 
+#include "cli/dmpl_job.h"
+#include "cli/output_guard.h"
+#include "cli/producer.h"
 #include "core/io/file_io.h"
 #include "core/io/printable.h"
 #include "core/load/motion.h"
 #include "core/load/motion_fit.h"
-#include "cli/dmpl_job.h"
-#include "cli/output_guard.h"
-#include "cli/producer.h"
 #include "exporter/animation.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
@@ -22,7 +23,8 @@
 namespace smpl {
 namespace {
 
-Error fail(ErrorKind kind, const std::string& verb, const std::string& path, const std::string& message) {
+Error fail(ErrorKind kind, const std::string& verb, const std::string& path,
+           const std::string& message) {
   return makeError(errorLine(verb, path, message), kind);
 }
 
@@ -42,7 +44,8 @@ void drawProgress(const std::string& name, double fraction) {
   if (fraction >= 1.0) std::fprintf(stderr, "\n");
 }
 
-Result<std::vector<Motion>> loadMotions(const BodyModel& model, const Settings& s, const ExportJob& job) {
+Result<std::vector<Motion>> loadMotions(const BodyModel& model, const Settings& s,
+                                        const ExportJob& job) {
   std::vector<Motion> motions;
   MotionOptions options;
   options.source_fps = s.source_fps;
@@ -63,7 +66,8 @@ Status betasFromMotion(const BodyModel& model, const Settings& s, const ExportJo
                        const std::vector<Motion>& motions, ExportOptions* o) {
   if (motions.empty() || motions[0].betas.empty()) {
     if (s.betas_from_motion && !job.motions.empty())
-      return fail(ErrorKind::Load, "loading", job.motions[0], "no betas in the motion (--betas-from-motion)");
+      return fail(ErrorKind::Load, "loading", job.motions[0],
+                  "no betas in the motion (--betas-from-motion)");
     return Status();
   }
   const size_t n = std::min(motions[0].betas.size(), static_cast<size_t>(model.numBetas()));
@@ -78,8 +82,9 @@ AnimationOptions framesFor(const AnimationOptions& animation, const Motion& m, s
   const int total = static_cast<int>(m.frames.size());
   if (frames.end_frame > total && frames.first_frame < total) {
     if (note)
-      *note = m.name + ": --frames " + std::to_string(frames.first_frame) + ":" + std::to_string(frames.end_frame) +
-              " ends after the motion's " + std::to_string(total) + " frames; baked frames " +
+      *note = m.name + ": --frames " + std::to_string(frames.first_frame) + ":" +
+              std::to_string(frames.end_frame) + " ends after the motion's " +
+              std::to_string(total) + " frames; baked frames " +
               std::to_string(frames.first_frame) + ":" + std::to_string(total);
     frames.end_frame = total;
   }
@@ -88,10 +93,12 @@ AnimationOptions framesFor(const AnimationOptions& animation, const Motion& m, s
 
 // What exportAsset bakes: each motion with the job's frame range (clamped per
 // motion) and, on a terminal, a progress bar.
-std::vector<MotionInput> motionInputs(const Settings& s, const ExportJob& job, const std::vector<Motion>& motions) {
+std::vector<MotionInput> motionInputs(const Settings& s, const ExportJob& job,
+                                      const std::vector<Motion>& motions) {
   std::vector<MotionInput> inputs;
   for (size_t i = 0; i < motions.size(); ++i) {
-    MotionInput in{&motions[i], job.motions[i], framesFor(s.animation, motions[i], nullptr), nullptr};
+    MotionInput in{&motions[i], job.motions[i], framesFor(s.animation, motions[i], nullptr),
+                   nullptr};
     if (job.progress) in.progress = [name = motions[i].name](double f) { drawProgress(name, f); };
     inputs.push_back(std::move(in));
   }
@@ -99,12 +106,13 @@ std::vector<MotionInput> motionInputs(const Settings& s, const ExportJob& job, c
 }
 
 // The motions' notes and frame counts for the summary.
-void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& job, const std::vector<Motion>& motions,
-                   const Asset& asset, ExportReport* report) {
+void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& job,
+                   const std::vector<Motion>& motions, const Asset& asset, ExportReport* report) {
   for (size_t i = 0; i < motions.size(); ++i) {
     const Motion& m = motions[i];
     for (const std::string& note : m.notes)  // a betas note matters only where those betas are used
-      if (note.rfind("betas:", 0) != 0 || (!s.betas_given && i == 0)) report->notes.push_back(m.name + ": " + note);
+      if (note.rfind("betas:", 0) != 0 || (!s.betas_given && i == 0))
+        report->notes.push_back(m.name + ": " + note);
     std::string frames_note;  // --frames clamped to this motion's length
     framesFor(s.animation, m, &frames_note);
     if (!frames_note.empty()) report->notes.push_back(frames_note);
@@ -113,16 +121,18 @@ void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& j
       report->notes.push_back(m.name + ": " + std::to_string(mapping->dropped.size()) + " " +
                               modelKindName(m.layout) + " joints not in the model were dropped (" +
                               mapping->dropped.front() + ", ...)");
-    if (i < asset.animations.size()) report->frames += static_cast<int>(asset.animations[i].times.size());
+    if (i < asset.animations.size())
+      report->frames += static_cast<int>(asset.animations[i].times.size());
   }
 }
 
 // The output and its sidecar go together; the sidecar (what produced the
 // output) is renamed last, so it is the commit record (file_io.h).
-Status writeOutputs(const std::string& out, const Writer::Files& files, const std::string& buffer_path,
-                    const std::string& sidecar) {
+Status writeOutputs(const std::string& out, const Writer::Files& files,
+                    const std::string& buffer_path, const std::string& sidecar) {
   std::vector<FileContent> contents = {FileContent{out, files.bytes.data(), files.bytes.size()}};
-  if (!buffer_path.empty()) contents.push_back(FileContent{buffer_path, files.buffer.data(), files.buffer.size()});
+  if (!buffer_path.empty())
+    contents.push_back(FileContent{buffer_path, files.buffer.data(), files.buffer.size()});
   contents.push_back(FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()});
   return writeFilesTogether(contents);
 }
@@ -136,15 +146,18 @@ Result<std::string> producerHashFor(const Settings& s, const ExportJob& job) {
 
 }  // namespace
 
-std::string errorLine(const std::string& verb, const std::string& path, const std::string& message) {
+std::string errorLine(const std::string& verb, const std::string& path,
+                      const std::string& message) {
   // Paths and messages may carry bytes from files or the command line: one printable line.
-  if (message.compare(0, path.size() + 1, path + ":") == 0) return printable("Error " + verb + " " + message, 4096);
+  if (message.compare(0, path.size() + 1, path + ":") == 0)
+    return printable("Error " + verb + " " + message, 4096);
   return printable("Error " + verb + " " + path + ": " + message, 4096);
 }
 
 namespace {
 
-Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& s, const ExportJob& job) {
+Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& s,
+                                        const ExportJob& job) {
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(job.out);
   if (!writer) return fail(ErrorKind::Usage, "in", "arguments", "no writer for " + job.out);
@@ -157,7 +170,8 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   if (!s.betas_given)
     if (Status st = betasFromMotion(model, s, job, *motions, &options); !st) return st.error();
   // Baked weights must survive importers that clamp (exportAsset resolves Auto the same way).
-  options.encoding = resolveEncoding(options.encoding, motions->size(), options.corrective_basis > 0);
+  options.encoding =
+      resolveEncoding(options.encoding, motions->size(), options.corrective_basis > 0);
   options.quantize_morphs = s.writer_options.quantize_morphs;
   // The finished asset: baked, quantisation folded, validated; the writer only translates it.
   ExportReport report;
@@ -168,7 +182,8 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   reportMotions(model, s, job, *motions, *asset, &report);
   noteDmplJointCost(*asset, &report);
   if (s.writer_options.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
-    report.notes.push_back("--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
+    report.notes.push_back(
+        "--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
   Result<std::string> producer = producerHashFor(s, job);
   if (!producer) return fail(ErrorKind::Load, "loading", s.model, producer.message());
   WriterOptions writer_options = s.writer_options;
@@ -196,9 +211,11 @@ Result<ExportReport> runExport(const BodyModel& model, const Settings& s, const 
   try {
     return runExportUnguarded(model, s, job);
   } catch (const std::bad_alloc&) {
-    return fail(ErrorKind::Export, "exporting", job.out, "out of memory (set a lower --memory-limit)");
+    return fail(ErrorKind::Export, "exporting", job.out,
+                "out of memory (set a lower --memory-limit)");
   } catch (const std::exception& e) {
-    return fail(ErrorKind::Export, "exporting", job.out, std::string("internal error: ") + e.what());
+    return fail(ErrorKind::Export, "exporting", job.out,
+                std::string("internal error: ") + e.what());
   }
 }
 

@@ -5,17 +5,17 @@
 #include <string>
 #include <vector>
 
-#include "core/body_model.h"
-#include "core/result.h"
 #include "cli/exit_code.h"
 #include "cli/settings.h"
+#include "core/body_model.h"
+#include "core/result.h"
 
 namespace smpl {
 
 struct ExportJob {
   std::string out;
   std::vector<std::string> motions;
-  bool progress = false;  // draw a progress bar on stderr while baking
+  bool progress = false;      // draw a progress bar on stderr while baking
   std::string producer_hash;  // recorded in the sidecar; "" = computed here (producer.h)
 };
 
@@ -23,7 +23,7 @@ struct ExportReport {
   size_t bytes = 0;
   double seconds = 0.0;
   int vertices = 0, joints = 0, morph_targets = 0, max_influences = 0;
-  int frames = 0;  // total animation frames written
+  int frames = 0;                  // total animation frames written
   std::vector<std::string> notes;  // e.g. motion joints dropped by the mapping
   ExportOptions options;           // as used (betas may come from the motion)
 };
@@ -40,6 +40,7 @@ std::string errorLine(const std::string& verb, const std::string& path, const st
 // every output: job.producer_hash set); after building, the asset must pass validateAsset (exit 3,
 // nothing written); the output and its sidecar are committed together
 // (writeFilesTogether, sidecar last): both new or both as before.
-Result<ExportReport> runExport(const BodyModel& model, const Settings& settings, const ExportJob& job);
+Result<ExportReport> runExport(const BodyModel& model, const Settings& settings,
+                               const ExportJob& job);
 
 }  // namespace smpl

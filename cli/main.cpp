@@ -44,15 +44,19 @@ int report(const std::string& line, int code) {
 }
 
 void printSummary(const std::string& out, const ExportReport& r, const PruningError& err) {
-  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n", printable(out).c_str(), r.vertices,
-              r.joints, r.morph_targets, r.bytes / 1e6, r.seconds * 1e3);
+  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n",
+              printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
+              r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
   for (const std::string& note : r.notes) std::printf("note: %s\n", printable(note, 4096).c_str());
-  std::printf("skinning error of %d influences vs all (%d held-out random poses): %s mean %.3f mm, max %.3f mm",
-              r.max_influences, err.poses, skinWeightMethodName(r.options.skin_weights), err.mean_m * 1e3,
-              err.max_m * 1e3);
+  std::printf(
+      "skinning error of %d influences vs all (%d held-out random poses): %s mean %.3f mm, max "
+      "%.3f mm",
+      r.max_influences, err.poses, skinWeightMethodName(r.options.skin_weights), err.mean_m * 1e3,
+      err.max_m * 1e3);
   if (r.options.skin_weights != SkinWeightMethod::Truncated)
-    std::printf("; truncated mean %.3f mm, max %.3f mm", err.truncated.mean_m * 1e3, err.truncated.max_m * 1e3);
+    std::printf("; truncated mean %.3f mm, max %.3f mm", err.truncated.mean_m * 1e3,
+                err.truncated.max_m * 1e3);
   std::printf("\n");
 }
 
@@ -67,7 +71,8 @@ int run(int argc, char** argv, Stage* stage) {
   // Before any work: outputs must not be inputs; a batch is planned (motion
   // listing, name collisions, up-to-date decisions) and refused as a whole.
   Result<BatchPlan> plan = BatchPlan();
-  if (!s.motion_dir.empty()) plan = planBatch(s);
+  if (!s.motion_dir.empty())
+    plan = planBatch(s);
   else if (Status st = checkOutputsAreNotInputs(outputsOf(s, s.out), runInputs(s, s.motions)); !st)
     plan = makeError("Error in arguments: " + st.message(), ErrorKind::Usage);
   if (!plan) return report(plan.message(), exitCodeFor(plan.kind()));
@@ -80,7 +85,8 @@ int run(int argc, char** argv, Stage* stage) {
       if (Status st = checkCoefficients(*betas, s.betas_file, "'betas'"); !st) betas = st.error();
     }
     if (!betas) return report(errorLine("loading", s.betas_file, betas.message()), kExitLoad);
-    if (!note.empty() && !s.quiet) std::printf("note: %s: %s\n", printable(s.betas_file).c_str(), note.c_str());
+    if (!note.empty() && !s.quiet)
+      std::printf("note: %s: %s\n", printable(s.betas_file).c_str(), note.c_str());
     s.export_options.betas = *betas;
   }
   stage->set("loading", s.model, kExitLoad);
@@ -97,10 +103,12 @@ int run(int argc, char** argv, Stage* stage) {
   }
   Result<ModelPick> pick = models.forMotion(s.motions.empty() ? "" : s.motions[0]);
   if (!pick) return report(errorLine("loading", s.model, pick.message()), kExitLoad);
-  if (!pick->note.empty() && !s.quiet) std::printf("note: %s\n", printable(pick->note, 4096).c_str());
+  if (!pick->note.empty() && !s.quiet)
+    std::printf("note: %s\n", printable(pick->note, 4096).c_str());
   const BodyModel& loaded = *pick->model;
   stage->set("exporting", s.out, kExitExport);
-  Result<ExportReport> result = runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""});
+  Result<ExportReport> result =
+      runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""});
   if (!result) return report(result.message(), exitCodeFor(result.kind()));
   if (!s.quiet) {
     Result<PruningError> err = measurePruningError(loaded, result->options, s.error_poses);
@@ -123,10 +131,14 @@ int main(int argc, char** argv) {
                       formatBytes(memoryLimit()) + "; set a lower limit)",
                   stage.code);
   } catch (const std::filesystem::filesystem_error& e) {
-    return report("Error " + std::string(stage.verb) + " " + stage.path + ": " + e.what(), stage.code);
+    return report("Error " + std::string(stage.verb) + " " + stage.path + ": " + e.what(),
+                  stage.code);
   } catch (const std::exception& e) {
-    return report("Error " + std::string(stage.verb) + " " + stage.path + ": internal error: " + e.what(), stage.code);
+    return report(
+        "Error " + std::string(stage.verb) + " " + stage.path + ": internal error: " + e.what(),
+        stage.code);
   } catch (...) {
-    return report("Error " + std::string(stage.verb) + " " + stage.path + ": internal error", stage.code);
+    return report("Error " + std::string(stage.verb) + " " + stage.path + ": internal error",
+                  stage.code);
   }
 }

@@ -22,7 +22,7 @@ struct ManifestEntry {
   std::string status;         // converted, up-to-date, skipped, failed
   std::string message;        // failed: the error; skipped: why
   size_t bytes = 0;
-  std::string sha256;         // "" when no output
+  std::string sha256;  // "" when no output
   double seconds = 0.0;
 };
 

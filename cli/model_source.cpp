@@ -37,9 +37,9 @@ Result<MotionHint> motionHint(const std::string& path) {
 
 // Bytes the model's arrays occupy, held against the budget while the model is cached.
 uint64_t modelBytes(const BodyModel& m) {
-  const uint64_t doubles = m.v_template.size() + m.shapedirs.size() + m.exprdirs.size() + m.posedirs.size() +
-                           m.weights.size() + m.hands_components_l.size() + m.hands_components_r.size() +
-                           m.texcoords.size();
+  const uint64_t doubles = m.v_template.size() + m.shapedirs.size() + m.exprdirs.size() +
+                           m.posedirs.size() + m.weights.size() + m.hands_components_l.size() +
+                           m.hands_components_r.size() + m.texcoords.size();
   return doubles * sizeof(double) + m.j_regressor.nonZeros() * (sizeof(double) + sizeof(int)) +
          (m.faces.size() + m.texcoord_faces.size()) * sizeof(int);
 }
@@ -52,7 +52,8 @@ bool ModelSource::isFolder() const {
 }
 
 Result<ModelPick> ModelSource::load(const std::string& path, const std::string& name) {
-  std::lock_guard<std::mutex> lock(mutex_);  // one load at a time; cached models are shared read-only
+  std::lock_guard<std::mutex> lock(
+      mutex_);  // one load at a time; cached models are shared read-only
   auto it = cache_.find(path);
   if (it == cache_.end()) {
     Result<BodyModel> m = path == "builtin" ? Result<BodyModel>(demoBody()) : loadModel(path);
@@ -80,7 +81,8 @@ Result<ModelPick> ModelSource::forMotion(const std::string& motion_path) {
   }
   Result<ModelFileChoice> choice = chooseModelFile(listing_, hint.kind, hint.gender, option_);
   if (!choice) return choice.error();
-  Result<ModelPick> pick = load((std::filesystem::path(option_) / choice->path).string(), choice->path);
+  Result<ModelPick> pick =
+      load((std::filesystem::path(option_) / choice->path).string(), choice->path);
   if (pick) pick->note = choice->note;
   return pick;
 }

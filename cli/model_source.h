@@ -21,7 +21,7 @@ namespace smpl {
 struct ModelPick {
   const BodyModel* model = nullptr;  // owned by the ModelSource
   std::string path;                  // the model file used (for summaries)
-  std::string note;                  // e.g. "no female SMPL-X model in DIR; using SMPLX_NEUTRAL.npz"
+  std::string note;  // e.g. "no female SMPL-X model in DIR; using SMPLX_NEUTRAL.npz"
 };
 
 class ModelSource {

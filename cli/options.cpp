@@ -25,7 +25,8 @@ Result<double> parseNumber(const std::string& text, const std::string& option) {
 
 Result<int> parseInt(const std::string& text, const std::string& option) {
   Result<double> v = parseNumber(text, option);
-  if (!v || *v != std::floor(*v) || std::abs(*v) > 1e6) return usageError(option + ": '" + text + "' is not an integer");
+  if (!v || *v != std::floor(*v) || std::abs(*v) > 1e6)
+    return usageError(option + ": '" + text + "' is not an integer");
   return static_cast<int>(*v);
 }
 
@@ -41,17 +42,22 @@ Result<int> choice(const std::string& value, const char* option, std::vector<con
   std::string expected;
   for (size_t i = 0; i < choices.size(); ++i) {
     if (value == choices[i]) return static_cast<int>(i);
-    expected += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string("'") + choices[i] + "'";
+    expected += (i == 0                    ? ""
+                 : i + 1 == choices.size() ? " or "
+                                           : ", ") +
+                std::string("'") + choices[i] + "'";
   }
   return usageError(std::string(option) + ": expected " + expected + ", got '" + value + "'");
 }
 
-Result<double> rate(const std::string& value, const char* option, double lo, double hi, const char* lo_bracket) {
+Result<double> rate(const std::string& value, const char* option, double lo, double hi,
+                    const char* lo_bracket) {
   Result<double> v = parseNumber(value, option);
   if (!v || *v < lo || *v > hi || (*lo_bracket == '(' && *v == lo)) {
     std::ostringstream range;
     range << lo_bracket << lo << ", " << hi << "]";
-    return usageError(std::string(option) + ": expected a rate in " + range.str() + ", got '" + value + "'");
+    return usageError(std::string(option) + ": expected a rate in " + range.str() + ", got '" +
+                      value + "'");
   }
   return *v;
 }
@@ -61,7 +67,8 @@ Result<std::vector<double>> parseList(const std::string& text, const std::string
   size_t start = 0;
   while (start <= text.size()) {
     size_t comma = text.find(',', start);
-    Result<double> v = parseNumber(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option);
+    Result<double> v = parseNumber(
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option);
     if (!v) return v.error();
     values.push_back(*v);
     if (comma == std::string::npos) break;
@@ -83,7 +90,8 @@ Status parseFrames(const std::string& value, AnimationOptions* a) {
   }
   if (!end.empty()) {
     Result<int> v = parseInt(end, "--frames");
-    if (!v || *v <= a->first_frame) return usageError("--frames: end must be after start in '" + value + "'");
+    if (!v || *v <= a->first_frame)
+      return usageError("--frames: end must be after start in '" + value + "'");
     a->end_frame = *v;
   }
   return Status();
@@ -107,7 +115,8 @@ using V = const std::string&;
 const std::vector<OptionSpec> kOptions = {
     {"--model", nullptr, "PATH|DIR|builtin", Applies::Any, "",
      "model file (.npz or .pkl from the model's authors); a folder of released model files (picked "
-     "per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz, AMASS smplh/male/model.npz, "
+     "per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz, AMASS "
+     "smplh/male/model.npz, "
      "...); or the built-in demo body",
      [](V v, S* s) { return s->model = v, Status(); }},
     {"--out", nullptr, "FILE", Applies::Single, nullptr,
@@ -131,27 +140,35 @@ const std::vector<OptionSpec> kOptions = {
        return s->export_options.expression = *list, Status();
      }},
     {"--max-influences", nullptr, "N|all", Applies::Any, nullptr,
-     "skin influences per vertex, 1..K (the model's joints) or all (default 4); glTF writes ceil(N/4) "
-     "JOINTS_n/WEIGHTS_n sets (engines that read one set: keep 4), FBX has no limit; all: as many as "
+     "skin influences per vertex, 1..K (the model's joints) or all (default 4); glTF writes "
+     "ceil(N/4) "
+     "JOINTS_n/WEIGHTS_n sets (engines that read one set: keep 4), FBX has no limit; all: as many "
+     "as "
      "the model's vertices use",
      [](V v, S* s) {
        if (v == "all") return s->export_options.max_influences = kAllInfluences, Status();
        Result<int> n = parseInt(v, "--max-influences");
        if (!n) return Status(n.error());
-       if (*n < 1) return Status(usageError("--max-influences: expected a count >= 1 or 'all', got '" + v + "'"));
+       if (*n < 1)
+         return Status(
+             usageError("--max-influences: expected a count >= 1 or 'all', got '" + v + "'"));
        return s->export_options.max_influences = *n, Status();
      }},
     {"--skin-weights", nullptr, "truncated|optimized", Applies::Any, nullptr,
-     "truncated: the N largest weights, renormalised; optimized (default): the same or greedily chosen "
-     "joints with weights fitted to the unpruned model over 48 training poses (lower error on held-out "
+     "truncated: the N largest weights, renormalised; optimized (default): the same or greedily "
+     "chosen "
+     "joints with weights fitted to the unpruned model over 48 training poses (lower error on "
+     "held-out "
      "poses; the summary shows both)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--skin-weights", {"truncated", "optimized"});
        if (!c) return Status(c.error());
-       return s->export_options.skin_weights = *c == 0 ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized,
+       return s->export_options.skin_weights =
+                  *c == 0 ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized,
               Status();
      }},
-    {"--correctives", nullptr, "all|none", Applies::Any, nullptr, "pose-corrective morph targets (default all)",
+    {"--correctives", nullptr, "all|none", Applies::Any, nullptr,
+     "pose-corrective morph targets (default all)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--correctives", {"all", "none"});
        if (!c) return Status(c.error());
@@ -161,25 +178,32 @@ const std::vector<OptionSpec> kOptions = {
      "signed: weight = pose feature f, in [-2, 1] (default without --motion);\n"
      "unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1], relies on the file's "
      "default weights at rest;\n"
-     "split (default with --motion; unit with --corrective-basis): rectified targets (diagonal -2P with "
-     "weight -f/2; off-diagonal _pos/_neg with max(f,0), max(-f,0)), in [0, 1] and exact with every "
+     "split (default with --motion; unit with --corrective-basis): rectified targets (diagonal -2P "
+     "with "
+     "weight -f/2; off-diagonal _pos/_neg with max(f,0), max(-f,0)), in [0, 1] and exact with "
+     "every "
      "weight at zero; the mapping is in the metadata",
      [](V v, S* s) {
        Result<int> c = choice(v, "--corrective-weights", {"signed", "unit", "split"});
        if (!c) return Status(c.error());
-       const CorrectiveEncoding e[] = {CorrectiveEncoding::Signed, CorrectiveEncoding::Unit, CorrectiveEncoding::Split};
+       const CorrectiveEncoding e[] = {CorrectiveEncoding::Signed, CorrectiveEncoding::Unit,
+                                       CorrectiveEncoding::Split};
        return s->export_options.encoding = e[*c], Status();
      }},
     {"--corrective-basis", nullptr, "K", Applies::Any, nullptr,
-     "replace the corrective targets by K principal components of posedirs (weights = C f; C in the "
+     "replace the corrective targets by K principal components of posedirs (weights = C f; C in "
+     "the "
      "metadata; runtime scripts apply it)",
-     [](V v, S* s) { return intInto(v, "--corrective-basis", &s->export_options.corrective_basis); }},
+     [](V v, S* s) {
+       return intInto(v, "--corrective-basis", &s->export_options.corrective_basis);
+     }},
     {"--corrective-epsilon", nullptr, "M", Applies::Gltf, nullptr,
      "glTF: drop morph deltas up to M metres, write sparse accessors",
      [](V v, S* s) {
        Result<double> m = parseNumber(v, "--corrective-epsilon");
        if (!m || *m < 0 || *m > 0.01)
-         return Status(usageError("--corrective-epsilon: expected metres in [0, 0.01], got '" + v + "'"));
+         return Status(
+             usageError("--corrective-epsilon: expected metres in [0, 0.01], got '" + v + "'"));
        return s->writer_options.morph_epsilon = *m, Status();
      }},
     {"--quantize-morphs", nullptr, nullptr, Applies::Gltf, nullptr,
@@ -189,7 +213,8 @@ const std::vector<OptionSpec> kOptions = {
      "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
      [](V, S* s) { return s->writer_options.draco = true, Status(); }},
     {"--gltf-embed", nullptr, nullptr, Applies::Gltf, nullptr,
-     ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); default: the "
+     ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); "
+     "default: the "
      "buffer is FILE.bin beside FILE.gltf (written and replaced together with it)",
      [](V, S* s) { return s->gltf_embed = true, Status(); }},
     {"--shape-keys", nullptr, "N", Applies::Any, nullptr,
@@ -211,14 +236,17 @@ const std::vector<OptionSpec> kOptions = {
      "--motion at weight 0. DIR: per motion gender, DIR/dmpls/<gender>/model.npz or "
      "DIR/<gender>/model.npz (AMASS layout)",
      [](V v, S* s) { return s->dmpl = v, Status(); }},
-    {"--dmpl-count", nullptr, "N", Applies::Any, nullptr, "keep the first N DMPL directions (default all)",
+    {"--dmpl-count", nullptr, "N", Applies::Any, nullptr,
+     "keep the first N DMPL directions (default all)",
      [](V v, S* s) {
        Status st = intInto(v, "--dmpl-count", &s->dmpl_count);
-       if (st && s->dmpl_count < 1) return Status(usageError("--dmpl-count: expected N >= 1, got '" + v + "'"));
+       if (st && s->dmpl_count < 1)
+         return Status(usageError("--dmpl-count: expected N >= 1, got '" + v + "'"));
        return st;
      }},
     {"--dmpl-joints", nullptr, "fixed|regressed", Applies::Any, nullptr,
-     "fixed (default): keep the betas-only skeleton (the cost is printed); regressed: animate joint "
+     "fixed (default): keep the betas-only skeleton (the cost is printed); regressed: animate "
+     "joint "
      "translations to follow the displaced template (the published math, exact)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--dmpl-joints", {"fixed", "regressed"});
@@ -231,7 +259,8 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        return s->writer_options.fbx_units = v, Status();
      }},
-    {"--fbx-version", nullptr, "7400|7500", Applies::Fbx, nullptr, "FBX binary version (default 7400)",
+    {"--fbx-version", nullptr, "7400|7500", Applies::Fbx, nullptr,
+     "FBX binary version (default 7400)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-version", {"7400", "7500"});
        if (!c) return Status(c.error());
@@ -239,8 +268,10 @@ const std::vector<OptionSpec> kOptions = {
      }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
-     "Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` axis-angle "
-     "or rotation matrices, SMPLCodec .smpl, SMPL-X/SMPL fits .pkl/.npz (SMPLify-X, PIXIE, ExPose), "
+     "Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` "
+     "axis-angle "
+     "or rotation matrices, SMPLCodec .smpl, SMPL-X/SMPL fits .pkl/.npz (SMPLify-X, PIXIE, "
+     "ExPose), "
      "AIST++ .pkl):",
      "bake FILE as an animation (repeatable: one animation each)",
      [](V v, S* s) { return s->motions.push_back(v), Status(); }},
@@ -253,7 +284,8 @@ const std::vector<OptionSpec> kOptions = {
        return s->source_fps = *r, Status();
      }},
     {"--flat-hand-mean", nullptr, nullptr, Applies::Motion, nullptr,
-     "fit hand poses (PCA or 45-d axis-angle) are relative to the flat hand: the model's hands_mean "
+     "fit hand poses (PCA or 45-d axis-angle) are relative to the flat hand: the model's "
+     "hands_mean "
      "is not added (the authors' default adds it)",
      [](V, S* s) { return s->flat_hand_mean = true, Status(); }},
     {"--fps", nullptr, "F", Applies::Motion, nullptr,
@@ -292,15 +324,18 @@ const std::vector<OptionSpec> kOptions = {
      "inputs and options (recorded in the sidecar); per-file errors do not stop the batch; files "
      "with no pose keys (AMASS shape.npz, *_stagei.npz) are skipped with a note",
      [](V v, S* s) { return s->motion_dir = v, Status(); }},
-    {"--out-dir", nullptr, "DIR", Applies::Batch, nullptr, "where batch outputs go (DIR/<motion stem>.<format>)",
+    {"--out-dir", nullptr, "DIR", Applies::Batch, nullptr,
+     "where batch outputs go (DIR/<motion stem>.<format>)",
      [](V v, S* s) { return s->out_dir = v, Status(); }},
-    {"--format", nullptr, "glb|gltf|fbx", Applies::Batch, nullptr, "batch output format (default glb)",
+    {"--format", nullptr, "glb|gltf|fbx", Applies::Batch, nullptr,
+     "batch output format (default glb)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--format", {"glb", "gltf", "fbx"});
        if (!c) return Status(c.error());
        return s->format = v, Status();
      }},
-    {"--force", nullptr, nullptr, Applies::Batch, nullptr, "rebuild every output, even when up to date",
+    {"--force", nullptr, nullptr, Applies::Batch, nullptr,
+     "rebuild every output, even when up to date",
      [](V, S* s) { return s->force = true, Status(); }},
     {"--threads", nullptr, "N", Applies::Batch, nullptr, "batch workers (default: all cores)",
      [](V v, S* s) {
@@ -320,14 +355,16 @@ const std::vector<OptionSpec> kOptions = {
 
     {"--memory-limit", nullptr, "SIZE", Applies::Any, "General:",
      "memory budget for everything the run reads or builds, e.g. 512M, 4G (default: the smaller of "
-     "8G and 3/4 of physical memory); an input that would need more fails before allocating (exit 2, "
+     "8G and 3/4 of physical memory); an input that would need more fails before allocating (exit "
+     "2, "
      "3 when baking)",
      [](V v, S* s) {
        Result<uint64_t> m = parseMemorySize(v);
        if (!m) return Status(usageError(m.message()));
        return s->memory_limit = *m, Status();
      }},
-    {"--quiet", "-q", nullptr, Applies::Any, nullptr, "no summary", [](V, S* s) { return s->quiet = true, Status(); }},
+    {"--quiet", "-q", nullptr, Applies::Any, nullptr, "no summary",
+     [](V, S* s) { return s->quiet = true, Status(); }},
     {"--version", nullptr, nullptr, Applies::Any, nullptr, "print the version and exit",
      [](V, S* s) { return s->version = true, Status(); }},
     {"--help", "-h", nullptr, Applies::Any, nullptr, "print this text and exit",
@@ -344,7 +381,8 @@ std::vector<std::string> wrap(const std::string& text, size_t width) {
     std::istringstream words(paragraph);
     std::string line;
     for (std::string word; words >> word;) {
-      if (!line.empty() && line.size() + 1 + word.size() > width) lines.push_back(line), line.clear();
+      if (!line.empty() && line.size() + 1 + word.size() > width)
+        lines.push_back(line), line.clear();
       line += (line.empty() ? "" : " ") + word;
     }
     lines.push_back(line);
@@ -382,12 +420,18 @@ const OptionSpec* findOption(const std::string& name) {
 
 const char* appliesRule(Applies applies) {
   switch (applies) {
-    case Applies::Single: return "conflicts with batch mode (--motion-dir)";
-    case Applies::Motion: return "needs --motion or --motion-dir";
-    case Applies::Batch: return "applies only to batch mode (--motion-dir)";
-    case Applies::Gltf: return "applies only to glTF output (.glb, .gltf)";
-    case Applies::Fbx: return "applies only to .fbx output";
-    default: return "";
+    case Applies::Single:
+      return "conflicts with batch mode (--motion-dir)";
+    case Applies::Motion:
+      return "needs --motion or --motion-dir";
+    case Applies::Batch:
+      return "applies only to batch mode (--motion-dir)";
+    case Applies::Gltf:
+      return "applies only to glTF output (.glb, .gltf)";
+    case Applies::Fbx:
+      return "applies only to .fbx output";
+    default:
+      return "";
   }
 }
 
@@ -398,11 +442,13 @@ std::string usageText() {
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
   for (const OptionSpec& o : kOptions) {
     if (o.heading && *o.heading)
-      for (const std::string& line : wrap(std::string("\n") + o.heading, kWidth)) out += line + "\n";
+      for (const std::string& line : wrap(std::string("\n") + o.heading, kWidth))
+        out += line + "\n";
     appendUsage(o, &out);
   }
-  out += "\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write output.\n"
-         "Reference: docs/cli.md\n";
+  out +=
+      "\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write output.\n"
+      "Reference: docs/cli.md\n";
   return out;
 }
 

@@ -24,9 +24,9 @@ enum class Applies {
 };
 
 struct OptionSpec {
-  const char* name;     // "--max-influences"
-  const char* alias;    // a short form ("-q"), or nullptr
-  const char* value;    // the value's syntax in the usage text ("N"); nullptr: a flag
+  const char* name;   // "--max-influences"
+  const char* alias;  // a short form ("-q"), or nullptr
+  const char* value;  // the value's syntax in the usage text ("N"); nullptr: a flag
   Applies applies;
   const char* heading;  // starts a new section of the usage text, or nullptr
   const char* help;     // usage text; '\n' continues on the next line

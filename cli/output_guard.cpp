@@ -30,7 +30,8 @@ bool identify(const std::string& path, Identity* id) {
 
 void addFolderFiles(const std::string& dir, std::vector<std::string>* files) {
   std::error_code ec;
-  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator();
+       it.increment(ec)) {
     std::error_code e2;
     if (it->is_regular_file(e2)) files->push_back(it->path().string());
   }
@@ -47,15 +48,18 @@ std::vector<std::string> runInputs(const Settings& s, const std::vector<std::str
   for (const std::string& c : candidates) {
     std::error_code ec;
     if (c.empty()) continue;
-    if (fs::is_directory(c, ec)) addFolderFiles(c, &inputs);
-    else inputs.push_back(c);
+    if (fs::is_directory(c, ec))
+      addFolderFiles(c, &inputs);
+    else
+      inputs.push_back(c);
   }
   return inputs;
 }
 
 std::string gltfBufferPath(const Settings& s, const std::string& out) {
   const size_t dot = out.rfind('.');
-  if (s.gltf_embed || dot == std::string::npos || out.compare(dot, std::string::npos, ".gltf") != 0) return "";
+  if (s.gltf_embed || dot == std::string::npos || out.compare(dot, std::string::npos, ".gltf") != 0)
+    return "";
   return out.substr(0, dot) + ".bin";
 }
 
@@ -65,7 +69,8 @@ std::vector<std::string> outputsOf(const Settings& s, const std::string& out) {
   return {out, buffer};
 }
 
-Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs,
+                                const std::vector<std::string>& inputs) {
   std::map<std::pair<dev_t, ino_t>, std::string> by_inode;
   std::map<std::string, std::string> by_path;
   for (const std::string& in : inputs) {
@@ -82,7 +87,7 @@ Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs, const s
       auto real = by_path.find(id.real);
       const std::string* input = inode != by_inode.end() ? &inode->second
                                  : real != by_path.end() ? &real->second
-                                                          : nullptr;
+                                                         : nullptr;
       if (input)
         return makeError("output " + path + " would overwrite the input " + *input +
                          " (same file); choose another output path");

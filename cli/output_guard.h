@@ -8,15 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "core/result.h"
 #include "cli/settings.h"
+#include "core/result.h"
 
 namespace smpl {
 
 // The input files of a run: the model (unless "builtin"), --betas-file, --uv,
 // and `motions`. A folder given as an input (a --model folder) stands for the
 // regular files directly in it.
-std::vector<std::string> runInputs(const Settings& settings, const std::vector<std::string>& motions);
+std::vector<std::string> runInputs(const Settings& settings,
+                                   const std::vector<std::string>& motions);
 
 // The external buffer file written beside a .gltf output (DIR/body.gltf ->
 // DIR/body.bin), or "" (GLB, FBX, or --gltf-embed).
@@ -30,6 +31,7 @@ std::vector<std::string> outputsOf(const Settings& settings, const std::string& 
 // "<output>.smpl.json" is one of `inputs`:
 //   "output out.glb would overwrite the input model.glb (same file); choose another output path"
 // Outputs that do not exist yet cannot clash and pass.
-Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
+Status checkOutputsAreNotInputs(const std::vector<std::string>& outputs,
+                                const std::vector<std::string>& inputs);
 
 }  // namespace smpl

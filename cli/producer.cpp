@@ -13,10 +13,10 @@ namespace {
 
 // Options that do not change the bytes written, and those naming inputs
 // (hashed by identity below).
-const char* const kNotHashed[] = {"--threads", "--quiet",   "-q",       "--force", "--out",
-                                  "--out-dir", "--motion-dir", "--memory-limit", "--shard",
-                                  "--manifest", "--model",  "--motion", "--betas-file", "--uv", "--dmpl",
-                                  "--help",    "-h",        "--version"};
+const char* const kNotHashed[] = {
+    "--threads",    "--quiet",        "-q",      "--force",    "--out",   "--out-dir",
+    "--motion-dir", "--memory-limit", "--shard", "--manifest", "--model", "--motion",
+    "--betas-file", "--uv",           "--dmpl",  "--help",     "-h",      "--version"};
 
 bool hashed(const std::string& option) {
   return std::find_if(std::begin(kNotHashed), std::end(kNotHashed),
@@ -27,12 +27,14 @@ bool hashed(const std::string& option) {
 void addFolder(const std::string& dir, ContentHash* h) {
   std::vector<std::string> entries;
   std::error_code ec;
-  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator();
+       it.increment(ec)) {
     std::error_code e2;
     if (!it->is_regular_file(e2)) continue;
     const auto size = fs::file_size(it->path(), e2);
     const auto time = fs::last_write_time(it->path(), e2).time_since_epoch().count();
-    entries.push_back(it->path().filename().string() + "/" + std::to_string(size) + "/" + std::to_string(time));
+    entries.push_back(it->path().filename().string() + "/" + std::to_string(size) + "/" +
+                      std::to_string(time));
   }
   std::sort(entries.begin(), entries.end());
   for (const std::string& e : entries) h->add(e);

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
+#include "cli/settings.h"
 #include "core/io/content_hash.h"
 #include "core/result.h"
-#include "cli/settings.h"
 
 namespace smpl {
 

@@ -13,11 +13,13 @@ namespace {
 Error usageError(const std::string& message) { return makeError(message, ErrorKind::Usage); }
 
 bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 bool given(const Settings& s, const char* name) {
-  return std::any_of(s.given_options.begin(), s.given_options.end(), [&](const auto& o) { return o.first == name; });
+  return std::any_of(s.given_options.begin(), s.given_options.end(),
+                     [&](const auto& o) { return o.first == name; });
 }
 
 // An option used where its table entry says it does not apply.
@@ -26,7 +28,8 @@ Status checkApplies(const Settings& s, bool batch, bool fbx) {
   for (const auto& [name, value] : s.given_options) {
     const OptionSpec* o = findOption(name);
     const bool ok = o->applies == Applies::Any || (o->applies == Applies::Single && !batch) ||
-                    (o->applies == Applies::Motion && animated) || (o->applies == Applies::Batch && batch) ||
+                    (o->applies == Applies::Motion && animated) ||
+                    (o->applies == Applies::Batch && batch) ||
                     (o->applies == Applies::Gltf && !fbx) || (o->applies == Applies::Fbx && fbx);
     if (!ok) return usageError(name + " " + appliesRule(o->applies));
   }
@@ -37,20 +40,28 @@ Status checkApplies(const Settings& s, bool batch, bool fbx) {
 Status checkSizeOptionPairs(const Settings& s) {
   const ExportOptions& e = s.export_options;
   if (given(s, "--corrective-weights") && !e.correctives)
-    return usageError("--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
+    return usageError(
+        "--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
   if (given(s, "--quantize-morphs") && !e.correctives)
-    return usageError("--quantize-morphs quantizes corrective targets; with --correctives none there are none");
-  if (given(s, "--corrective-epsilon") && !e.correctives && e.shape_keys == 0 && e.expression_keys == 0)
-    return usageError("--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
-                      "--expression-keys there are none");
+    return usageError(
+        "--quantize-morphs quantizes corrective targets; with --correctives none there are none");
+  if (given(s, "--corrective-epsilon") && !e.correctives && e.shape_keys == 0 &&
+      e.expression_keys == 0)
+    return usageError(
+        "--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
+        "--expression-keys there are none");
   if (given(s, "--corrective-basis") && e.encoding == CorrectiveEncoding::Split)
-    return usageError("--corrective-basis conflicts with --corrective-weights split (basis weights are signed or unit)");
+    return usageError(
+        "--corrective-basis conflicts with --corrective-weights split (basis weights are signed or "
+        "unit)");
   return Status();
 }
 
 Status checkConflicts(const Settings& s) {
-  if (s.model.empty()) return usageError("missing --model PATH (use --model builtin for the demo body)");
-  if (given(s, "--betas") && given(s, "--betas-file")) return usageError("--betas and --betas-file conflict: give one");
+  if (s.model.empty())
+    return usageError("missing --model PATH (use --model builtin for the demo body)");
+  if (given(s, "--betas") && given(s, "--betas-file"))
+    return usageError("--betas and --betas-file conflict: give one");
   if (s.betas_from_motion && s.betas_given)
     return usageError("--betas-from-motion conflicts with --betas/--betas-file");
   if (given(s, "--corrective-basis") && !s.export_options.correctives)
@@ -82,7 +93,8 @@ Status takeOption(int argc, const char* const* argv, int* i, Settings* s) {
   }
   const OptionSpec* o = findOption(arg);
   if (!o && arg.rfind("-", 0) != 0)
-    return usageError("unexpected argument '" + printable(arg) + "': options start with -- (see --help)");
+    return usageError("unexpected argument '" + printable(arg) +
+                      "': options start with -- (see --help)");
   if (!o) return usageError("unknown option '" + printable(arg) + "' (see --help)");
   if (!o->value && eq != std::string::npos && arg.size() < std::string(argv[*i]).size())
     return usageError(std::string("option ") + o->name + " takes no value");
@@ -91,7 +103,8 @@ Status takeOption(int argc, const char* const* argv, int* i, Settings* s) {
     value = argv[++*i];
   }
   const std::string name = o->name;  // aliases count as their option
-  if (name != "--motion" && given(*s, name.c_str())) return usageError("option " + name + " given twice");
+  if (name != "--motion" && given(*s, name.c_str()))
+    return usageError("option " + name + " given twice");
   s->given_options.emplace_back(name, value);
   return o->apply(value, s);
 }

@@ -53,7 +53,8 @@ Result<std::string> sha256File(const std::string& path) {
   std::vector<char> chunk(1 << 20);
   while (in) {
     in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-    if (in.gcount() > 0 && EVP_DigestUpdate(ctx.get(), chunk.data(), static_cast<size_t>(in.gcount())) != 1)
+    if (in.gcount() > 0 &&
+        EVP_DigestUpdate(ctx.get(), chunk.data(), static_cast<size_t>(in.gcount())) != 1)
       return makeError(path + ": SHA-256 failed");
   }
   if (in.bad()) return makeError(path + ": read error");

@@ -24,10 +24,11 @@ struct Array {
   // name -> number (e.g. SMPL-X's joint-name -> index map, AMASS's marker ->
   // vertex id) has keys[i] naming data[i], shape (n,).
   std::vector<std::string> keys;
-  MemoryCharge charge;               // `data`/`strings` bytes held against the memory budget
+  MemoryCharge charge;  // `data`/`strings` bytes held against the memory budget
   bool isObject() const { return dtype.size() >= 2 && dtype[1] == 'O'; }
   bool isString() const {
-    return !isObject() && (!strings.empty() || (dtype.size() >= 2 && (dtype[1] == 'U' || dtype[1] == 'S')));
+    return !isObject() &&
+           (!strings.empty() || (dtype.size() >= 2 && (dtype[1] == 'U' || dtype[1] == 'S')));
   }
   int64_t size() const {
     int64_t n = 1;

@@ -26,10 +26,10 @@ struct BodyModel {
   Eigen::MatrixXd v_template;            // N x 3
   Eigen::MatrixXd shapedirs;             // 3N x B  (identity shape directions)
   Eigen::MatrixXd exprdirs;              // 3N x E  (SMPL-X expression; 0 columns otherwise)
-  Eigen::MatrixXd posedirs;              // 3N x 9(K-1), column n = feature n of docs/file-contract.md
+  Eigen::MatrixXd posedirs;  // 3N x 9(K-1), column n = feature n of docs/file-contract.md
   Eigen::SparseMatrix<double, Eigen::RowMajor> j_regressor;  // K x N
-  Eigen::MatrixXd weights;               // N x K, rows sum to 1
-  Eigen::MatrixXi faces;                 // F x 3, indices < N
+  Eigen::MatrixXd weights;                                   // N x K, rows sum to 1
+  Eigen::MatrixXi faces;                                     // F x 3, indices < N
   // MANO hand pose PCA carried by SMPL-H / SMPL-X / MANO files (empty if absent).
   Eigen::MatrixXd hands_components_l, hands_components_r;  // C x 45
   Eigen::VectorXd hands_mean_l, hands_mean_r;              // 45

@@ -4,16 +4,17 @@ namespace smpl {
 namespace {
 
 const char* const kBody[] = {
-    "pelvis",        "left_hip",       "right_hip",      "spine1",      "left_knee",
-    "right_knee",    "spine2",         "left_ankle",     "right_ankle", "spine3",
-    "left_foot",     "right_foot",     "neck",           "left_collar", "right_collar",
-    "head",          "left_shoulder",  "right_shoulder", "left_elbow",  "right_elbow",
-    "left_wrist",    "right_wrist"};
-const char* const kFingers[] = {"index1", "index2", "index3", "middle1", "middle2",
-                                "middle3", "pinky1", "pinky2", "pinky3", "ring1",
-                                "ring2",  "ring3",  "thumb1", "thumb2", "thumb3"};
+    "pelvis",     "left_hip",    "right_hip",    "spine1",     "left_knee",     "right_knee",
+    "spine2",     "left_ankle",  "right_ankle",  "spine3",     "left_foot",     "right_foot",
+    "neck",       "left_collar", "right_collar", "head",       "left_shoulder", "right_shoulder",
+    "left_elbow", "right_elbow", "left_wrist",   "right_wrist"};
+const char* const kFingers[] = {"index1",  "index2", "index3", "middle1", "middle2",
+                                "middle3", "pinky1", "pinky2", "pinky3",  "ring1",
+                                "ring2",   "ring3",  "thumb1", "thumb2",  "thumb3"};
 
-std::vector<std::string> body() { return std::vector<std::string>(std::begin(kBody), std::end(kBody)); }
+std::vector<std::string> body() {
+  return std::vector<std::string>(std::begin(kBody), std::end(kBody));
+}
 
 void appendHand(std::vector<std::string>* names, const std::string& side) {
   for (const char* finger : kFingers) names->push_back(side + finger);
@@ -52,8 +53,9 @@ std::vector<std::string> makeNames(ModelKind kind) {
 }  // namespace
 
 const std::vector<std::string>& canonicalJointNames(ModelKind kind) {
-  static const std::vector<std::string> tables[] = {makeNames(ModelKind::Smpl), makeNames(ModelKind::SmplH),
-                                                    makeNames(ModelKind::SmplX), makeNames(ModelKind::Mano)};
+  static const std::vector<std::string> tables[] = {
+      makeNames(ModelKind::Smpl), makeNames(ModelKind::SmplH), makeNames(ModelKind::SmplX),
+      makeNames(ModelKind::Mano)};
   return tables[static_cast<int>(kind)];
 }
 
@@ -65,20 +67,33 @@ std::string canonicalJointName(const std::string& name) {
 
 bool modelKindFromJointCount(int joints, ModelKind* kind) {
   switch (joints) {
-    case 24: *kind = ModelKind::Smpl; return true;
-    case 52: *kind = ModelKind::SmplH; return true;
-    case 55: *kind = ModelKind::SmplX; return true;
-    case 16: *kind = ModelKind::Mano; return true;
-    default: return false;
+    case 24:
+      *kind = ModelKind::Smpl;
+      return true;
+    case 52:
+      *kind = ModelKind::SmplH;
+      return true;
+    case 55:
+      *kind = ModelKind::SmplX;
+      return true;
+    case 16:
+      *kind = ModelKind::Mano;
+      return true;
+    default:
+      return false;
   }
 }
 
 const char* modelKindName(ModelKind kind) {
   switch (kind) {
-    case ModelKind::Smpl: return "smpl";
-    case ModelKind::SmplH: return "smplh";
-    case ModelKind::SmplX: return "smplx";
-    case ModelKind::Mano: return "mano";
+    case ModelKind::Smpl:
+      return "smpl";
+    case ModelKind::SmplH:
+      return "smplh";
+    case ModelKind::SmplX:
+      return "smplx";
+    case ModelKind::Mano:
+      return "mano";
   }
   return "unknown";
 }

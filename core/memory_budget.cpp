@@ -19,8 +19,8 @@ constexpr uint64_t kGiB = 1ull << 30;
 std::atomic<uint64_t> g_charged{0};
 std::atomic<uint64_t> g_limit{0};  // 0: not set yet, use the default
 
-Error budgetError(uint64_t bytes, const std::string& context, const std::string& what, uint64_t charged,
-                  uint64_t limit) {
+Error budgetError(uint64_t bytes, const std::string& context, const std::string& what,
+                  uint64_t charged, uint64_t limit) {
   const uint64_t total = bytes > UINT64_MAX - charged ? UINT64_MAX : charged + bytes;
   return makeError(context + ": " + what + " would need " + formatBytes(total) +
                    (charged > 0 ? " in total" : "") + "; the limit is " + formatBytes(limit) +
@@ -53,7 +53,8 @@ Status MemoryCharge::add(uint64_t bytes, const std::string& context, const std::
   const uint64_t limit = memoryLimit();
   uint64_t charged = g_charged.load();
   do {
-    if (bytes > limit || charged > limit - bytes) return budgetError(bytes, context, what, charged, limit);
+    if (bytes > limit || charged > limit - bytes)
+      return budgetError(bytes, context, what, charged, limit);
   } while (!g_charged.compare_exchange_weak(charged, charged + bytes));
   bytes_ += bytes;
   return Status();
@@ -67,7 +68,8 @@ void MemoryCharge::release() {
 
 Status checkMemory(uint64_t bytes, const std::string& context, const std::string& what) {
   const uint64_t limit = memoryLimit(), charged = g_charged.load();
-  if (bytes > limit || charged > limit - bytes) return budgetError(bytes, context, what, charged, limit);
+  if (bytes > limit || charged > limit - bytes)
+    return budgetError(bytes, context, what, charged, limit);
   return Status();
 }
 
@@ -90,11 +92,13 @@ uint64_t defaultMemoryLimit() {
 }
 
 Result<uint64_t> parseMemorySize(const std::string& text) {
-  const std::string usage = "--memory-limit: expected a size such as 512M or 4G (16M to 1P), got '" + text + "'";
+  const std::string usage =
+      "--memory-limit: expected a size such as 512M or 4G (16M to 1P), got '" + text + "'";
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str() || errno != 0 || !std::isfinite(v) || v <= 0) return makeError(usage);
+  if (text.empty() || end == text.c_str() || errno != 0 || !std::isfinite(v) || v <= 0)
+    return makeError(usage);
   std::string suffix(end);
   if (!suffix.empty() && (suffix.back() == 'B' || suffix.back() == 'b')) suffix.pop_back();
   if (suffix.size() == 2 && (suffix[1] == 'i' || suffix[1] == 'I')) suffix.pop_back();  // "GiB"
@@ -102,7 +106,8 @@ Result<uint64_t> parseMemorySize(const std::string& text) {
   if (suffix.size() > 1) return makeError(usage);
   if (suffix.size() == 1) {
     const std::string units = "KMGTP";
-    const size_t power = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(suffix[0]))));
+    const size_t power =
+        units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(suffix[0]))));
     if (power == std::string::npos) return makeError(usage);
     scale = std::ldexp(1.0, 10 * static_cast<int>(power + 1));
   }

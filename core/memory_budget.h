@@ -33,7 +33,7 @@ class MemoryCharge {
  public:
   MemoryCharge() = default;
   ~MemoryCharge() { release(); }
-  MemoryCharge(const MemoryCharge& other);             // charges the same bytes again
+  MemoryCharge(const MemoryCharge& other);  // charges the same bytes again
   MemoryCharge& operator=(const MemoryCharge& other);
   MemoryCharge(MemoryCharge&& other) noexcept : bytes_(other.bytes_) { other.bytes_ = 0; }
   MemoryCharge& operator=(MemoryCharge&& other) noexcept;

@@ -34,14 +34,16 @@ std::vector<Sample> resampleTimes(int first, int end, double fps_in, double fps_
 // rate or a large --fps cannot overflow the count, and charged to the memory
 // budget (rotations, translation, time and morph weights per frame) before any
 // of it is allocated.
-Status chargeSamples(int first, int end, double fps_in, double fps_out, int joints, Eigen::Index targets,
-                     const std::string& context, MemoryCharge* charge) {
+Status chargeSamples(int first, int end, double fps_in, double fps_out, int joints,
+                     Eigen::Index targets, const std::string& context, MemoryCharge* charge) {
   const double count = std::floor((end - 1 - first) / fps_in * fps_out + 1e-9) + 1;
-  const double per_frame = joints * sizeof(Eigen::Quaterniond) + sizeof(Eigen::Vector3d) + sizeof(double) +
-                           sizeof(Sample) + static_cast<double>(targets) * sizeof(float);
+  const double per_frame = joints * sizeof(Eigen::Quaterniond) + sizeof(Eigen::Vector3d) +
+                           sizeof(double) + sizeof(Sample) +
+                           static_cast<double>(targets) * sizeof(float);
   const double bytes = count * per_frame;
   const std::string what = "resampling " + std::to_string(end - first) + " frames to " +
-                           std::to_string(static_cast<long long>(std::min(count, 9e18))) + " frames";
+                           std::to_string(static_cast<long long>(std::min(count, 9e18))) +
+                           " frames";
   if (count > 2147483647.0 || bytes > 1.8e19) return checkMemory(UINT64_MAX, context, what);
   return charge->add(static_cast<uint64_t>(bytes), context, what);
 }
@@ -64,12 +66,14 @@ void makeContinuous(std::vector<Eigen::Quaterniond>* track) {
     if ((*track)[i].dot((*track)[i - 1]) < 0) (*track)[i].coeffs() *= -1.0;
 }
 
-Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::string& context, int* end) {
+Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::string& context,
+                   int* end) {
   const int total = static_cast<int>(motion.frames.size());
   *end = o.end_frame < 0 ? total : o.end_frame;
   if (o.first_frame < 0 || o.first_frame >= *end || *end > total)
-    return makeError(context + ": --frames " + std::to_string(o.first_frame) + ":" + std::to_string(*end) +
-                     " is outside the motion's " + std::to_string(total) + " frames");
+    return makeError(context + ": --frames " + std::to_string(o.first_frame) + ":" +
+                     std::to_string(*end) + " is outside the motion's " + std::to_string(total) +
+                     " frames");
   if (o.fps < 0 || o.fps > 1000) return makeError("--fps must be in (0, 1000]");
   return Status();
 }
@@ -78,17 +82,20 @@ Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::s
 // target (by name: the layout is the contract).
 std::vector<int> correctiveTargets(const Asset& asset) {
   std::map<std::string, int> index;
-  for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i) index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
+  for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i)
+    index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
   std::vector<int> targets;
-  for (const CorrectiveLayout& c : asset.metadata.correctives) targets.push_back(index.at(c.target));
-  for (const std::string& name : asset.metadata.corrective_basis.targets) targets.push_back(index.at(name));
+  for (const CorrectiveLayout& c : asset.metadata.correctives)
+    targets.push_back(index.at(c.target));
+  for (const std::string& name : asset.metadata.corrective_basis.targets)
+    targets.push_back(index.at(name));
   return targets;
 }
 
 // Weight of each morph target per frame: correctives get scale * f + offset,
 // basis targets scale_k (C f)_k + offset_k; others stay 0.
-void fillMorphWeights(const Asset& asset, const std::vector<int>& targets, const Rotations& rotations,
-                      Eigen::MatrixXf* weights, int frame) {
+void fillMorphWeights(const Asset& asset, const std::vector<int>& targets,
+                      const Rotations& rotations, Eigen::MatrixXf* weights, int frame) {
   const Eigen::VectorXd f = poseFeatures(rotations);
   const auto& correctives = asset.metadata.correctives;
   for (size_t i = 0; i < correctives.size(); ++i) {
@@ -100,22 +107,27 @@ void fillMorphWeights(const Asset& asset, const std::vector<int>& targets, const
   if (basis.targets.empty()) return;
   const Eigen::VectorXd w = basis.projection * f;
   for (size_t k = 0; k < basis.targets.size(); ++k)
-    (*weights)(frame, targets[correctives.size() + k]) = static_cast<float>(basis.scale[k] * w[k] + basis.offset[k]);
+    (*weights)(frame, targets[correctives.size() + k]) =
+        static_cast<float>(basis.scale[k] * w[k] + basis.offset[k]);
 }
 
 }  // namespace
 
-Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion, const std::string& context) {
+Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion,
+                                const std::string& context) {
   const std::vector<std::string>& source = canonicalJointNames(motion.layout);
   std::map<std::string, int> index;
-  for (size_t i = 0; i < source.size(); ++i) index[canonicalJointName(source[i])] = static_cast<int>(i);
+  for (size_t i = 0; i < source.size(); ++i)
+    index[canonicalJointName(source[i])] = static_cast<int>(i);
   MotionMapping m;
   std::vector<bool> used(source.size(), false);
   for (const std::string& name : model.joint_names) {
     auto it = index.find(canonicalJointName(name));  // either eye spelling matches
     m.source_of_joint.push_back(it == index.end() ? -1 : it->second);
-    if (it == index.end()) m.missing.push_back(name);
-    else used[it->second] = true;
+    if (it == index.end())
+      m.missing.push_back(name);
+    else
+      used[it->second] = true;
   }
   for (size_t i = 0; i < source.size(); ++i)
     if (!used[i]) m.dropped.push_back(source[i]);
@@ -125,8 +137,9 @@ Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion, co
   return m;
 }
 
-Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, const Motion& motion,
-                                    const AnimationOptions& o, const std::string& context, const Progress& progress) {
+Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
+                                    const Motion& motion, const AnimationOptions& o,
+                                    const std::string& context, const Progress& progress) {
   int end = 0;
   if (Status s = checkFrames(motion, o, context, &end); !s) return s.error();
   Result<MotionMapping> mapping = mapMotion(model, motion, context);
@@ -134,27 +147,31 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, 
   const double fps = o.fps > 0 ? o.fps : motion.fps;
   AnimationClip clip;
   if (Status st = chargeSamples(o.first_frame, end, motion.fps, fps, model.numJoints(),
-                                static_cast<Eigen::Index>(asset.mesh.morph_targets.size()), context, &clip.charge);
+                                static_cast<Eigen::Index>(asset.mesh.morph_targets.size()), context,
+                                &clip.charge);
       !st)
     return st.error();
   const std::vector<Sample> samples = resampleTimes(o.first_frame, end, motion.fps, fps);
   const bool z_up = o.up == UpAxis::Z || (o.up == UpAxis::Auto && motion.amass);
   // Z-up capture world -> Y-up output: rotate the whole body -90 degrees about X.
-  const Eigen::Matrix3d up = z_up ? Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix()
-                                  : Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d up =
+      z_up ? Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix()
+           : Eigen::Matrix3d::Identity();
   const int k = model.numJoints(), t = static_cast<int>(samples.size());
   const Eigen::Vector3d j0 = asset.skeleton.rest_world.row(0).transpose();
   clip.name = motion.name;
   clip.fps = fps;
   clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));
-  clip.morph_weights = Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
+  clip.morph_weights =
+      Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
   const std::vector<int> targets = correctiveTargets(asset);
   Rotations local(k);
   for (int i = 0; i < t; ++i) {
     clip.times.push_back(i / fps);
     for (int j = 0; j < k; ++j) {
       const int src = mapping->source_of_joint[j];
-      Eigen::Quaterniond q = src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
+      Eigen::Quaterniond q =
+          src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
       if (j == 0) q = Eigen::Quaterniond(up) * q;
       clip.rotations[j][i] = q;
       local[j] = q.toRotationMatrix();
@@ -164,8 +181,11 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, 
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
-    if (const int d = static_cast<int>(asset.metadata.dmpl.targets.size()); d > 0)  // DMPL soft tissue (dmpl_targets.h)
-      if (Status st = applyDmplFrame(asset, dmplAt(motion, samples[i].frame, samples[i].t, d), local, up, i, &clip); !st)
+    if (const int d = static_cast<int>(asset.metadata.dmpl.targets.size());
+        d > 0)  // DMPL soft tissue (dmpl_targets.h)
+      if (Status st = applyDmplFrame(asset, dmplAt(motion, samples[i].frame, samples[i].t, d),
+                                     local, up, i, &clip);
+          !st)
         return st.error();
     if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
   }

@@ -20,27 +20,28 @@ namespace smpl {
 enum class UpAxis { Auto, Y, Z };  // Auto: Z for AMASS files, else Y
 
 struct AnimationOptions {
-  double fps = 0.0;        // output rate; 0 keeps the motion's rate
-  int first_frame = 0;     // --frames A:B, source frames, B exclusive
-  int end_frame = -1;      // -1: to the end
+  double fps = 0.0;     // output rate; 0 keeps the motion's rate
+  int first_frame = 0;  // --frames A:B, source frames, B exclusive
+  int end_frame = -1;   // -1: to the end
   UpAxis up = UpAxis::Auto;
-  bool in_place = false;   // --root-motion in-place: drop horizontal root motion
+  bool in_place = false;  // --root-motion in-place: drop horizontal root motion
 };
 
 struct MotionMapping {
-  std::vector<int> source_of_joint;        // model joint -> motion joint, -1 = rest rotation
-  std::vector<std::string> dropped;        // motion joints the model lacks
-  std::vector<std::string> missing;        // model joints the motion lacks
+  std::vector<int> source_of_joint;  // model joint -> motion joint, -1 = rest rotation
+  std::vector<std::string> dropped;  // motion joints the model lacks
+  std::vector<std::string> missing;  // model joints the motion lacks
 };
 
-Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion, const std::string& context);
+Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion,
+                                const std::string& context);
 
 // Progress callback: fraction in [0, 1].
 using Progress = std::function<void(double)>;
 
 // `asset` supplies the rest joints and the morph target order.
-Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset, const Motion& motion,
-                                    const AnimationOptions& options, const std::string& context,
-                                    const Progress& progress = nullptr);
+Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
+                                    const Motion& motion, const AnimationOptions& options,
+                                    const std::string& context, const Progress& progress = nullptr);
 
 }  // namespace smpl

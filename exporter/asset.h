@@ -14,83 +14,84 @@
 namespace smpl {
 
 struct Skeleton {
-  std::vector<std::string> names;       // K joint names (bone/node names)
-  std::vector<int> parents;             // K; -1 for the root
-  Eigen::MatrixXd rest_local;           // K x 3 local translation J_k - J_p(k) (root: J_0)
-  Eigen::MatrixXd rest_world;           // K x 3 rest joint positions J_k
+  std::vector<std::string> names;  // K joint names (bone/node names)
+  std::vector<int> parents;        // K; -1 for the root
+  Eigen::MatrixXd rest_local;      // K x 3 local translation J_k - J_p(k) (root: J_0)
+  Eigen::MatrixXd rest_world;      // K x 3 rest joint positions J_k
   // Rest local rotations are identity by contract (docs/file-contract.md); inverse bind
   // matrix of joint k is translation(-J_k).
 };
 
 struct MorphTarget {
-  std::string name;                     // pose_<joint>_<r><c>, shape_<i>, expr_<i>
-  Eigen::MatrixXf deltas;               // V x 3 position deltas (V = asset vertex count)
-  float rest_weight = 0.0f;             // weight at the rest pose (non-zero for the unit encoding)
-  bool quantized = false;               // stored as normalised int16 (KHR_mesh_quantization): deltas
-                                        // already divided by their peak s_n, |delta| <= 1 (morph_scales.h)
+  std::string name;          // pose_<joint>_<r><c>, shape_<i>, expr_<i>
+  Eigen::MatrixXf deltas;    // V x 3 position deltas (V = asset vertex count)
+  float rest_weight = 0.0f;  // weight at the rest pose (non-zero for the unit encoding)
+  bool quantized = false;    // stored as normalised int16 (KHR_mesh_quantization): deltas
+                             // already divided by their peak s_n, |delta| <= 1 (morph_scales.h)
 };
 
 struct SkinnedMesh {
-  Eigen::MatrixXf positions;            // V x 3 rest mesh (v_shaped), may be split at UV seams
-  Eigen::MatrixXf normals;              // V x 3 unit normals of the rest mesh
-  Eigen::MatrixXf uvs;                  // V x 2 (OBJ convention, v up), or 0 rows when absent
-  Eigen::MatrixXi triangles;            // F x 3, counter-clockwise seen from outside
-  Eigen::MatrixXi joints;               // V x M joint indices
-  Eigen::MatrixXf weights;              // V x M, rows sum to 1
-  std::vector<int> source_vertex;       // V: model vertex each asset vertex came from
+  Eigen::MatrixXf positions;       // V x 3 rest mesh (v_shaped), may be split at UV seams
+  Eigen::MatrixXf normals;         // V x 3 unit normals of the rest mesh
+  Eigen::MatrixXf uvs;             // V x 2 (OBJ convention, v up), or 0 rows when absent
+  Eigen::MatrixXi triangles;       // F x 3, counter-clockwise seen from outside
+  Eigen::MatrixXi joints;          // V x M joint indices
+  Eigen::MatrixXf weights;         // V x M, rows sum to 1
+  std::vector<int> source_vertex;  // V: model vertex each asset vertex came from
   std::vector<MorphTarget> morph_targets;
 };
 
 // One entry per corrective morph target: weight = scale * f[feature] + offset.
 struct CorrectiveLayout {
-  int feature = 0;                      // index into f (docs/file-contract.md order)
-  std::string target;                   // morph target name
+  int feature = 0;     // index into f (docs/file-contract.md order)
+  std::string target;  // morph target name
   double scale = 1.0;
   double offset = 0.0;
-  bool rectified = false;               // split encoding: weight = max(0, scale * f[feature] + offset)
+  bool rectified = false;  // split encoding: weight = max(0, scale * f[feature] + offset)
 };
 
 // --corrective-basis K (exporter/corrective_basis.h): K morph targets replace
 // the per-feature correctives; weight_k = scale_k * (projection f)_k + offset_k.
 struct CorrectiveBasis {
-  std::vector<std::string> targets;     // K morph target names pose_basis_<k>
-  Eigen::MatrixXd projection;           // K x P (C); 0 rows = no basis (per-feature layout)
-  std::vector<double> scale;            // K
-  std::vector<double> offset;           // K
+  std::vector<std::string> targets;  // K morph target names pose_basis_<k>
+  Eigen::MatrixXd projection;        // K x P (C); 0 rows = no basis (per-feature layout)
+  std::vector<double> scale;         // K
+  std::vector<double> offset;        // K
 };
 
 // DMPL soft-tissue target (exporter/dmpl_targets.h): weight = scale * c[direction] + offset,
 // c = the motion's `dmpls` row of the frame.
 struct DmplLayout {
-  int direction = 0;                    // column of the basis / of `dmpls`
-  std::string target;                   // morph target name dmpl_<i>
+  int direction = 0;   // column of the basis / of `dmpls`
+  std::string target;  // morph target name dmpl_<i>
   double scale = 1.0;
   double offset = 0.0;
 };
 
 struct DmplInfo {
-  std::string basis;                    // basis file name ("" = no DMPL targets)
-  bool animate_joints = false;          // --dmpl-joints regressed: per-frame joint translations
+  std::string basis;            // basis file name ("" = no DMPL targets)
+  bool animate_joints = false;  // --dmpl-joints regressed: per-frame joint translations
   std::vector<DmplLayout> targets;
-  Eigen::MatrixXd joint_directions;     // 3K x D: J_regressor * direction d, row 3k + c (not serialised)
+  Eigen::MatrixXd
+      joint_directions;  // 3K x D: J_regressor * direction d, row 3k + c (not serialised)
 };
 
 struct AnimationClip {
   std::string name;
   double fps = 30.0;
-  std::vector<double> times;                        // T seconds
+  std::vector<double> times;                               // T seconds
   std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
-  std::vector<Eigen::Vector3d> root_translation;    // T root node translations (model axes)
-  Eigen::MatrixXf morph_weights;                    // T x (#morph targets), in target order
+  std::vector<Eigen::Vector3d> root_translation;           // T root node translations (model axes)
+  Eigen::MatrixXf morph_weights;                           // T x (#morph targets), in target order
   // [joint][frame] local translations of every joint (--dmpl-joints regressed); empty = rest_local
   std::vector<std::vector<Eigen::Vector3d>> joint_translations;
-  double dmpl_joint_error = 0.0;                    // max vertex error (m) that betas-only joints cost (DMPL)
-  MemoryCharge charge;                              // the arrays above, against the memory budget
+  double dmpl_joint_error = 0.0;  // max vertex error (m) that betas-only joints cost (DMPL)
+  MemoryCharge charge;            // the arrays above, against the memory budget
 };
 
 struct AssetMetadata {
-  std::string model_kind;               // "smpl", "smplh", "smplx", "mano"
-  std::string model_name;               // source file name or "builtin"
+  std::string model_kind;  // "smpl", "smplh", "smplx", "mano"
+  std::string model_name;  // source file name or "builtin"
   std::string exporter_version;
   std::vector<double> betas;
   std::vector<double> expression;
@@ -98,15 +99,15 @@ struct AssetMetadata {
   int max_influences = 4;
   std::string units = "meters";
   std::string up_axis = "+Y";
-  CorrectiveBasis corrective_basis;     // last: keeps aggregate initialisers of the fields above valid
+  CorrectiveBasis corrective_basis;  // last: keeps aggregate initialisers of the fields above valid
   // Added after corrective_basis for the same reason (aggregate initialisers stay valid).
   std::string skin_weights = "truncated";      // "truncated" or "optimized" (export_skin.h)
   std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (pipeline.h)
-  DmplInfo dmpl{};                      // DMPL soft-tissue targets (empty without --dmpl); last, as above
+  DmplInfo dmpl{};  // DMPL soft-tissue targets (empty without --dmpl); last, as above
 };
 
 struct Asset {
-  std::string name;                     // mesh / scene name
+  std::string name;  // mesh / scene name
   Skeleton skeleton;
   SkinnedMesh mesh;
   std::vector<AnimationClip> animations;

@@ -42,14 +42,17 @@ double maxInnerWithRotation(const Eigen::Matrix3d& m) {
 Result<CorrectiveBasisFit> fitCorrectiveBasis(const Eigen::MatrixXd& posedirs, int k) {
   const int p = static_cast<int>(posedirs.cols());
   if (k < 1 || k > p)
-    return makeError("--corrective-basis " + std::to_string(k) + ": expected 1.." + std::to_string(p) +
-                     " (the model has " + std::to_string(p) + " pose correctives)");
+    return makeError("--corrective-basis " + std::to_string(k) + ": expected 1.." +
+                     std::to_string(p) + " (the model has " + std::to_string(p) +
+                     " pose correctives)");
   if (posedirs.rows() < p)
-    return makeError("--corrective-basis: posedirs has fewer rows (" + std::to_string(posedirs.rows()) +
-                     ") than columns (" + std::to_string(p) + ")");
+    return makeError("--corrective-basis: posedirs has fewer rows (" +
+                     std::to_string(posedirs.rows()) + ") than columns (" + std::to_string(p) +
+                     ")");
   const Eigen::MatrixXd gram = posedirs.transpose() * posedirs;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram);
-  if (eig.info() != Eigen::Success) return makeError("--corrective-basis: eigen-decomposition did not converge");
+  if (eig.info() != Eigen::Success)
+    return makeError("--corrective-basis: eigen-decomposition did not converge");
   // The solver sorts ascending: reverse to take the leading components.
   const Eigen::VectorXd variance = eig.eigenvalues().reverse();
   const Eigen::MatrixXd vectors = eig.eigenvectors().rowwise().reverse();
@@ -83,8 +86,8 @@ void weightRange(const Eigen::MatrixXd& projection, Eigen::VectorXd* lo, Eigen::
     }
 }
 
-std::vector<BasisError> basisErrorReport(const BodyModel& model, const std::vector<int>& ks, int poses,
-                                         uint64_t seed) {
+std::vector<BasisError> basisErrorReport(const BodyModel& model, const std::vector<int>& ks,
+                                         int poses, uint64_t seed) {
   const int p = model.numPoseFeatures();
   Result<CorrectiveBasisFit> fit = fitCorrectiveBasis(model.posedirs, p);
   std::vector<BasisError> rows;

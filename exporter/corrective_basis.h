@@ -50,7 +50,7 @@ struct BasisError {
 
 // One row per K in `ks` (values above P are clamped to P), poses from
 // samplePoses(K joints, poses, seed).
-std::vector<BasisError> basisErrorReport(const BodyModel& model, const std::vector<int>& ks, int poses,
-                                         uint64_t seed);
+std::vector<BasisError> basisErrorReport(const BodyModel& model, const std::vector<int>& ks,
+                                         int poses, uint64_t seed);
 
 }  // namespace smpl

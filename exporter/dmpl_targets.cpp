@@ -12,8 +12,8 @@ namespace {
 // the translation part a_k = t_k - Rw_k x_k of the skin transform A_k. The
 // root's rotation local[0] includes the up-axis rotation `up`, so its
 // translation is up * x_0 (the root translation itself cancels in differences).
-Eigen::MatrixXd skinTranslations(const std::vector<int>& parents, const Eigen::MatrixXd& x, const Rotations& local,
-                                 const Eigen::Matrix3d& up) {
+Eigen::MatrixXd skinTranslations(const std::vector<int>& parents, const Eigen::MatrixXd& x,
+                                 const Rotations& local, const Eigen::Matrix3d& up) {
   const int k = static_cast<int>(parents.size());
   std::vector<Eigen::Matrix3d> rw(k);
   Eigen::MatrixXd t(k, 3), a(k, 3);
@@ -36,7 +36,8 @@ double maxSkinError(const SkinnedMesh& mesh, const Eigen::MatrixXd& da) {
   double worst = 0.0;
   for (Eigen::Index i = 0; i < mesh.joints.rows(); ++i) {
     Eigen::RowVector3d e = Eigen::RowVector3d::Zero();
-    for (Eigen::Index m = 0; m < mesh.joints.cols(); ++m) e += double(mesh.weights(i, m)) * da.row(mesh.joints(i, m));
+    for (Eigen::Index m = 0; m < mesh.joints.cols(); ++m)
+      e += double(mesh.weights(i, m)) * da.row(mesh.joints(i, m));
     worst = std::max(worst, e.norm());
   }
   return worst;
@@ -44,7 +45,8 @@ double maxSkinError(const SkinnedMesh& mesh, const Eigen::MatrixXd& da) {
 
 }  // namespace
 
-std::vector<DmplLayout> dmplLayout(int directions, const std::vector<const Eigen::MatrixXd*>& coefficients) {
+std::vector<DmplLayout> dmplLayout(int directions,
+                                   const std::vector<const Eigen::MatrixXd*>& coefficients) {
   std::vector<DmplLayout> layout;
   for (int i = 0; i < directions; ++i) {
     double lo = 0.0, hi = 0.0;
@@ -63,8 +65,8 @@ std::vector<DmplLayout> dmplLayout(int directions, const std::vector<const Eigen
   return layout;
 }
 
-void addDmplTargets(const BodyModel& model, const DmplBasis& basis, const std::vector<DmplLayout>& layout,
-                    bool animate_joints, Asset* asset) {
+void addDmplTargets(const BodyModel& model, const DmplBasis& basis,
+                    const std::vector<DmplLayout>& layout, bool animate_joints, Asset* asset) {
   SkinnedMesh& mesh = asset->mesh;
   DmplInfo& info = asset->metadata.dmpl;
   info.basis = std::filesystem::path(basis.path).filename().string();
@@ -86,7 +88,9 @@ void addDmplTargets(const BodyModel& model, const DmplBasis& basis, const std::v
         mesh.positions(i, c) = static_cast<float>(mesh.positions(i, c) - (d.offset / d.scale) * v);
       }
     mesh.morph_targets.push_back(std::move(t));
-    const Eigen::MatrixXd as_rows = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(dir.data(), n, 3);
+    const Eigen::MatrixXd as_rows =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(dir.data(), n,
+                                                                                    3);
     const Eigen::MatrixXd joints = model.j_regressor * as_rows;  // K x 3
     for (int j = 0; j < k; ++j)
       for (int c = 0; c < 3; ++c) info.joint_directions(3 * j + c, d.direction) = joints(j, c);
@@ -99,28 +103,38 @@ Eigen::VectorXd dmplAt(const Motion& motion, int frame, double t, int directions
   const int last = static_cast<int>(motion.dmpls.rows()) - 1;
   const int f0 = std::min(frame, last), f1 = std::min(frame + 1, last);
   const int d = std::min<int>(directions, static_cast<int>(motion.dmpls.cols()));
-  c.head(d) = (1 - t) * motion.dmpls.row(f0).head(d).transpose() + t * motion.dmpls.row(f1).head(d).transpose();
+  c.head(d) = (1 - t) * motion.dmpls.row(f0).head(d).transpose() +
+              t * motion.dmpls.row(f1).head(d).transpose();
   return c;
 }
 
-Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local, const Eigen::Matrix3d& up,
-                      int frame, AnimationClip* clip) {
+Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local,
+                      const Eigen::Matrix3d& up, int frame, AnimationClip* clip) {
   const DmplInfo& info = asset.metadata.dmpl;
   std::map<std::string, int> index;
-  for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i) index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
+  for (size_t i = 0; i < asset.mesh.morph_targets.size(); ++i)
+    index[asset.mesh.morph_targets[i].name] = static_cast<int>(i);
   for (const DmplLayout& d : info.targets)
-    clip->morph_weights(frame, index.at(d.target)) = static_cast<float>(d.scale * c[d.direction] + d.offset);
+    clip->morph_weights(frame, index.at(d.target)) =
+        static_cast<float>(d.scale * c[d.direction] + d.offset);
   const Skeleton& s = asset.skeleton;
   const int k = static_cast<int>(s.parents.size());
   const Eigen::VectorXd flat = info.joint_directions * c;
-  const Eigen::MatrixXd delta = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(flat.data(), k, 3);
+  const Eigen::MatrixXd delta =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(flat.data(), k,
+                                                                                  3);
   const Eigen::MatrixXd da = skinTranslations(s.parents, s.rest_world + delta, local, up) -
                              skinTranslations(s.parents, s.rest_world, local, up);
   clip->dmpl_joint_error = std::max(clip->dmpl_joint_error, maxSkinError(asset.mesh, da));
   if (!info.animate_joints) return Status();
   if (clip->joint_translations.empty()) {
-    const uint64_t bytes = static_cast<uint64_t>(k) * static_cast<uint64_t>(clip->morph_weights.rows()) * sizeof(Eigen::Vector3d);
-    if (Status st = clip->charge.add(bytes, clip->name, "joint translations (--dmpl-joints regressed)"); !st) return st;
+    const uint64_t bytes = static_cast<uint64_t>(k) *
+                           static_cast<uint64_t>(clip->morph_weights.rows()) *
+                           sizeof(Eigen::Vector3d);
+    if (Status st =
+            clip->charge.add(bytes, clip->name, "joint translations (--dmpl-joints regressed)");
+        !st)
+      return st;
     clip->joint_translations.assign(k, std::vector<Eigen::Vector3d>(clip->morph_weights.rows()));
   }
   for (int j = 0; j < k; ++j) {
@@ -139,8 +153,9 @@ Status checkDmplCoefficients(const Motion& motion, const std::string& path, int 
                              const std::string& basis_path) {
   if (!motion.dmpls_problem.empty()) return makeError(motion.dmpls_problem);
   if (motion.dmpls.rows() > 0 && motion.dmpls.cols() != directions)
-    return makeError(path + ": 'dmpls' has " + std::to_string(motion.dmpls.cols()) + " columns; the DMPL basis " +
-                     basis_path + " has " + std::to_string(directions) + " directions");
+    return makeError(path + ": 'dmpls' has " + std::to_string(motion.dmpls.cols()) +
+                     " columns; the DMPL basis " + basis_path + " has " +
+                     std::to_string(directions) + " directions");
   return Status();
 }
 

@@ -31,20 +31,21 @@ namespace smpl {
 
 // What exportAsset (export_asset.h) needs to add the targets.
 struct DmplInput {
-  const DmplBasis* basis = nullptr;     // null: no DMPL targets
-  std::vector<DmplLayout> layout;       // dmplLayout()
-  bool animate_joints = false;          // --dmpl-joints regressed
+  const DmplBasis* basis = nullptr;  // null: no DMPL targets
+  std::vector<DmplLayout> layout;    // dmplLayout()
+  bool animate_joints = false;       // --dmpl-joints regressed
 };
 
 // weight = scale * c + offset with the range [min(0, min c), max(0, max c)]
 // of direction i over every frame of `motions` mapped to [0, 1]; without any
 // coefficients (static export): scale 1, offset 0 (weights 0 = rest).
-std::vector<DmplLayout> dmplLayout(int directions, const std::vector<const Eigen::MatrixXd*>& coefficients);
+std::vector<DmplLayout> dmplLayout(int directions,
+                                   const std::vector<const Eigen::MatrixXd*>& coefficients);
 
 // Appends the targets dmpl_<i> (i < basis.directions.cols()) to the mesh,
 // shifts the base mesh by the offsets, and fills asset->metadata.dmpl.
-void addDmplTargets(const BodyModel& model, const DmplBasis& basis, const std::vector<DmplLayout>& layout,
-                    bool animate_joints, Asset* asset);
+void addDmplTargets(const BodyModel& model, const DmplBasis& basis,
+                    const std::vector<DmplLayout>& layout, bool animate_joints, Asset* asset);
 
 // The coefficients of source position frame + t (linear), first D columns.
 Eigen::VectorXd dmplAt(const Motion& motion, int frame, double t, int directions);
@@ -54,8 +55,8 @@ Eigen::VectorXd dmplAt(const Motion& motion, int frame, double t, int directions
 // `frame` must be filled; `local` = the frame's local rotations as exported,
 // the root's including the up-axis rotation `up`). Errors: the joint
 // translations would exceed the memory budget (charged to clip->charge).
-Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local, const Eigen::Matrix3d& up,
-                      int frame, AnimationClip* clip);
+Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotations& local,
+                      const Eigen::Matrix3d& up, int frame, AnimationClip* clip);
 
 // Motion coefficients usable with a basis of `directions` columns: errors
 // name the motion file `path` (shape, NaN from Motion::dmpls_problem, width

@@ -14,13 +14,16 @@ CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, 
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl) {
   ExportOptions resolved = options;
-  resolved.encoding = resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
+  resolved.encoding =
+      resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
   Result<Asset> asset = buildAsset(model, resolved);
   if (!asset) return asset;
-  if (dmpl && dmpl->basis) addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
+  if (dmpl && dmpl->basis)
+    addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
   for (const MotionInput& m : motions) {
     if (!m.motion) return makeError(m.context + ": no motion given");
-    Result<AnimationClip> clip = bakeAnimation(model, *asset, *m.motion, m.animation, m.context, m.progress);
+    Result<AnimationClip> clip =
+        bakeAnimation(model, *asset, *m.motion, m.animation, m.context, m.progress);
     if (!clip) return clip.error();
     asset->animations.push_back(std::move(*clip));
   }

@@ -25,7 +25,8 @@ SparseSkin trimUnusedSlots(SparseSkin skin) {
 
 }  // namespace
 
-SparseSkin exportSkin(const BodyModel& model, const ShapedBody& body, const ExportOptions& options) {
+SparseSkin exportSkin(const BodyModel& model, const ShapedBody& body,
+                      const ExportOptions& options) {
   const int m = influencesFor(model, options);
   SparseSkin skin;
   if (options.skin_weights == SkinWeightMethod::Truncated) {

@@ -45,7 +45,8 @@ Json basisJson(const CorrectiveBasis& basis) {
   o["features"] = basis.projection.cols();
   Json matrix = Json::array();
   for (Eigen::Index k = 0; k < basis.projection.rows(); ++k)
-    for (Eigen::Index n = 0; n < basis.projection.cols(); ++n) matrix.push_back(basis.projection(k, n));
+    for (Eigen::Index n = 0; n < basis.projection.cols(); ++n)
+      matrix.push_back(basis.projection(k, n));
   o["matrix"] = std::move(matrix);
   o["scale"] = basis.scale;
   o["offset"] = basis.offset;

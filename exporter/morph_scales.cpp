@@ -38,7 +38,8 @@ void foldScalesIntoMetadata(const std::vector<double>& s, const SkinnedMesh& mes
         break;
       }
   CorrectiveBasis& basis = metadata->corrective_basis;
-  for (size_t k = 0; k < basis.targets.size() && k < basis.scale.size() && k < basis.offset.size(); ++k)
+  for (size_t k = 0; k < basis.targets.size() && k < basis.scale.size() && k < basis.offset.size();
+       ++k)
     for (size_t n = 0; n < mesh.morph_targets.size() && n < s.size(); ++n)
       if (mesh.morph_targets[n].name == basis.targets[k]) {
         basis.scale[k] *= s[n];

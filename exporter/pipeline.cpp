@@ -4,11 +4,11 @@
 #include <numeric>
 #include <optional>
 
+#include "core/load/uv_source.h"
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/export_skin.h"
-#include "core/load/uv_source.h"
 
 namespace smpl {
 namespace {
@@ -20,29 +20,40 @@ Eigen::VectorXd toVector(const std::vector<double>& v) {
 // Options that do not fit the model: usage errors (exit 1 in the CLI).
 Status checkOptions(const BodyModel& model, const ExportOptions& o) {
   if (static_cast<int>(o.betas.size()) > model.numBetas())
-    return makeError("betas: " + std::to_string(o.betas.size()) + " values given; the model " + model.name +
-                     " has " + std::to_string(model.numBetas()), ErrorKind::Usage);
+    return makeError("betas: " + std::to_string(o.betas.size()) + " values given; the model " +
+                         model.name + " has " + std::to_string(model.numBetas()),
+                     ErrorKind::Usage);
   if (static_cast<int>(o.expression.size()) > model.numExpressions())
-    return makeError("expression: " + std::to_string(o.expression.size()) + " values given; the model " +
-                     model.name + " has " + std::to_string(model.numExpressions()), ErrorKind::Usage);
-  if (o.max_influences != kAllInfluences && (o.max_influences < 1 || o.max_influences > model.numJoints()))
+    return makeError("expression: " + std::to_string(o.expression.size()) +
+                         " values given; the model " + model.name + " has " +
+                         std::to_string(model.numExpressions()),
+                     ErrorKind::Usage);
+  if (o.max_influences != kAllInfluences &&
+      (o.max_influences < 1 || o.max_influences > model.numJoints()))
     return makeError("--max-influences must be between 1 and " + std::to_string(model.numJoints()) +
-                     " (the model's joints) or 'all', got " + std::to_string(o.max_influences), ErrorKind::Usage);
+                         " (the model's joints) or 'all', got " + std::to_string(o.max_influences),
+                     ErrorKind::Usage);
   if (o.shape_keys < 0 || o.shape_keys > model.numBetas())
     return makeError("--shape-keys " + std::to_string(o.shape_keys) + ": the model has " +
-                     std::to_string(model.numBetas()) + " shape directions", ErrorKind::Usage);
+                         std::to_string(model.numBetas()) + " shape directions",
+                     ErrorKind::Usage);
   if (o.expression_keys < 0 || o.expression_keys > model.numExpressions())
     return makeError("--expression-keys " + std::to_string(o.expression_keys) + ": the model has " +
-                     std::to_string(model.numExpressions()) + " expression directions", ErrorKind::Usage);
+                         std::to_string(model.numExpressions()) + " expression directions",
+                     ErrorKind::Usage);
   if (o.corrective_basis < 0 || o.corrective_basis > model.numPoseFeatures())
     return makeError("--corrective-basis " + std::to_string(o.corrective_basis) + ": expected 1.." +
-                     std::to_string(model.numPoseFeatures()) + " (the model has " +
-                     std::to_string(model.numPoseFeatures()) + " pose correctives)", ErrorKind::Usage);
+                         std::to_string(model.numPoseFeatures()) + " (the model has " +
+                         std::to_string(model.numPoseFeatures()) + " pose correctives)",
+                     ErrorKind::Usage);
   if (o.corrective_basis > 0 && !o.correctives)
-    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)", ErrorKind::Usage);
+    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)",
+                     ErrorKind::Usage);
   if (o.corrective_basis > 0 && o.encoding == CorrectiveEncoding::Split)
-    return makeError("--corrective-basis drives its targets with signed or unit weights; it conflicts with "
-                     "--corrective-weights split", ErrorKind::Usage);
+    return makeError(
+        "--corrective-basis drives its targets with signed or unit weights; it conflicts with "
+        "--corrective-weights split",
+        ErrorKind::Usage);
   return Status();
 }
 
@@ -79,7 +90,8 @@ MorphTarget directionTarget(std::string name, const Eigen::MatrixXd& dirs, int c
   t.name = std::move(name);
   t.deltas.resize(static_cast<Eigen::Index>(source_vertex.size()), 3);
   for (size_t i = 0; i < source_vertex.size(); ++i)
-    for (int c = 0; c < 3; ++c) t.deltas(i, c) = static_cast<float>(dirs(3 * source_vertex[i] + c, col) / scale);
+    for (int c = 0; c < 3; ++c)
+      t.deltas(i, c) = static_cast<float>(dirs(3 * source_vertex[i] + c, col) / scale);
   return t;
 }
 
@@ -99,7 +111,8 @@ CorrectiveLayout encodedLayout(const BodyModel& model, int n, CorrectiveEncoding
 void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
   for (Eigen::Index i = 0; i < mesh->positions.rows(); ++i)
     for (int c = 0; c < 3; ++c)
-      mesh->positions(i, c) = static_cast<float>(mesh->positions(i, c) - shift(3 * mesh->source_vertex[i] + c));
+      mesh->positions(i, c) =
+          static_cast<float>(mesh->positions(i, c) - shift(3 * mesh->source_vertex[i] + c));
 }
 
 // Split encoding of feature n (pipeline.h): one rectified target per sign
@@ -108,10 +121,14 @@ void addSplitCorrective(const BodyModel& model, int n, Asset* asset) {
   const bool diagonal = (n % 9) / 3 == n % 3;
   const std::string name = correctiveTargetName(model, n);
   std::vector<CorrectiveLayout> parts;
-  if (diagonal) parts.push_back(CorrectiveLayout{n, name, -0.5, 0.0, true});
-  else parts = {CorrectiveLayout{n, name + "_pos", 1.0, 0.0, true}, CorrectiveLayout{n, name + "_neg", -1.0, 0.0, true}};
+  if (diagonal)
+    parts.push_back(CorrectiveLayout{n, name, -0.5, 0.0, true});
+  else
+    parts = {CorrectiveLayout{n, name + "_pos", 1.0, 0.0, true},
+             CorrectiveLayout{n, name + "_neg", -1.0, 0.0, true}};
   for (const CorrectiveLayout& c : parts) {
-    asset->mesh.morph_targets.push_back(directionTarget(c.target, model.posedirs, n, asset->mesh.source_vertex, c.scale));
+    asset->mesh.morph_targets.push_back(
+        directionTarget(c.target, model.posedirs, n, asset->mesh.source_vertex, c.scale));
     asset->metadata.correctives.push_back(c);
   }
 }
@@ -122,7 +139,8 @@ void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset
     return;
   }
   SkinnedMesh& mesh = asset->mesh;
-  Eigen::VectorXd shift = Eigen::VectorXd::Zero(model.posedirs.rows());  // sum (offset/scale) P_n, in double
+  Eigen::VectorXd shift =
+      Eigen::VectorXd::Zero(model.posedirs.rows());  // sum (offset/scale) P_n, in double
   for (int n = 0; n < model.numPoseFeatures(); ++n) {
     const CorrectiveLayout c = encodedLayout(model, n, o.encoding);
     // weight * delta must equal f * P: delta = P / scale; the offset's
@@ -211,9 +229,12 @@ void buildMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const Sp
 
 const char* correctiveEncodingName(CorrectiveEncoding encoding) {
   switch (encoding) {
-    case CorrectiveEncoding::Unit: return "unit";
-    case CorrectiveEncoding::Split: return "split";
-    default: return "signed";
+    case CorrectiveEncoding::Unit:
+      return "unit";
+    case CorrectiveEncoding::Split:
+      return "split";
+    default:
+      return "signed";
   }
 }
 
@@ -226,8 +247,10 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   if (Status s = checkOptions(model, o); !s) return s.error();
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
-  Result<std::optional<UvLayout>> uv = resolveUvLayout(o.uv_obj, model);  // model UVs, --uv FILE or none
-  if (!uv) return makeError(uv.message(), ErrorKind::Load);  // a UV file that cannot be read: an input
+  Result<std::optional<UvLayout>> uv =
+      resolveUvLayout(o.uv_obj, model);  // model UVs, --uv FILE or none
+  if (!uv)
+    return makeError(uv.message(), ErrorKind::Load);  // a UV file that cannot be read: an input
   Asset asset;
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);

@@ -50,17 +50,18 @@ struct ExportOptions {
   std::vector<double> expression;  // SMPL-X only
   int max_influences = 4;          // 1..K, or kAllInfluences
   SkinWeightMethod skin_weights = SkinWeightMethod::Optimized;  // --skin-weights
-  bool correctives = true;         // one morph target per pose feature
-  CorrectiveEncoding encoding = CorrectiveEncoding::Auto;  // resolved by the caller; Auto acts as Signed here
-  int corrective_basis = 0;        // > 0: K principal components of posedirs replace the P
-                                   // per-feature targets; weights = C f (C in the metadata)
-  int shape_keys = 0;              // also export the first N shape directions
-  int expression_keys = 0;         // also export the first N expression directions
-  std::string uv_obj;              // --uv: "" = the model file's vt/ft if any, "none" = no UVs,
-                                   // an OBJ in the model's vertex order, or <stem>_uv.npy/_ft.npy
+  bool correctives = true;                                      // one morph target per pose feature
+  CorrectiveEncoding encoding =
+      CorrectiveEncoding::Auto;  // resolved by the caller; Auto acts as Signed here
+  int corrective_basis = 0;      // > 0: K principal components of posedirs replace the P
+                                 // per-feature targets; weights = C f (C in the metadata)
+  int shape_keys = 0;            // also export the first N shape directions
+  int expression_keys = 0;       // also export the first N expression directions
+  std::string uv_obj;            // --uv: "" = the model file's vt/ft if any, "none" = no UVs,
+                                 // an OBJ in the model's vertex order, or <stem>_uv.npy/_ft.npy
   std::string name = "body";
-  bool quantize_morphs = false;    // --quantize-morphs: exportAsset folds each corrective's peak
-                                   // into its weights and marks it quantized (morph_scales.h)
+  bool quantize_morphs = false;  // --quantize-morphs: exportAsset folds each corrective's peak
+                                 // into its weights and marks it quantized (morph_scales.h)
 };
 
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& options);

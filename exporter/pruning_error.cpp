@@ -12,9 +12,10 @@ namespace {
 
 ForwardInput shapeInput(const ExportOptions& options) {
   ForwardInput input;
-  input.betas = Eigen::Map<const Eigen::VectorXd>(options.betas.data(), Eigen::Index(options.betas.size()));
-  input.expression =
-      Eigen::Map<const Eigen::VectorXd>(options.expression.data(), Eigen::Index(options.expression.size()));
+  input.betas =
+      Eigen::Map<const Eigen::VectorXd>(options.betas.data(), Eigen::Index(options.betas.size()));
+  input.expression = Eigen::Map<const Eigen::VectorXd>(options.expression.data(),
+                                                       Eigen::Index(options.expression.size()));
   return input;
 }
 
@@ -41,14 +42,16 @@ Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& 
   return err;
 }
 
-Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options, int poses) {
+Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options,
+                                         int poses) {
   ForwardInput shape = shapeInput(options);
   Result<ShapedBody> body = shapeBody(model, shape.betas, shape.expression);
   if (!body) return body.error();
   PruningError err;
   err.influences = influencesFor(model, options);
   err.poses = poses;
-  const Eigen::MatrixXd truncated = denseWeights(pruneWeights(model.weights, err.influences), model.numJoints());
+  const Eigen::MatrixXd truncated =
+      denseWeights(pruneWeights(model.weights, err.influences), model.numJoints());
   Result<SkinError> t = measureSkinError(model, options, truncated, poses);
   if (!t) return t.error();
   err.truncated = *t;
@@ -56,7 +59,8 @@ Result<PruningError> measurePruningError(const BodyModel& model, const ExportOpt
     err.mean_m = t->mean_m, err.max_m = t->max_m;
     return err;
   }
-  const Eigen::MatrixXd exported = denseWeights(exportSkin(model, *body, options), model.numJoints());
+  const Eigen::MatrixXd exported =
+      denseWeights(exportSkin(model, *body, options), model.numJoints());
   Result<SkinError> e = measureSkinError(model, options, exported, poses);
   if (!e) return e.error();
   err.mean_m = e->mean_m, err.max_m = e->max_m;

@@ -26,7 +26,8 @@ struct PruningError {
 };
 
 // Held-out error of `options`' skin (and of truncation) over `poses` poses.
-Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options, int poses);
+Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options,
+                                         int poses);
 
 // Held-out error of one N x K dense weight matrix over `poses` poses (seed 20261124).
 Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& options,

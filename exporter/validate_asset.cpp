@@ -42,7 +42,8 @@ Status checkJoints(const Skeleton& s, const Eigen::MatrixXd& m, const char* what
   for (Eigen::Index r = 0; r < m.rows(); ++r)
     for (Eigen::Index c = 0; c < m.cols(); ++c)
       if (std::string p = problem(m(r, c), true); !p.empty()) {
-        const std::string name = static_cast<size_t>(r) < s.names.size() ? s.names[r] : std::to_string(r);
+        const std::string name =
+            static_cast<size_t>(r) < s.names.size() ? s.names[r] : std::to_string(r);
         return makeError("joint " + name + " " + what + " " + p);
       }
   return Status();
@@ -76,7 +77,8 @@ Status checkClip(const AnimationClip& clip) {
     for (size_t f = 0; f < clip.rotations[j].size(); ++f)
       for (int c = 0; c < 4; ++c)
         if (std::string p = problem(clip.rotations[j][f].coeffs()[c], true); !p.empty())
-          return makeError(what + " joint " + std::to_string(j) + " frame " + std::to_string(f) + " rotation " + p);
+          return makeError(what + " joint " + std::to_string(j) + " frame " + std::to_string(f) +
+                           " rotation " + p);
   for (size_t f = 0; f < clip.root_translation.size(); ++f)
     for (int c = 0; c < 3; ++c)
       if (std::string p = problem(clip.root_translation[f][c], true); !p.empty())
@@ -85,7 +87,8 @@ Status checkClip(const AnimationClip& clip) {
     for (size_t f = 0; f < clip.joint_translations[j].size(); ++f)
       for (int c = 0; c < 3; ++c)
         if (std::string p = problem(clip.joint_translations[j][f][c], true); !p.empty())
-          return makeError(what + " joint " + std::to_string(j) + " frame " + std::to_string(f) + " translation " + p);
+          return makeError(what + " joint " + std::to_string(j) + " frame " + std::to_string(f) +
+                           " translation " + p);
   return checkRows(clip.morph_weights, what + " morph weights of frame", true);
 }
 
@@ -98,9 +101,11 @@ Status checkMetadata(const AssetMetadata& m) {
         return makeError("metadata corrective " + c.target + " scale/offset " + p);
   for (const DmplLayout& d : m.dmpl.targets)
     for (double v : {d.scale, d.offset})
-      if (std::string p = problem(v, false); !p.empty()) return makeError("metadata dmpl " + d.target + " scale/offset " + p);
+      if (std::string p = problem(v, false); !p.empty())
+        return makeError("metadata dmpl " + d.target + " scale/offset " + p);
   const CorrectiveBasis& b = m.corrective_basis;
-  if (Status st = checkRows(b.projection, "metadata corrective basis matrix row", false); !st) return st;
+  if (Status st = checkRows(b.projection, "metadata corrective basis matrix row", false); !st)
+    return st;
   if (Status st = checkList(b.scale, "metadata corrective basis scale", false); !st) return st;
   return checkList(b.offset, "metadata corrective basis offset", false);
 }
@@ -108,13 +113,16 @@ Status checkMetadata(const AssetMetadata& m) {
 }  // namespace
 
 Status validateAsset(const Asset& asset) {
-  if (Status st = checkJoints(asset.skeleton, asset.skeleton.rest_local, "rest offset"); !st) return st;
-  if (Status st = checkJoints(asset.skeleton, asset.skeleton.rest_world, "rest position"); !st) return st;
+  if (Status st = checkJoints(asset.skeleton, asset.skeleton.rest_local, "rest offset"); !st)
+    return st;
+  if (Status st = checkJoints(asset.skeleton, asset.skeleton.rest_world, "rest position"); !st)
+    return st;
   if (Status st = checkMesh(asset.mesh); !st) return st;
   for (const AnimationClip& clip : asset.animations)
     if (Status st = checkClip(clip); !st) return st;
   if (Status st = checkMetadata(asset.metadata); !st) return st;
-  return validateAssetStructure(asset);  // numbers first: a NaN is named as such, not as a bad weight
+  return validateAssetStructure(
+      asset);  // numbers first: a NaN is named as such, not as a bad weight
 }
 
 }  // namespace smpl

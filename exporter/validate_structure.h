@@ -24,7 +24,8 @@ namespace smpl {
 //     of T non-zero quaternions; root translations 0 or T; morph weights
 //     empty (no weight channel) or T x (#morph targets).
 // Error: "<where>: <problem>; expected <rule>", e.g.
-//   "animation 'walk': key time of frame 3 (0.1) is not after frame 2 (0.1); expected strictly increasing times".
+//   "animation 'walk': key time of frame 3 (0.1) is not after frame 2 (0.1); expected strictly
+//   increasing times".
 Status validateAssetStructure(const Asset& asset);
 
 }  // namespace smpl

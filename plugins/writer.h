@@ -11,18 +11,19 @@
 namespace smpl {
 
 struct WriterOptions {
-  bool binary = true;          // glTF: .glb vs .gltf
+  bool binary = true;  // glTF: .glb vs .gltf
   // .gltf only: "" embeds the buffer as a base64 data URI; else the buffer is a
   // separate file of this name beside the output (the JSON's buffer "uri").
   std::string buffer_uri;
-  std::string fbx_units = "m"; // FBX: "m" or "cm"
-  int fbx_version = 7400;      // FBX: 7400 or 7500
+  std::string fbx_units = "m";  // FBX: "m" or "cm"
+  int fbx_version = 7400;       // FBX: 7400 or 7500
   // glTF compact encodings (each optional; see README "Size"):
-  double morph_epsilon = 0.0;  // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors
+  double morph_epsilon =
+      0.0;  // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors
   bool quantize_morphs = false;  // --quantize-morphs; the export job hands it to exportAsset
                                  // (ExportOptions), which marks MorphTarget::quantized: writers
                                  // read the mark, not this flag
-  bool draco = false;          // KHR_draco_mesh_compression for the base mesh (sequential, order kept)
+  bool draco = false;  // KHR_draco_mesh_compression for the base mesh (sequential, order kept)
 };
 
 struct Writer {

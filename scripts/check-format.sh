@@ -6,7 +6,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/.."
 command -v clang-format >/dev/null || { echo "check-format: clang-format is not installed (apt-get install clang-format)"; exit 1; }
-mapfile -t files < <(git ls-files '*.cpp' '*.h' '*.hpp' '*.cs' | grep -v '^unreal/\|^unity/')
+mapfile -t files < <(git ls-files '*.cpp' '*.h' '*.hpp' | grep -v '^unreal/\|^unity/')
 if [[ "${1:-}" == "--fix" ]]; then
   clang-format -i "${files[@]}"
   exit 0

@@ -88,12 +88,13 @@ Result<Eigen::MatrixXf> readAccessor(const tinygltf::Model& m, int index) {
   Eigen::MatrixXf out = Eigen::MatrixXf::Zero(Eigen::Index(a.count), 3);
   Status st;
   if (a.bufferView >= 0)
-    st = readVec3(m, a.bufferView, a.byteOffset, a.componentType, a.normalized, a.count, nullptr, &out);
+    st = readVec3(m, a.bufferView, a.byteOffset, a.componentType, a.normalized, a.count, nullptr,
+                  &out);
   if (st && a.sparse.isSparse) {
     Result<std::vector<uint32_t>> rows = readIndices(m, a);
     if (!rows) return rows.error();
-    st = readVec3(m, a.sparse.values.bufferView, size_t(a.sparse.values.byteOffset), a.componentType,
-                  a.normalized, rows->size(), &*rows, &out);
+    st = readVec3(m, a.sparse.values.bufferView, size_t(a.sparse.values.byteOffset),
+                  a.componentType, a.normalized, rows->size(), &*rows, &out);
   }
   if (!st) return st.error();
   return out;
@@ -109,8 +110,9 @@ Result<Eigen::MatrixXf> dracoPositions(const tinygltf::Model& m, const tinygltf:
   std::map<std::string, int> ids;
   const tinygltf::Value& attributes = ext.Get("attributes");
   for (const std::string& key : attributes.Keys()) ids[key] = attributes.Get(key).GetNumberAsInt();
-  Result<MeshStreams> mesh = decodeDraco(
-      std::string(reinterpret_cast<const char*>(&data[bv.byteOffset]), bv.byteLength), ids, vertices);
+  Result<MeshStreams> mesh =
+      decodeDraco(std::string(reinterpret_cast<const char*>(&data[bv.byteOffset]), bv.byteLength),
+                  ids, vertices);
   if (!mesh) return mesh.error();
   Eigen::MatrixXf out(Eigen::Index(vertices), 3);
   for (size_t v = 0; v < vertices; ++v)
@@ -174,9 +176,9 @@ Result<DecodedMorphs> decodeMorphs(const std::string& raw) {
   std::string err, warn;
   const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
   const bool glb = bytes.compare(0, 4, "glTF") == 0;
-  const bool ok = glb ? loader.LoadBinaryFromMemory(&m, &err, &warn, p, unsigned(bytes.size()))
-                      : loader.LoadASCIIFromString(&m, &err, &warn, bytes.data(),
-                                                   unsigned(bytes.size()), "");
+  const bool ok =
+      glb ? loader.LoadBinaryFromMemory(&m, &err, &warn, p, unsigned(bytes.size()))
+          : loader.LoadASCIIFromString(&m, &err, &warn, bytes.data(), unsigned(bytes.size()), "");
   if (!ok) return makeError("glTF: cannot load: " + err);
   if (m.meshes.empty() || m.meshes[0].primitives.empty()) return makeError("glTF: no mesh");
   const tinygltf::Mesh& mesh = m.meshes[0];
@@ -185,9 +187,10 @@ Result<DecodedMorphs> decodeMorphs(const std::string& raw) {
   auto draco = prim.extensions.find("KHR_draco_mesh_compression");
   const int pos = prim.attributes.count("POSITION") ? prim.attributes.at("POSITION") : -1;
   if (pos < 0 || size_t(pos) >= m.accessors.size()) return makeError("glTF: no POSITION");
-  Result<Eigen::MatrixXf> base = draco != prim.extensions.end()
-                                     ? dracoPositions(m, draco->second, m.accessors[size_t(pos)].count)
-                                     : readAccessor(m, pos);
+  Result<Eigen::MatrixXf> base =
+      draco != prim.extensions.end()
+          ? dracoPositions(m, draco->second, m.accessors[size_t(pos)].count)
+          : readAccessor(m, pos);
   if (!base) return base.error();
   out.positions = std::move(*base);
   for (const auto& target : prim.targets) {
@@ -258,7 +261,8 @@ Result<double> morphError(const DecodedMorphs& file, const Asset& exact, int num
     exact_d.push_back(&m.morph_targets[n].deltas);
     file_d.push_back(&file.deltas[n]);
   }
-  const Eigen::MatrixXd w_exact = weightsOverPoses(names, rest, exact.metadata.correctives, features);
+  const Eigen::MatrixXd w_exact =
+      weightsOverPoses(names, rest, exact.metadata.correctives, features);
   const Eigen::MatrixXd w_file =
       weightsOverPoses(file.names.size() == names.size() ? file.names : names, file.rest_weights,
                        file.correctives, features);

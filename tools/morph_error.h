@@ -3,11 +3,10 @@
 // expansion and dequantisation, and Draco for the base mesh), and compare the
 // pre-skinning mesh base + sum_n w_n(f) d_n with the exact asset's over a
 // fixed pose set (core/pose_sampler.h, seeded). w_n(f) = scale * f[feature] +
-// offset from each side's own metadata (max(0, .) for "rectified" entries) (so a scale folded into the weights,
-// morph_scales.h, is accounted for); targets without a corrective entry use
-// their rest weight. Linear blend skinning with weights summing to 1 moves an
-// offset by at most its length, so the result bounds the added vertex error
-// of every posed vertex.
+// offset from each side's own metadata (max(0, .) for "rectified" entries) (so a scale folded into
+// the weights, morph_scales.h, is accounted for); targets without a corrective entry use their rest
+// weight. Linear blend skinning with weights summing to 1 moves an offset by at most its length, so
+// the result bounds the added vertex error of every posed vertex.
 //
 //   Result<DecodedMorphs> file = decodeMorphs(glb_bytes);
 //   double metres = morphError(*file, asset);  // max over 32 poses and vertices
@@ -23,10 +22,10 @@
 namespace smpl {
 
 struct DecodedMorphs {
-  Eigen::MatrixXf positions;             // V x 3 base mesh as a reader sees it
-  std::vector<Eigen::MatrixXf> deltas;   // per target, V x 3, dense, in metres-per-weight
-  std::vector<std::string> names;        // mesh.extras.targetNames
-  std::vector<double> rest_weights;      // mesh.weights
+  Eigen::MatrixXf positions;                  // V x 3 base mesh as a reader sees it
+  std::vector<Eigen::MatrixXf> deltas;        // per target, V x 3, dense, in metres-per-weight
+  std::vector<std::string> names;             // mesh.extras.targetNames
+  std::vector<double> rest_weights;           // mesh.weights
   std::vector<CorrectiveLayout> correctives;  // asset.extras.smpl.correctives
 };
 

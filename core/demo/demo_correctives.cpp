@@ -78,23 +78,28 @@ V3 lbs(const std::vector<Bone>& bones, const std::vector<Influence>& inf, V3 p, 
     t = t + V3{b.t[0], b.t[1], b.t[2]} * in.weight;
   }
   return V3{m[0] * p.x + m[1] * p.y + m[2] * p.z, m[3] * p.x + m[4] * p.y + m[5] * p.z,
-            m[6] * p.x + m[7] * p.y + m[8] * p.z} + t;
+            m[6] * p.x + m[7] * p.y + m[8] * p.z} +
+         t;
 }
 
 V3 dqs(const std::vector<Bone>& bones, const std::vector<Influence>& inf, V3 p) {
   const Influence* pivot = &inf[0];
-  for (const Influence& in : inf) if (in.weight > pivot->weight) pivot = &in;
+  for (const Influence& in : inf)
+    if (in.weight > pivot->weight) pivot = &in;
   const double* qp = bones[pivot->joint].q;
   double b0[4] = {0, 0, 0, 0}, be[4] = {0, 0, 0, 0};
   for (const Influence& in : inf) {
     const Bone& b = bones[in.joint];
     // Shortest path: flip quaternions on the other hemisphere from the pivot.
-    const double s = (b.q[0] * qp[0] + b.q[1] * qp[1] + b.q[2] * qp[2] + b.q[3] * qp[3]) < 0 ? -in.weight : in.weight;
+    const double s = (b.q[0] * qp[0] + b.q[1] * qp[1] + b.q[2] * qp[2] + b.q[3] * qp[3]) < 0
+                         ? -in.weight
+                         : in.weight;
     for (int c = 0; c < 4; ++c) b0[c] += s * b.q[c], be[c] += s * b.d[c];
   }
   const double norm = std::sqrt(b0[0] * b0[0] + b0[1] * b0[1] + b0[2] * b0[2] + b0[3] * b0[3]);
   const double w0 = b0[0] / norm, we = be[0] / norm;
-  const V3 v0{b0[1] / norm, b0[2] / norm, b0[3] / norm}, ve{be[1] / norm, be[2] / norm, be[3] / norm};
+  const V3 v0{b0[1] / norm, b0[2] / norm, b0[3] / norm},
+      ve{be[1] / norm, be[2] / norm, be[3] / norm};
   const V3 rotated = p + cross(v0, p) * (2 * w0) + cross(v0, cross(v0, p)) * 2;
   return rotated + (ve * w0 - v0 * we + cross(v0, ve)) * 2;
 }
@@ -114,17 +119,20 @@ std::vector<Eigen::VectorXd> sampleDemoPoses(int count, uint64_t seed) {
   uint64_t state = seed;
   std::vector<Eigen::VectorXd> poses(count, Eigen::VectorXd(3 * kNumJoints));
   for (Eigen::VectorXd& pose : poses)
-    for (int i = 0; i < 3 * kNumJoints; ++i) pose[i] = (2.0 * uniform01(&state) - 1.0) * kPoseRange[i / 3];
+    for (int i = 0; i < 3 * kNumJoints; ++i)
+      pose[i] = (2.0 * uniform01(&state) - 1.0) * kPoseRange[i / 3];
   return poses;
 }
 
-Eigen::MatrixXd dualQuaternionSkin(const BodyModel& model, const std::vector<Eigen::Matrix3d>& rotations) {
+Eigen::MatrixXd dualQuaternionSkin(const BodyModel& model,
+                                   const std::vector<Eigen::Matrix3d>& rotations) {
   const Eigen::MatrixXd joints = model.j_regressor * model.v_template;
   const std::vector<Bone> bones = skinningBones(model, joints, rotations);
   const auto inf = influences(model.weights);
   Eigen::MatrixXd out(model.numVertices(), 3);
   for (int i = 0; i < model.numVertices(); ++i) {
-    const V3 v = dqs(bones, inf[i], {model.v_template(i, 0), model.v_template(i, 1), model.v_template(i, 2)});
+    const V3 v = dqs(bones, inf[i],
+                     {model.v_template(i, 0), model.v_template(i, 1), model.v_template(i, 2)});
     out.row(i) << v.x, v.y, v.z;
   }
   return out;
@@ -207,7 +215,9 @@ Eigen::MatrixXd fitPosedirs(const BodyModel& model, int num_poses, uint64_t seed
     a.diagonal().array() += 1e-3 * a.trace() / m + 1e-9;
     const Eigen::LLT<Eigen::MatrixXd> llt(a);
     for (int i : members[g]) {
-      const Eigen::MatrixXd p = llt.solve(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(xty[i].data(), m, 3));
+      const Eigen::MatrixXd p =
+          llt.solve(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+              xty[i].data(), m, 3));
       for (int r = 0; r < m; ++r)
         for (int c = 0; c < 3; ++c) posedirs(3 * i + c, cols[r]) = p(r, c);
     }

@@ -31,7 +31,8 @@ Grid sampleField(const Rig& rig, double cell) {
   V3 lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
   for (const Part& p : rig.parts)
     for (const V3& c : {p.a, p.b}) {
-      const double r = std::max(p.ra, p.rb) * std::max(p.squash.x, std::max(p.squash.y, p.squash.z));
+      const double r =
+          std::max(p.ra, p.rb) * std::max(p.squash.x, std::max(p.squash.y, p.squash.z));
       lo = {std::min(lo.x, c.x - r), std::min(lo.y, c.y - r), std::min(lo.z, c.z - r)};
       hi = {std::max(hi.x, c.x + r), std::max(hi.y, c.y + r), std::max(hi.z, c.z + r)};
     }
@@ -171,7 +172,8 @@ int findRoot(std::vector<int>& parent, int v) {
 
 // Keeps the connected component with the most faces (drops specks that a
 // coarse grid can cut off thin parts) and renumbers vertices in order.
-Mesh largestComponent(const std::vector<V3>& vertices, const std::vector<std::array<int, 3>>& faces) {
+Mesh largestComponent(const std::vector<V3>& vertices,
+                      const std::vector<std::array<int, 3>>& faces) {
   std::vector<int> parent(vertices.size());
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto& f : faces)
@@ -230,7 +232,8 @@ void relax(const Rig& rig, Mesh* m, int iterations) {
   for (int f = 0; f < m->faces.rows(); ++f)
     for (int q = 0; q < 3; ++q) nbr[m->faces(f, q)].push_back(m->faces(f, (q + 1) % 3));
   std::vector<V3> p(n), next(n);
-  for (int v = 0; v < n; ++v) p[v] = project(rig, {m->vertices(v, 0), m->vertices(v, 1), m->vertices(v, 2)});
+  for (int v = 0; v < n; ++v)
+    p[v] = project(rig, {m->vertices(v, 0), m->vertices(v, 1), m->vertices(v, 2)});
   for (int it = 0; it < iterations; ++it) {
     for (int v = 0; v < n; ++v) {
       V3 avg;

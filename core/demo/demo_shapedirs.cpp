@@ -23,10 +23,30 @@ namespace demo {
 namespace {
 
 enum Joint {
-  kPelvis = 0, kLHip = 1, kRHip = 2, kSpine1 = 3, kLKnee = 4, kRKnee = 5, kSpine2 = 6,
-  kLAnkle = 7, kRAnkle = 8, kSpine3 = 9, kLFoot = 10, kRFoot = 11, kNeck = 12,
-  kLCollar = 13, kRCollar = 14, kHead = 15, kLShoulder = 16, kRShoulder = 17,
-  kLElbow = 18, kRElbow = 19, kLWrist = 20, kRWrist = 21, kLHand = 22, kRHand = 23
+  kPelvis = 0,
+  kLHip = 1,
+  kRHip = 2,
+  kSpine1 = 3,
+  kLKnee = 4,
+  kRKnee = 5,
+  kSpine2 = 6,
+  kLAnkle = 7,
+  kRAnkle = 8,
+  kSpine3 = 9,
+  kLFoot = 10,
+  kRFoot = 11,
+  kNeck = 12,
+  kLCollar = 13,
+  kRCollar = 14,
+  kHead = 15,
+  kLShoulder = 16,
+  kRShoulder = 17,
+  kLElbow = 18,
+  kRElbow = 19,
+  kLWrist = 20,
+  kRWrist = 21,
+  kLHand = 22,
+  kRHand = 23
 };
 
 constexpr int kNumShapes = 10;
@@ -61,36 +81,46 @@ V3 displacement(const Rig& rig, const Eigen::MatrixXd& w, int i, V3 p, int shape
   static const double kGirth[kNumJoints] = {0.12, 0.10, 0.10, 0.13, 0.08, 0.08, 0.12, 0.04,
                                             0.04, 0.10, 0.03, 0.03, 0.08, 0.08, 0.08, 0.03,
                                             0.10, 0.10, 0.08, 0.08, 0.04, 0.04, 0.03, 0.03};
-  static const double kMuscle[kNumJoints] = {0, 0.14, 0.14, 0, 0.16, 0.16, 0, 0, 0, 0, 0, 0,
-                                             0, 0,    0,    0, 0.2, 0.2,  0.14, 0.14, 0, 0, 0, 0};
+  static const double kMuscle[kNumJoints] = {0, 0.14, 0.14, 0, 0.16, 0.16, 0,    0,    0, 0, 0, 0,
+                                             0, 0,    0,    0, 0.2,  0.2,  0.14, 0.14, 0, 0, 0, 0};
   const double side = p.x > 0 ? 1.0 : -1.0;
   switch (shape) {
-    case 0: return {0.012 * p.x, 0.036 * p.y, 0.012 * p.z};
-    case 1: return radial(rig, w, i, p, kGirth, false);
+    case 0:
+      return {0.012 * p.x, 0.036 * p.y, 0.012 * p.z};
+    case 1:
+      return radial(rig, w, i, p, kGirth, false);
     case 2: {
-      const double arm = mask(w, i, {kLShoulder, kRShoulder, kLElbow, kRElbow, kLWrist, kRWrist, kLHand, kRHand});
+      const double arm =
+          mask(w, i, {kLShoulder, kRShoulder, kLElbow, kRElbow, kLWrist, kRWrist, kLHand, kRHand});
       const double girdle = 0.6 * mask(w, i, {kLCollar, kRCollar}) + 0.2 * w(i, kSpine3);
       return {0.022 * (side * arm + clamp1(p.x / 0.1) * girdle), 0, 0};
     }
     case 3: {
-      const double leg = mask(w, i, {kLHip, kRHip, kLKnee, kRKnee, kLAnkle, kRAnkle, kLFoot, kRFoot});
+      const double leg =
+          mask(w, i, {kLHip, kRHip, kLKnee, kRKnee, kLAnkle, kRAnkle, kLFoot, kRFoot});
       const double pelvis = w(i, kPelvis) + 0.3 * w(i, kSpine1);
       return {0.018 * (clamp1(p.x / 0.015) * leg + clamp1(p.x / 0.12) * pelvis), 0, 0};
     }
-    case 4: return {0, 0.045 * smoothMin(p.y, 0.86, 0.1) / 0.86, 0};
-    case 5: return {0.03 * side * std::clamp((std::abs(p.x) - 0.17) / 0.51, 0.0, 1.0), 0, 0};
-    case 6: return (p - V3{0, 1.615, 0.015}) * (0.08 * (w(i, kHead) + 0.3 * w(i, kNeck)));
+    case 4:
+      return {0, 0.045 * smoothMin(p.y, 0.86, 0.1) / 0.86, 0};
+    case 5:
+      return {0.03 * side * std::clamp((std::abs(p.x) - 0.17) / 0.51, 0.0, 1.0), 0, 0};
+    case 6:
+      return (p - V3{0, 1.615, 0.015}) * (0.08 * (w(i, kHead) + 0.3 * w(i, kNeck)));
     case 7: {
       const double front = std::clamp((p.z + 0.02) / 0.08, 0.0, 1.0);
-      return {0, 0, 0.035 * front * gauss(p.y - 1.02, 0.09) * gauss(p.x, 0.12) *
-                        mask(w, i, {kPelvis, kSpine1, kSpine2})};
+      return {0, 0,
+              0.035 * front * gauss(p.y - 1.02, 0.09) * gauss(p.x, 0.12) *
+                  mask(w, i, {kPelvis, kSpine1, kSpine2})};
     }
     case 8: {
       const double front = std::clamp((p.z + 0.02) / 0.08, 0.0, 1.0);
-      return {0, 0, 0.025 * front * gauss(p.y - 1.28, 0.07) * gauss(std::abs(p.x) - 0.08, 0.06) *
-                        mask(w, i, {kSpine2, kSpine3})};
+      return {0, 0,
+              0.025 * front * gauss(p.y - 1.28, 0.07) * gauss(std::abs(p.x) - 0.08, 0.06) *
+                  mask(w, i, {kSpine2, kSpine3})};
     }
-    default: return radial(rig, w, i, p, kMuscle, true);
+    default:
+      return radial(rig, w, i, p, kMuscle, true);
   }
 }
 

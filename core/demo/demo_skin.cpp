@@ -27,7 +27,8 @@ Eigen::MatrixXd skinWeights(const Rig& rig, const Eigen::MatrixXd& vertices) {
   Eigen::MatrixXd w(n, kNumJoints);
   for (int i = 0; i < n; ++i) {
     double d[kNumJoints], best = 1e9;
-    for (int k = 0; k < kNumJoints; ++k) best = std::min(best, d[k] = partDistance(rig.parts[k], row(vertices, i)));
+    for (int k = 0; k < kNumJoints; ++k)
+      best = std::min(best, d[k] = partDistance(rig.parts[k], row(vertices, i)));
     double sum = 0;
     for (int k = 0; k < kNumJoints; ++k) sum += w(i, k) = std::exp(-(d[k] - best) / kSkinFalloff);
     for (int k = 0; k < kNumJoints; ++k) w(i, k) = w(i, k) / sum < kMinWeight ? 0.0 : w(i, k);
@@ -88,7 +89,8 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> jointRegressor(const Rig& rig,
       ids.push_back(i);
       prior.push_back(std::exp(-0.5 * r * r / (sigma * sigma)));
     }
-    const Eigen::VectorXd w = tiltToJoint(pts, Eigen::Map<Eigen::VectorXd>(prior.data(), prior.size()), joint);
+    const Eigen::VectorXd w =
+        tiltToJoint(pts, Eigen::Map<Eigen::VectorXd>(prior.data(), prior.size()), joint);
     const double kept = (w.array() >= 1e-6).select(w, 0.0).sum();
     for (size_t i = 0; i < ids.size(); ++i)
       if (w[i] >= 1e-6) triplets.emplace_back(k, ids[i], w[i] / kept);

@@ -2,12 +2,11 @@
 // failure can be reported with strerror and a failed write leaves no file.
 #include "core/io/file_io.h"
 
+#include <dirent.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-#include <dirent.h>
-#include <signal.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -97,7 +96,6 @@ Status writeTemp(const std::string& tmp, const std::string& path, const void* da
   return Status();
 }
 
-
 constexpr const char* kTempInfix = ".smpl.tmp-";
 
 // The old file kept while a set of files is replaced (writeFilesTogether).
@@ -109,7 +107,8 @@ struct Backup {
 // the rename fail, which leaves it as it was.
 Backup keepBackup(const std::string& path, const std::string& backup) {
   struct stat st;
-  if (::lstat(path.c_str(), &st) != 0 || !(S_ISREG(st.st_mode) || S_ISLNK(st.st_mode))) return Backup{};
+  if (::lstat(path.c_str(), &st) != 0 || !(S_ISREG(st.st_mode) || S_ISLNK(st.st_mode)))
+    return Backup{};
   ::unlink(backup.c_str());
   if (::link(path.c_str(), backup.c_str()) == 0) return Backup{backup};
   if (::rename(path.c_str(), backup.c_str()) == 0) return Backup{backup};
@@ -119,23 +118,28 @@ Backup keepBackup(const std::string& path, const std::string& backup) {
 // Undoes a rename of a new file over `path`: the backup goes back in place,
 // or the new file is removed when there was no old one.
 void restore(const std::string& path, const Backup& b) {
-  if (b.path.empty()) ::unlink(path.c_str());
-  else ::rename(b.path.c_str(), path.c_str());
+  if (b.path.empty())
+    ::unlink(path.c_str());
+  else
+    ::rename(b.path.c_str(), path.c_str());
 }
 
 // After a failed rename of the temporary: the old file is still in `path`
 // (linked backup) or in the backup (renamed); put it back either way.
 void restoreBackup(const std::string& path, const std::string& backup) {
   struct stat st;
-  if (::lstat(path.c_str(), &st) != 0 && ::lstat(backup.c_str(), &st) == 0) ::rename(backup.c_str(), path.c_str());
-  else ::unlink(backup.c_str());
+  if (::lstat(path.c_str(), &st) != 0 && ::lstat(backup.c_str(), &st) == 0)
+    ::rename(backup.c_str(), path.c_str());
+  else
+    ::unlink(backup.c_str());
 }
 
 // ".<name>.smpl.tmp-<pid>[suffix]" with <name> in `ours` -> pid.
 bool tempOwner(const std::string& entry, const std::set<std::string>& ours, long* pid) {
   if (entry.size() < 2 || entry[0] != '.') return false;
   const size_t infix = entry.rfind(kTempInfix);
-  if (infix == std::string::npos || infix < 1 || !ours.count(entry.substr(1, infix - 1))) return false;
+  if (infix == std::string::npos || infix < 1 || !ours.count(entry.substr(1, infix - 1)))
+    return false;
   const char* digits = entry.c_str() + infix + std::strlen(kTempInfix);
   char* end = nullptr;
   *pid = std::strtol(digits, &end, 10);

@@ -25,7 +25,9 @@ class MappedFile {
   MappedFile& operator=(const MappedFile&) = delete;
   ~MappedFile();
 
-  const uint8_t* data() const { return mapping_ ? static_cast<const uint8_t*>(mapping_) : owned_.data(); }
+  const uint8_t* data() const {
+    return mapping_ ? static_cast<const uint8_t*>(mapping_) : owned_.data();
+  }
   size_t size() const { return mapping_ ? mapped_size_ : owned_.size(); }
 
  private:

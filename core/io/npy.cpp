@@ -128,7 +128,8 @@ Status parseHeaderValue(Cursor& c, const std::string& key, NpyHeader& h, const s
     h.shape = std::move(*s);
     h.has_shape = true;
   } else {
-    return makeError(ctx + ": bad .npy header: unexpected or repeated key '" + printable(key, 64) + "'");
+    return makeError(ctx + ": bad .npy header: unexpected or repeated key '" + printable(key, 64) +
+                     "'");
   }
   return Status();
 }
@@ -140,10 +141,12 @@ Result<NpyHeader> parseHeaderDict(const std::string& text, const std::string& ct
   while (!c.eat('}')) {
     Result<std::string> key = parseQuoted(c, ctx);
     if (!key) return key.error();
-    if (!c.eat(':')) return makeError(ctx + ": bad .npy header: expected ':' after '" + printable(*key, 64) + "'");
+    if (!c.eat(':'))
+      return makeError(ctx + ": bad .npy header: expected ':' after '" + printable(*key, 64) + "'");
     if (Status st = parseHeaderValue(c, *key, h, ctx); !st) return st.error();
     if (!c.eat(',') && !c.peek('}'))
-      return makeError(ctx + ": bad .npy header: expected ',' or '}' after '" + printable(*key, 64) + "'");
+      return makeError(ctx + ": bad .npy header: expected ',' or '}' after '" +
+                       printable(*key, 64) + "'");
   }
   c.skipSpace();
   if (c.pos != text.size())
@@ -194,7 +197,8 @@ Result<NpyHeaderInfo> parseNpyHeader(const uint8_t* data, size_t size, const std
 }
 
 bool isObjectDescr(const std::string& descr) {
-  return descr.size() == 2 && (descr[0] == '|' || descr[0] == '<' || descr[0] == '>') && descr[1] == 'O';
+  return descr.size() == 2 && (descr[0] == '|' || descr[0] == '<' || descr[0] == '>') &&
+         descr[1] == 'O';
 }
 
 Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& context) {

@@ -23,10 +23,10 @@ Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& cont
 // tell an object array ('|O', whose data is a pickle) from a numeric one, or
 // to report a member's shape without decoding it.
 struct NpyHeaderInfo {
-  std::string descr;            // e.g. "<f8", "|O"
+  std::string descr;  // e.g. "<f8", "|O"
   bool fortran_order = false;
   std::vector<int64_t> shape;
-  size_t data_offset = 0;       // first byte after the header
+  size_t data_offset = 0;  // first byte after the header
 };
 Result<NpyHeaderInfo> parseNpyHeader(const uint8_t* data, size_t size, const std::string& context);
 

@@ -18,8 +18,8 @@
 
 #include "core/io/file_io.h"
 #include "core/io/numpy_dtype.h"
-#include "core/memory_budget.h"
 #include "core/io/printable.h"
+#include "core/memory_budget.h"
 
 namespace smpl {
 
@@ -66,7 +66,8 @@ Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
 
 }  // namespace
 
-Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storage, const std::string& context) {
+Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storage,
+                                           const std::string& context) {
   Result<std::vector<ZipMember>> members = listZip(storage->data, storage->size, context);
   if (!members) return members.error();
   NpzArchive a;
@@ -77,7 +78,8 @@ Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storag
     if (hasSuffix(m.name, "/") && m.usize == 0) continue;  // directory entry
     const std::string key = keyOf(m.name);
     if (!seen.insert(key).second)
-      return makeError(context + "/" + printable(m.name) + ": duplicate member '" + printable(key) + "'");
+      return makeError(context + "/" + printable(m.name) + ": duplicate member '" + printable(key) +
+                       "'");
     a.keys_.push_back(key);
     a.members_.push_back(std::move(m));
   }
@@ -90,7 +92,8 @@ Result<NpzArchive> NpzArchive::open(const std::string& path, const std::string& 
   return fromStorage(*storage, context.empty() ? baseName(path) : context);
 }
 
-Result<NpzArchive> NpzArchive::fromBytes(const uint8_t* data, size_t size, const std::string& context) {
+Result<NpzArchive> NpzArchive::fromBytes(const uint8_t* data, size_t size,
+                                         const std::string& context) {
   auto storage = std::make_shared<Storage>();
   if (data) storage->owned.assign(data, data + size);
   storage->data = storage->owned.data();
@@ -117,16 +120,19 @@ Result<ZipEntry> NpzArchive::memberBytes(const std::string& key) const {
 Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
   Result<ZipEntry> e = memberBytes(key);
   if (!e) return e.error();
-  return parseNpyHeader(e->data.data(), e->data.size(), context_ + "/" + printable(find(key)->name));
+  return parseNpyHeader(e->data.data(), e->data.size(),
+                        context_ + "/" + printable(find(key)->name));
 }
 
 Result<bool> NpzArchive::isObjectArray(const std::string& key) const {
   const ZipMember* m = find(key);
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
   constexpr size_t kPeek = 4096;  // numpy's headers are shorter; a longer one takes the full path
-  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kPeek, context_);
+  Result<std::vector<uint8_t>> prefix =
+      readZipMemberPrefix(storage_->data, storage_->size, *m, kPeek, context_);
   if (prefix) {
-    Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), context_ + "/" + printable(m->name));
+    Result<NpyHeaderInfo> h =
+        parseNpyHeader(prefix->data(), prefix->size(), context_ + "/" + printable(m->name));
     if (h) return isObjectDescr(h->descr);
   }
   Result<NpyHeaderInfo> h = header(key);
@@ -145,7 +151,8 @@ Status NpzArchive::checkDecodedSize(const std::string& key) const {
   // one costs a second, full-size peek (the .npy reader's limit + preamble).
   constexpr size_t kShortPeek = 4096, kHeaderPeek = (1 << 20) + 16;
   const std::string mctx = context_ + "/" + printable(m->name);
-  Result<std::vector<uint8_t>> prefix = readZipMemberPrefix(storage_->data, storage_->size, *m, kShortPeek, context_);
+  Result<std::vector<uint8_t>> prefix =
+      readZipMemberPrefix(storage_->data, storage_->size, *m, kShortPeek, context_);
   if (!prefix) return Status();  // extraction reports the problem in full
   Result<NpyHeaderInfo> h = parseNpyHeader(prefix->data(), prefix->size(), mctx);
   if (!h && prefix->size() == kShortPeek) {
@@ -157,7 +164,9 @@ Status NpzArchive::checkDecodedSize(const std::string& key) const {
   Result<NumpyDtype> t = parseNumpyDescr(h->descr, mctx);
   if (!t) return Status();
   constexpr uint64_t kCap = 1ull << 60;  // saturate: anything this large is refused anyway
-  auto times = [&](uint64_t a, uint64_t b) { return a == 0 || b == 0 ? 0 : (a > kCap / b ? kCap : a * b); };
+  auto times = [&](uint64_t a, uint64_t b) {
+    return a == 0 || b == 0 ? 0 : (a > kCap / b ? kCap : a * b);
+  };
   uint64_t count = 1;
   for (int64_t d : h->shape) count = times(count, static_cast<uint64_t>(d));
   const bool text = t->kind == 'S' || t->kind == 'U';
@@ -171,7 +180,9 @@ Result<Array> NpzArchive::get(const std::string& key) const {
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
   // The inflated member alone past the budget: refused as inflating, before
   // the header is peeked at (the same check memberBytes makes).
-  if (Status st = checkMemory(m->usize, context_ + "/" + printable(m->name), "inflating the member"); !st)
+  if (Status st =
+          checkMemory(m->usize, context_ + "/" + printable(m->name), "inflating the member");
+      !st)
     return st.error();
   if (Status st = checkDecodedSize(key); !st) return st.error();
   Result<ZipEntry> e = memberBytes(key);
@@ -180,8 +191,8 @@ Result<Array> NpzArchive::get(const std::string& key) const {
   Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
   if (!h) return h.error();
   if (isObjectDescr(h->descr))
-    return makeError(context_ + ": '" + printable(key) + "' is an object array ('" + printable(h->descr) +
-                     "'); expected numbers or text");
+    return makeError(context_ + ": '" + printable(key) + "' is an object array ('" +
+                     printable(h->descr) + "'); expected numbers or text");
   return parseNpy(e->data.data(), e->data.size(), mctx);
 }
 

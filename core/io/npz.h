@@ -63,8 +63,8 @@ class NpzArchive {
   std::string context_;
   const ZipMember* find(const std::string& key) const;
   Status checkDecodedSize(const std::string& key) const;
-  static Result<NpzArchive> fromStorage(std::shared_ptr<const Storage> storage, const std::string& context);
-
+  static Result<NpzArchive> fromStorage(std::shared_ptr<const Storage> storage,
+                                        const std::string& context);
 };
 
 // Eager reads of every member (np.load(...) then dict(...)), kept for small

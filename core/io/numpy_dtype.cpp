@@ -160,18 +160,25 @@ void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order,
 // The common dtypes in the host's byte order without the per-element
 // switch of loadNumber; false for the others (half floats, bools, 1- and
 // 2-byte integers, the other byte order), which take loadNumber.
-bool loadNative(const uint8_t* p, size_t count, const NumpyDtype& t, SourceOrder& order, bool c_order,
-                double* out) {
+bool loadNative(const uint8_t* p, size_t count, const NumpyDtype& t, SourceOrder& order,
+                bool c_order, double* out) {
   if (count == 0 || (t.big_endian && t.itemsize > 1) || hostIsBigEndian()) return false;
   const char k = t.kind;
   const size_t n = t.itemsize;
-  if (k == 'f' && n == 8) loadTyped<double>(p, count, order, c_order, out);
-  else if (k == 'f' && n == 4) loadTyped<float>(p, count, order, c_order, out);
-  else if (k == 'i' && n == 8) loadTyped<int64_t>(p, count, order, c_order, out);
-  else if (k == 'i' && n == 4) loadTyped<int32_t>(p, count, order, c_order, out);
-  else if (k == 'u' && n == 8) loadTyped<uint64_t>(p, count, order, c_order, out);
-  else if (k == 'u' && n == 4) loadTyped<uint32_t>(p, count, order, c_order, out);
-  else return false;
+  if (k == 'f' && n == 8)
+    loadTyped<double>(p, count, order, c_order, out);
+  else if (k == 'f' && n == 4)
+    loadTyped<float>(p, count, order, c_order, out);
+  else if (k == 'i' && n == 8)
+    loadTyped<int64_t>(p, count, order, c_order, out);
+  else if (k == 'i' && n == 4)
+    loadTyped<int32_t>(p, count, order, c_order, out);
+  else if (k == 'u' && n == 8)
+    loadTyped<uint64_t>(p, count, order, c_order, out);
+  else if (k == 'u' && n == 4)
+    loadTyped<uint32_t>(p, count, order, c_order, out);
+  else
+    return false;
   return true;
 }
 
@@ -180,8 +187,9 @@ Status fillElements(const uint8_t* p, size_t count, const NumpyDtype& t, bool fo
   SourceOrder order(a.shape, fortran);
   const bool text = t.kind == 'S' || t.kind == 'U';
   const uint64_t per_element = text ? sizeof(std::string) + t.itemsize : sizeof(double);
-  if (Status st = a.charge.add(count * per_element, ctx, "the array " + shapeString(a.shape) +
-                               (text ? " as strings" : " as doubles"));
+  if (Status st = a.charge.add(
+          count * per_element, ctx,
+          "the array " + shapeString(a.shape) + (text ? " as strings" : " as doubles"));
       !st)
     return st;
   if (text) {
@@ -210,10 +218,12 @@ Result<NumpyDtype> parseNumpyDescr(const std::string& descr, const std::string& 
     return makeError(ctx + ": object arrays ('" + printable(descr, 64) +
                      "') are not supported; save a numeric array");
   if (kind == 'V')
-    return makeError(ctx + ": structured/void dtype '" + printable(descr, 64) + "' is not supported");
+    return makeError(ctx + ": structured/void dtype '" + printable(descr, 64) +
+                     "' is not supported");
   Result<size_t> n = descrItemCount(descr.substr(2), descr, ctx);
   if (!n) return n.error();
-  if (!validItemSize(kind, *n)) return makeError(ctx + ": unsupported dtype '" + printable(descr, 64) + "'");
+  if (!validItemSize(kind, *n))
+    return makeError(ctx + ": unsupported dtype '" + printable(descr, 64) + "'");
   // 'U' counts characters of 4-byte UTF-32 code units; all others count bytes.
   NumpyDtype t{kind, kind == 'U' ? *n * 4 : *n, order == '>' || (order == '=' && hostIsBigEndian()),
                descr};
@@ -224,12 +234,14 @@ Result<NumpyDtype> parseNumpyDescr(const std::string& descr, const std::string& 
 
 Result<size_t> numpyByteCount(const NumpyDtype& t, const std::vector<int64_t>& shape,
                               const std::string& ctx) {
-  if (t.itemsize == 0) return makeError(ctx + ": unsupported dtype '" + printable(t.descr, 64) + "'");
+  if (t.itemsize == 0)
+    return makeError(ctx + ": unsupported dtype '" + printable(t.descr, 64) + "'");
   const uint64_t limit = static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) / t.itemsize;
   uint64_t nonzero = 1;
   bool empty = false;
   for (int64_t d : shape) {
-    if (d < 0) return makeError(ctx + ": shape " + shapeString(shape) + " has a negative dimension");
+    if (d < 0)
+      return makeError(ctx + ": shape " + shapeString(shape) + " has a negative dimension");
     if (d == 0)
       empty = true;
     else if (static_cast<uint64_t>(d) > limit / nonzero)

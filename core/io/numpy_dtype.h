@@ -22,10 +22,10 @@ namespace smpl {
 
 // An element type: f2/f4/f8, i1-i8, u1-u8, b1, S<n> (bytes), U<n> (UTF-32).
 struct NumpyDtype {
-  char kind = 0;           // 'f', 'i', 'u', 'b', 'S', 'U'
-  size_t itemsize = 0;     // bytes per element ('U': 4 per character)
+  char kind = 0;        // 'f', 'i', 'u', 'b', 'S', 'U'
+  size_t itemsize = 0;  // bytes per element ('U': 4 per character)
   bool big_endian = false;
-  std::string descr;       // as written, e.g. "<f8"; becomes Array::dtype
+  std::string descr;  // as written, e.g. "<f8"; becomes Array::dtype
 };
 
 // Parse a descr: byte order ('<', '>', '|', '=' for this host), kind, count

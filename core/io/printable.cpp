@@ -15,10 +15,14 @@ size_t utf8Length(std::string_view text, size_t i, uint32_t* cp) {
   size_t n;
   uint32_t min;
   if (b0 < 0x80) return *cp = b0, 1;
-  if ((b0 & 0xE0) == 0xC0) n = 2, min = 0x80, *cp = b0 & 0x1F;
-  else if ((b0 & 0xF0) == 0xE0) n = 3, min = 0x800, *cp = b0 & 0x0F;
-  else if ((b0 & 0xF8) == 0xF0) n = 4, min = 0x10000, *cp = b0 & 0x07;
-  else return 0;
+  if ((b0 & 0xE0) == 0xC0)
+    n = 2, min = 0x80, *cp = b0 & 0x1F;
+  else if ((b0 & 0xF0) == 0xE0)
+    n = 3, min = 0x800, *cp = b0 & 0x0F;
+  else if ((b0 & 0xF8) == 0xF0)
+    n = 4, min = 0x10000, *cp = b0 & 0x07;
+  else
+    return 0;
   if (i + n > text.size()) return 0;
   for (size_t k = 1; k < n; ++k) {
     if ((byte(i + k) & 0xC0) != 0x80) return 0;
@@ -47,7 +51,8 @@ std::string printable(std::string_view text, size_t max_bytes) {
     uint32_t cp = 0;
     const size_t n = utf8Length(text, i, &cp);
     if (n == 0 || isControl(cp)) {
-      for (size_t k = 0; k < (n == 0 ? 1 : n); ++k) appendHex(&out, static_cast<uint8_t>(text[i + k]));
+      for (size_t k = 0; k < (n == 0 ? 1 : n); ++k)
+        appendHex(&out, static_cast<uint8_t>(text[i + k]));
       i += n == 0 ? 1 : n;
       continue;
     }

@@ -6,8 +6,6 @@
 // the file and the limits before any entry is allocated or inflated.
 #include "core/io/zip.h"
 
-#include "core/io/printable.h"
-
 #include <libdeflate.h>
 #include <zlib.h>
 
@@ -17,6 +15,8 @@
 #include <limits>
 #include <memory>
 #include <utility>
+
+#include "core/io/printable.h"
 
 namespace smpl {
 namespace {
@@ -179,8 +179,8 @@ Result<std::vector<CentralEntry>> readCentralDirectory(const uint8_t* data, cons
     }
     if (c->usize > limits.max_total_uncompressed - total)
       return makeError(ctx + ": declared uncompressed size exceeds the limit of " +
-                       std::to_string(limits.max_total_uncompressed) + " bytes at '" + printable(c->name) +
-                       "'");
+                       std::to_string(limits.max_total_uncompressed) + " bytes at '" +
+                       printable(c->name) + "'");
     total += c->usize;
     entries.push_back(std::move(*c));
   }
@@ -259,22 +259,28 @@ Status inflateInto(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
 }
 
 // libdeflate's CRC-32 (carry-less multiply where the CPU has it): ~10x zlib's.
-uint32_t crc32Of(const std::vector<uint8_t>& bytes) { return libdeflate_crc32(0, bytes.data(), bytes.size()); }
+uint32_t crc32Of(const std::vector<uint8_t>& bytes) {
+  return libdeflate_crc32(0, bytes.data(), bytes.size());
+}
 
 // Whole-member inflate in one libdeflate call (the declared size is known, so
 // the output buffer is exact); on any failure zlib's streaming inflate above
 // runs again on the same bytes, only to name the problem exactly (corrupt,
 // truncated, larger or smaller than declared).
-Status inflateMember(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out, const std::string& ectx) {
+Status inflateMember(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
+                     const std::string& ectx) {
   struct Free {
     void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
   };
-  static thread_local std::unique_ptr<libdeflate_decompressor, Free> d(libdeflate_alloc_decompressor());
-  if (d && libdeflate_deflate_decompress(d.get(), in, static_cast<size_t>(csize), out.data(), out.size(), nullptr) ==
-               LIBDEFLATE_SUCCESS)
+  static thread_local std::unique_ptr<libdeflate_decompressor, Free> d(
+      libdeflate_alloc_decompressor());
+  if (d && libdeflate_deflate_decompress(d.get(), in, static_cast<size_t>(csize), out.data(),
+                                         out.size(), nullptr) == LIBDEFLATE_SUCCESS)
     return Status();
   Status st = inflateInto(in, csize, out, ectx);
-  if (st) return makeError(ectx + ": corrupt deflate data (refused by libdeflate)");  // zlib alone accepts it
+  if (st)
+    return makeError(ectx +
+                     ": corrupt deflate data (refused by libdeflate)");  // zlib alone accepts it
   return st;
 }
 
@@ -311,18 +317,22 @@ Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const s
 Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
                                   const std::string& context, const ZipLimits& limits) {
   const std::string ectx = context + "/" + printable(member.name);
-  if (data == nullptr || member.data_end > size) return makeError(ectx + ": member lies outside the archive");
+  if (data == nullptr || member.data_end > size)
+    return makeError(ectx + ": member lies outside the archive");
   if (Status st = checkSupported(member, ectx); !st) return st.error();
   if (member.usize > limits.max_total_uncompressed)
     return makeError(ectx + ": declared uncompressed size " + std::to_string(member.usize) +
-                     " exceeds the limit of " + std::to_string(limits.max_total_uncompressed) + " bytes");
+                     " exceeds the limit of " + std::to_string(limits.max_total_uncompressed) +
+                     " bytes");
   return extractEntry(data, member, member.data_end, context);  // charged to the memory budget
 }
 
-Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size, const ZipMember& member,
-                                                 size_t max_bytes, const std::string& context) {
+Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size,
+                                                 const ZipMember& member, size_t max_bytes,
+                                                 const std::string& context) {
   const std::string ectx = context + "/" + printable(member.name);
-  if (data == nullptr || member.data_end > size) return makeError(ectx + ": member lies outside the archive");
+  if (data == nullptr || member.data_end > size)
+    return makeError(ectx + ": member lies outside the archive");
   if (Status st = checkSupported(member, ectx); !st) return st.error();
   Result<size_t> start = locateData(data, member, member.data_end, ectx);
   if (!start) return start.error();
@@ -330,7 +340,8 @@ Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t siz
   if (member.method == 0) {
     if (*start > member.data_end || out.size() > member.data_end - *start)
       return makeError(ectx + ": stored member is shorter than its declared size");
-    if (!out.empty()) std::memcpy(out.data(), data + *start, out.size());  // memcpy(nullptr, ..) is UB
+    if (!out.empty())
+      std::memcpy(out.data(), data + *start, out.size());  // memcpy(nullptr, ..) is UB
     return out;
   }
   z_stream zs{};
@@ -343,7 +354,8 @@ Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t siz
   while (zs.avail_out > 0 && ret == Z_OK) ret = inflate(&zs, Z_NO_FLUSH);
   const size_t produced = out.size() - zs.avail_out;
   inflateEnd(&zs);
-  if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR) return makeError(ectx + ": corrupt deflate data");
+  if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR)
+    return makeError(ectx + ": corrupt deflate data");
   out.resize(produced);
   return out;
 }

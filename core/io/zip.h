@@ -43,13 +43,14 @@ Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const s
 // Extracts one listed member (CRC-checked); its uncompressed size must stay
 // within limits.max_total_uncompressed. `data`/`size` are the whole archive.
 Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
-                                              const std::string& context,
-                                              const ZipLimits& limits = ZipLimits());
+                                  const std::string& context,
+                                  const ZipLimits& limits = ZipLimits());
 
 // The first min(max_bytes, size) uncompressed bytes of a listed member,
 // without CRC check (for peeking at a header before deciding to extract).
-Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size, const ZipMember& member,
-                                                 size_t max_bytes, const std::string& context);
+Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size,
+                                                 const ZipMember& member, size_t max_bytes,
+                                                 const std::string& context);
 
 // `context` names the archive in errors.
 Result<std::vector<ZipEntry>> readZip(const uint8_t* data, size_t size, const std::string& context,

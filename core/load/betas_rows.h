@@ -20,7 +20,8 @@ struct BetasRows {
   double max_deviation = 0.0;  // max over rows and columns of |row - mean| (0 if identical)
 };
 
-// `context` names file and key in errors: "walk.npz: 'betas' has shape (2,3,4); expected (B,) or (T,B)".
+// `context` names file and key in errors: "walk.npz: 'betas' has shape (2,3,4); expected (B,) or
+// (T,B)".
 Result<BetasRows> collapseBetasRows(const Array& betas, const std::string& context);
 
 // "betas: 120 per-frame rows differ (largest deviation from their mean 0.0123); using their mean".

@@ -12,15 +12,18 @@ Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int c
   Result<ArrayDict> arrays = readNpzArrays(path, {"eigvec"}, path);
   if (!arrays) return arrays.error();
   auto it = arrays->find("eigvec");
-  if (it == arrays->end()) return makeError(path + ": no 'eigvec' (expected a DMPL basis of shape (N,3,D))");
+  if (it == arrays->end())
+    return makeError(path + ": no 'eigvec' (expected a DMPL basis of shape (N,3,D))");
   const Array& a = it->second;
-  if (a.isString() || a.shape.size() != 3 || a.shape[0] != num_vertices || a.shape[1] != 3 || a.shape[2] < 1)
-    return makeError(path + ": 'eigvec' has shape " + shapeString(a.shape) + "; expected (N,3,D) with N=" +
-                     std::to_string(num_vertices) + " (the model's vertex count)");
+  if (a.isString() || a.shape.size() != 3 || a.shape[0] != num_vertices || a.shape[1] != 3 ||
+      a.shape[2] < 1)
+    return makeError(path + ": 'eigvec' has shape " + shapeString(a.shape) +
+                     "; expected (N,3,D) with N=" + std::to_string(num_vertices) +
+                     " (the model's vertex count)");
   const int d = static_cast<int>(a.shape[2]);
   if (count < 0 || count > d)
-    return makeError(path + ": --dmpl-count " + std::to_string(count) + ": the basis has " + std::to_string(d) +
-                     " directions");
+    return makeError(path + ": --dmpl-count " + std::to_string(count) + ": the basis has " +
+                     std::to_string(d) + " directions");
   const int keep = count == 0 ? d : count;
   DmplBasis basis;
   basis.path = path;
@@ -36,7 +39,8 @@ Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int c
   return basis;
 }
 
-Result<std::string> findDmplBasis(const std::string& dir, const std::string& gender, std::string* note) {
+Result<std::string> findDmplBasis(const std::string& dir, const std::string& gender,
+                                  std::string* note) {
   namespace fs = std::filesystem;
   const std::string wanted = normalizeGender(gender).empty() ? "neutral" : normalizeGender(gender);
   std::string tried;
@@ -48,7 +52,8 @@ Result<std::string> findDmplBasis(const std::string& dir, const std::string& gen
         if (g != wanted && note) *note = "no " + wanted + " DMPL basis in " + dir + "; using " + p;
         return p;
       }
-      if (tried.find(sub + g + "/") == std::string::npos) tried += (tried.empty() ? "" : ", ") + sub + g + "/model.npz";
+      if (tried.find(sub + g + "/") == std::string::npos)
+        tried += (tried.empty() ? "" : ", ") + sub + g + "/model.npz";
     }
   }
   return makeError(dir + ": no DMPL basis for gender '" + wanted + "' (looked for " + tried + ")");

@@ -16,9 +16,10 @@
 namespace smpl {
 
 struct DmplBasis {
-  std::string path;              // the file read (for notes and errors)
-  Eigen::MatrixXd directions;    // 3N x D, row 3i + c = vertex i, axis c (metres per unit coefficient)
-  MemoryCharge charge;           // `directions` against the memory budget
+  std::string path;  // the file read (for notes and errors)
+  Eigen::MatrixXd
+      directions;       // 3N x D, row 3i + c = vertex i, axis c (metres per unit coefficient)
+  MemoryCharge charge;  // `directions` against the memory budget
 };
 
 // Reads `eigvec` (N,3,D) from `path` and keeps the first `count` directions
@@ -32,6 +33,7 @@ Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int c
 // may be the --model folder or its dmpls/ folder). `gender` as the motion
 // stores it; unknown or absent -> neutral. When the wanted gender is missing,
 // neutral is used and `note` says so. Errors name DIR and what was tried.
-Result<std::string> findDmplBasis(const std::string& dir, const std::string& gender, std::string* note);
+Result<std::string> findDmplBasis(const std::string& dir, const std::string& gender,
+                                  std::string* note);
 
 }  // namespace smpl

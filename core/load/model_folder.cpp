@@ -23,11 +23,16 @@ std::string lower(std::string s) {
 }
 
 bool kindFromName(const std::string& name, ModelKind* kind) {
-  if (name == "smpl") *kind = ModelKind::Smpl;
-  else if (name == "smplh" || name == "smpl+h" || name == "smpl_h") *kind = ModelKind::SmplH;
-  else if (name == "smplx" || name == "smpl-x" || name == "smpl_x") *kind = ModelKind::SmplX;
-  else if (name == "mano") *kind = ModelKind::Mano;
-  else return false;
+  if (name == "smpl")
+    *kind = ModelKind::Smpl;
+  else if (name == "smplh" || name == "smpl+h" || name == "smpl_h")
+    *kind = ModelKind::SmplH;
+  else if (name == "smplx" || name == "smpl-x" || name == "smpl_x")
+    *kind = ModelKind::SmplX;
+  else if (name == "mano")
+    *kind = ModelKind::Mano;
+  else
+    return false;
   return true;
 }
 
@@ -37,7 +42,8 @@ bool classify(const std::string& rel, Candidate* c) {
   std::vector<std::string> parts;
   for (size_t start = 0;;) {
     const size_t slash = l.find('/', start);
-    parts.push_back(l.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
+    parts.push_back(
+        l.substr(start, slash == std::string::npos ? std::string::npos : slash - start));
     if (slash == std::string::npos) break;
     start = slash + 1;
   }
@@ -58,7 +64,8 @@ bool classify(const std::string& rel, Candidate* c) {
   } else if (std::regex_match(stem, m, basic)) {
     c->kind = ModelKind::Smpl;
     c->gender = normalizeGender(m[1]);
-  } else if (stem == "model" && parts.size() >= 3 && kindFromName(parts[parts.size() - 3], &c->kind) &&
+  } else if (stem == "model" && parts.size() >= 3 &&
+             kindFromName(parts[parts.size() - 3], &c->kind) &&
              !normalizeGender(parts[parts.size() - 2]).empty()) {
     c->gender = normalizeGender(parts[parts.size() - 2]);  // AMASS: smplh/male/model.npz
   } else {
@@ -66,7 +73,8 @@ bool classify(const std::string& rel, Candidate* c) {
   }
   c->in_kind_folder = parts.size() >= 2 && [&] {
     ModelKind k;
-    return kindFromName(parts[parts.size() - 2], &k) || (parts.size() >= 3 && kindFromName(parts[parts.size() - 3], &k));
+    return kindFromName(parts[parts.size() - 2], &k) ||
+           (parts.size() >= 3 && kindFromName(parts[parts.size() - 3], &k));
   }();
   return true;
 }
@@ -75,17 +83,22 @@ const char* defaultExt(ModelKind kind) { return kind == ModelKind::SmplX ? "npz"
 
 const char* kindLabel(ModelKind kind) {
   switch (kind) {
-    case ModelKind::Smpl: return "SMPL";
-    case ModelKind::SmplH: return "SMPL-H";
-    case ModelKind::SmplX: return "SMPL-X";
-    case ModelKind::Mano: return "MANO";
+    case ModelKind::Smpl:
+      return "SMPL";
+    case ModelKind::SmplH:
+      return "SMPL-H";
+    case ModelKind::SmplX:
+      return "SMPL-X";
+    case ModelKind::Mano:
+      return "MANO";
   }
   return "?";
 }
 
 // Best of the candidates of one kind and gender: the authors' extension, then
 // a file in the kind's folder, then the shortest path, then name order.
-const Candidate* best(const std::vector<Candidate>& all, ModelKind kind, const std::string& gender) {
+const Candidate* best(const std::vector<Candidate>& all, ModelKind kind,
+                      const std::string& gender) {
   const Candidate* pick = nullptr;
   auto rank = [&](const Candidate& c) {
     return std::make_tuple(c.ext != defaultExt(kind), !c.in_kind_folder, c.path.size(), c.path);
@@ -96,7 +109,8 @@ const Candidate* best(const std::vector<Candidate>& all, ModelKind kind, const s
 }
 
 std::string listing(const std::vector<Candidate>& all) {
-  if (all.empty()) return "no model files with the released names (e.g. SMPLX_NEUTRAL.npz, SMPL_FEMALE.pkl)";
+  if (all.empty())
+    return "no model files with the released names (e.g. SMPLX_NEUTRAL.npz, SMPL_FEMALE.pkl)";
   std::string s = "found ";
   for (size_t i = 0; i < all.size() && i < 8; ++i) s += (i ? ", " : "") + all[i].path;
   return s + (all.size() > 8 ? ", ..." : "");
@@ -112,8 +126,9 @@ std::string normalizeGender(const std::string& gender) {
   return "";
 }
 
-Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files, std::optional<ModelKind> kind,
-                                        const std::string& gender, const std::string& folder) {
+Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
+                                        std::optional<ModelKind> kind, const std::string& gender,
+                                        const std::string& folder) {
   std::vector<Candidate> all;
   for (const std::string& f : files) {
     Candidate c;
@@ -140,9 +155,13 @@ Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files, s
   }
   if (!c)
     return makeError(folder + ": no " + (want == "right" ? "" : want + " ") + kindLabel(*kind) +
-                     " model (e.g. " + modelKindName(*kind) + "/" + (*kind == ModelKind::SmplH ? "SMPLH" :
-                     *kind == ModelKind::SmplX ? "SMPLX" : *kind == ModelKind::Mano ? "MANO" : "SMPL") + "_" +
-                     (want == "right" ? "RIGHT" : "NEUTRAL") + "." + defaultExt(*kind) + "); " + listing(all));
+                     " model (e.g. " + modelKindName(*kind) + "/" +
+                     (*kind == ModelKind::SmplH   ? "SMPLH"
+                      : *kind == ModelKind::SmplX ? "SMPLX"
+                      : *kind == ModelKind::Mano  ? "MANO"
+                                                  : "SMPL") +
+                     "_" + (want == "right" ? "RIGHT" : "NEUTRAL") + "." + defaultExt(*kind) +
+                     "); " + listing(all));
   ModelFileChoice out{c->path, c->kind, c->gender, ""};
   if (!note.empty()) out.note = note + "using " + c->path;
   return out;
@@ -156,7 +175,8 @@ std::vector<std::string> listModelFolder(const std::string& dir) {
   for (; !ec && it != end; it.increment(ec)) {
     if (it.depth() >= 2) it.disable_recursion_pending();
     std::error_code fec;
-    if (it->is_regular_file(fec)) files.push_back(fs::relative(it->path(), dir, fec).generic_string());
+    if (it->is_regular_file(fec))
+      files.push_back(fs::relative(it->path(), dir, fec).generic_string());
   }
   std::sort(files.begin(), files.end());
   return files;

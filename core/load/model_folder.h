@@ -37,8 +37,9 @@ std::string normalizeGender(const std::string& gender);
 // Pure: `files` are paths relative to the folder ('/'-separated); `kind`
 // empty = no motion; `gender` as a motion stores it ("" = unknown -> neutral).
 // Errors name `folder` and list what was found.
-Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files, std::optional<ModelKind> kind,
-                                        const std::string& gender, const std::string& folder);
+Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
+                                        std::optional<ModelKind> kind, const std::string& gender,
+                                        const std::string& folder);
 
 // Regular files under `dir`, up to two folder levels deep, relative and sorted.
 std::vector<std::string> listModelFolder(const std::string& dir);

@@ -8,9 +8,9 @@
 
 #include "core/io/file_io.h"
 #include "core/io/mapped_file.h"
+#include "core/io/pickle/pickle.h"
 #include "core/joint_names.h"
 #include "core/load/npz_arrays.h"
-#include "core/io/pickle/pickle.h"
 #include "core/load/validate_inputs.h"
 
 namespace smpl {
@@ -21,7 +21,8 @@ using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::Ro
 // Shapes in errors use the numbers we expect where known, -1 where free.
 std::string expectedString(const std::vector<int64_t>& shape) {
   std::string s = "(";
-  for (size_t i = 0; i < shape.size(); ++i) s += (i ? "," : "") + (shape[i] < 0 ? std::string("*") : std::to_string(shape[i]));
+  for (size_t i = 0; i < shape.size(); ++i)
+    s += (i ? "," : "") + (shape[i] < 0 ? std::string("*") : std::to_string(shape[i]));
   return s + (shape.size() == 1 ? ",)" : ")");
 }
 
@@ -48,10 +49,11 @@ struct Arrays {
     if (a->isString()) return makeError(context + ": '" + key + "' holds text, expected numbers");
     return a;
   }
-  Status checkShape(const std::string& key, const Array& a, const std::vector<int64_t>& expected) const {
+  Status checkShape(const std::string& key, const Array& a,
+                    const std::vector<int64_t>& expected) const {
     if (!shapeMatches(a, expected))
-      return makeError(context + ": '" + key + "' has shape " + shapeString(a.shape) + "; expected " +
-                       expectedString(expected));
+      return makeError(context + ": '" + key + "' has shape " + shapeString(a.shape) +
+                       "; expected " + expectedString(expected));
     return checkFloatRange(a, context, key);
   }
   // Fetch key and check its shape in one step.
@@ -87,8 +89,9 @@ Result<std::vector<int>> parentsFromKintree(const Array& kintree, const std::str
       continue;
     }
     if (p < 0 || p >= j || p != std::floor(p))
-      return makeError(context + ": 'kintree_table' gives joint " + std::to_string(j) + " the parent " +
-                       std::to_string(static_cast<long long>(p)) + "; parents must precede their children");
+      return makeError(context + ": 'kintree_table' gives joint " + std::to_string(j) +
+                       " the parent " + std::to_string(static_cast<long long>(p)) +
+                       "; parents must precede their children");
     parents[j] = static_cast<int>(p);
   }
   return parents;
@@ -98,18 +101,26 @@ Result<std::vector<int>> parentsFromKintree(const Array& kintree, const std::str
 void splitShapedirs(ModelKind kind, const Eigen::MatrixXd& all, BodyModel* m) {
   Eigen::Index shape_cols = all.cols();
   if (kind == ModelKind::SmplX) {
-    if (all.cols() > 300) shape_cols = 300;            // v1.1: 300 shape + 100 expression
-    else if (all.cols() == 20) shape_cols = 10;        // v1.0: 10 shape + 10 expression
+    if (all.cols() > 300)
+      shape_cols = 300;  // v1.1: 300 shape + 100 expression
+    else if (all.cols() == 20)
+      shape_cols = 10;  // v1.0: 10 shape + 10 expression
   }
   m->shapedirs = all.leftCols(shape_cols);
   m->exprdirs = all.rightCols(all.cols() - shape_cols);
 }
 
 Status loadHands(const Arrays& in, BodyModel* m) {
-  struct Key { const char* components; const char* mean; Eigen::MatrixXd* c; Eigen::VectorXd* mu; };
-  const Key keys[] = {{"hands_componentsl", "hands_meanl", &m->hands_components_l, &m->hands_mean_l},
-                      {"hands_componentsr", "hands_meanr", &m->hands_components_r, &m->hands_mean_r},
-                      {"hands_components", "hands_mean", &m->hands_components_l, &m->hands_mean_l}};
+  struct Key {
+    const char* components;
+    const char* mean;
+    Eigen::MatrixXd* c;
+    Eigen::VectorXd* mu;
+  };
+  const Key keys[] = {
+      {"hands_componentsl", "hands_meanl", &m->hands_components_l, &m->hands_mean_l},
+      {"hands_componentsr", "hands_meanr", &m->hands_components_r, &m->hands_mean_r},
+      {"hands_components", "hands_mean", &m->hands_components_l, &m->hands_mean_l}};
   for (const Key& key : keys) {
     const Array* c = in.find(key.components);
     if (!c) continue;
@@ -127,8 +138,9 @@ Status loadTexcoords(const Arrays& in, BodyModel* m) {
   const Array* vt = in.find("vt");
   const Array* ft = in.find("ft");
   if (!vt && !ft) return Status();
-  if (!vt || !ft) return makeError(in.context + ": has '" + std::string(vt ? "vt" : "ft") + "' but not '" +
-                                   (vt ? "ft" : "vt") + "'; UVs need both");
+  if (!vt || !ft)
+    return makeError(in.context + ": has '" + std::string(vt ? "vt" : "ft") + "' but not '" +
+                     (vt ? "ft" : "vt") + "'; UVs need both");
   Result<const Array*> uv = in.get("vt", {-1, 2});
   if (!uv) return uv.error();
   Result<const Array*> f = in.get("ft", {m->faces.rows(), 3});
@@ -136,8 +148,9 @@ Status loadTexcoords(const Arrays& in, BodyModel* m) {
   const int64_t u = (*uv)->shape[0];
   for (double v : (*f)->data)
     if (v < 0 || v >= u || v != std::floor(v))
-      return makeError(in.context + ": 'ft' has index " + std::to_string(static_cast<long long>(v)) +
-                       "; expected integers in [0," + std::to_string(u) + ") ('vt' has " + std::to_string(u) + " rows)");
+      return makeError(in.context + ": 'ft' has index " +
+                       std::to_string(static_cast<long long>(v)) + "; expected integers in [0," +
+                       std::to_string(u) + ") ('vt' has " + std::to_string(u) + " rows)");
   m->texcoords = toMatrix(**uv, u, 2);
   m->texcoord_faces = toMatrix(**f, (*f)->shape[0], 3).cast<int>();
   return Status();
@@ -190,31 +203,46 @@ Result<BodyModel> buildModel(const ArrayDict& arrays, const std::string& context
 Status validateModel(const BodyModel& m, const std::string& context) {
   const int n = m.numVertices(), k = m.numJoints();
   if (n == 0) return makeError(context + ": the model has no vertices");
-  if (static_cast<int>(m.joint_names.size()) != k) return makeError(context + ": joint names do not match the joint count");
-  if (m.parents.empty() || m.parents[0] != -1) return makeError(context + ": joint 0 must be the root");
+  if (static_cast<int>(m.joint_names.size()) != k)
+    return makeError(context + ": joint names do not match the joint count");
+  if (m.parents.empty() || m.parents[0] != -1)
+    return makeError(context + ": joint 0 must be the root");
   for (int j = 1; j < k; ++j)
-    if (m.parents[j] < 0 || m.parents[j] >= j) return makeError(context + ": joint " + std::to_string(j) + " has an invalid parent");
-  if (m.weights.rows() != n || m.weights.cols() != k || m.j_regressor.rows() != k || m.j_regressor.cols() != n ||
-      m.shapedirs.rows() != 3 * n || m.exprdirs.rows() != 3 * n || m.posedirs.rows() != 3 * n ||
-      m.posedirs.cols() != 9 * (k - 1) || m.faces.cols() != 3)
+    if (m.parents[j] < 0 || m.parents[j] >= j)
+      return makeError(context + ": joint " + std::to_string(j) + " has an invalid parent");
+  if (m.weights.rows() != n || m.weights.cols() != k || m.j_regressor.rows() != k ||
+      m.j_regressor.cols() != n || m.shapedirs.rows() != 3 * n || m.exprdirs.rows() != 3 * n ||
+      m.posedirs.rows() != 3 * n || m.posedirs.cols() != 9 * (k - 1) || m.faces.cols() != 3)
     return makeError(context + ": model arrays disagree in size");
   if (m.faces.size() > 0 && (m.faces.minCoeff() < 0 || m.faces.maxCoeff() >= n))
-    return makeError(context + ": 'f' indexes vertex " + std::to_string(m.faces.maxCoeff()) + " of " + std::to_string(n));
+    return makeError(context + ": 'f' indexes vertex " + std::to_string(m.faces.maxCoeff()) +
+                     " of " + std::to_string(n));
   for (int i = 0; i < n; ++i) {
     const double sum = m.weights.row(i).sum();
     if (m.weights.row(i).minCoeff() < -1e-6 || std::abs(sum - 1.0) > 1e-3)
-      return makeError(context + ": 'weights' row " + std::to_string(i) + " sums to " + std::to_string(sum) +
-                       "; skin weights must be non-negative and sum to 1");
+      return makeError(context + ": 'weights' row " + std::to_string(i) + " sums to " +
+                       std::to_string(sum) + "; skin weights must be non-negative and sum to 1");
   }
   return Status();
 }
 
 // The keys a model loader reads; every other member of an .npz is never decoded.
 const std::vector<std::string>& modelKeys() {
-  static const std::vector<std::string> keys = {
-      "v_template", "weights", "kintree_table", "shapedirs", "posedirs", "J_regressor", "f",
-      "hands_componentsl", "hands_meanl", "hands_componentsr", "hands_meanr", "hands_components",
-      "hands_mean", "vt", "ft"};
+  static const std::vector<std::string> keys = {"v_template",
+                                                "weights",
+                                                "kintree_table",
+                                                "shapedirs",
+                                                "posedirs",
+                                                "J_regressor",
+                                                "f",
+                                                "hands_componentsl",
+                                                "hands_meanl",
+                                                "hands_componentsr",
+                                                "hands_meanr",
+                                                "hands_components",
+                                                "hands_mean",
+                                                "vt",
+                                                "ft"};
   return keys;
 }
 
@@ -235,7 +263,8 @@ Result<BodyModel> loadModel(const std::string& path) {
   Result<std::vector<uint8_t>> magic = fileMagic(path);
   if (!magic) return magic.error();
   const std::vector<uint8_t>& b = *magic;
-  Result<ArrayDict> arrays = makeError(path + ": not a model file (expected .npz or .pkl contents)");
+  Result<ArrayDict> arrays =
+      makeError(path + ": not a model file (expected .npz or .pkl contents)");
   if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) {
     arrays = readNpzArrays(path, modelKeys(), path);  // lazy: only the model's keys are read
   } else if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']')) {

@@ -37,8 +37,11 @@ const Array* find(const ArrayDict& d, const char* key) {
 }
 
 Status allocateFrames(int64_t t, size_t joints, const std::string& path, Motion* m) {
-  const uint64_t frame_bytes = sizeof(Rotations) + joints * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
-  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path, std::to_string(t) + " frames"); !st)
+  const uint64_t frame_bytes =
+      sizeof(Rotations) + joints * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
+  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path,
+                                std::to_string(t) + " frames");
+      !st)
     return st;
   m->frames.assign(t, Rotations(joints, Eigen::Matrix3d::Identity()));
   return Status();
@@ -47,7 +50,8 @@ Status allocateFrames(int64_t t, size_t joints, const std::string& path, Motion*
 Status checkNumbers(const Array& a, const std::string& path, const char* key) {
   if (a.isString()) return makeError(path + ": '" + key + "' holds text, expected numbers");
   for (double v : a.data)
-    if (!std::isfinite(v)) return makeError(path + ": '" + key + "' contains NaN or infinite values");
+    if (!std::isfinite(v))
+      return makeError(path + ": '" + key + "' contains NaN or infinite values");
   return Status();
 }
 
@@ -76,8 +80,10 @@ Status jsonToArray(const nlohmann::json& j, Array* out, size_t depth = 0) {
   }
   if (!j.is_array() || depth > 4) return makeError("expected nested arrays of numbers");
   const int64_t n = static_cast<int64_t>(j.size());
-  if (out->shape.size() == depth) out->shape.push_back(n);
-  else if (out->shape[depth] != n) return makeError("ragged array");
+  if (out->shape.size() == depth)
+    out->shape.push_back(n);
+  else if (out->shape[depth] != n)
+    return makeError("ragged array");
   for (const auto& item : j)
     if (Status s = jsonToArray(item, out, depth + 1); !s) return s;
   return Status();
@@ -88,7 +94,8 @@ Result<ArrayDict> readJsonArrays(const std::vector<uint8_t>& bytes, const std::s
   // and each number is then copied into a double: at most 12 bytes per byte of text.
   MemoryCharge parse;
   if (Status st = parse.add(bytes.size() * 12, path, "parsing the JSON"); !st) return st.error();
-  nlohmann::json j = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/false);
+  nlohmann::json j =
+      nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, /*allow_exceptions=*/false);
   if (j.is_discarded() || !j.is_object()) return makeError(path + ": not a JSON object");
   ArrayDict arrays;
   for (const auto& [key, value] : j.items()) {
@@ -114,17 +121,20 @@ Result<Array> joinSplitPoses(const ArrayDict& d, const std::string& path) {
   const int64_t t = root->shape.empty() ? 0 : root->shape[0];
   Array joined;
   joined.shape = {t, 165};
-  if (Status st = joined.charge.add(static_cast<uint64_t>(t) * 165 * sizeof(double), path, "joining the pose keys"); !st)
+  if (Status st = joined.charge.add(static_cast<uint64_t>(t) * 165 * sizeof(double), path,
+                                    "joining the pose keys");
+      !st)
     return st.error();
   joined.data.assign(t * 165, 0.0);
   int64_t column = 0;
   for (int i = 0; i < 5; ++i) {
     const Array* a = find(d, keys[i]);
     if (a && (a->shape.size() != 2 || a->shape[0] != t || a->shape[1] != widths[i]))
-      return makeError(path + ": '" + keys[i] + "' has shape " + shapeString(a->shape) + "; expected (" +
-                       std::to_string(t) + "," + std::to_string(widths[i]) + ")");
+      return makeError(path + ": '" + keys[i] + "' has shape " + shapeString(a->shape) +
+                       "; expected (" + std::to_string(t) + "," + std::to_string(widths[i]) + ")");
     for (int64_t f = 0; a && f < t; ++f)
-      for (int64_t c = 0; c < widths[i]; ++c) joined.data[f * 165 + column + c] = a->data[f * widths[i] + c];
+      for (int64_t c = 0; c < widths[i]; ++c)
+        joined.data[f * 165 + column + c] = a->data[f * widths[i] + c];
     column += widths[i];
   }
   return joined;
@@ -136,7 +146,8 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
   const bool matrices = s.size() == 4 && s[2] == 3 && s[3] == 3;
   const bool triples = (s.size() == 2 && s[1] % 3 == 0) || (s.size() == 3 && s[2] == 3);
   if (!matrices && !triples)
-    return makeError(path + ": 'poses' has shape " + shapeString(s) + "; expected (T,3J), (T,J,3) or (T,J,3,3)");
+    return makeError(path + ": 'poses' has shape " + shapeString(s) +
+                     "; expected (T,3J), (T,J,3) or (T,J,3,3)");
   const int64_t t = s[0], j = matrices || s.size() == 3 ? s[1] : s[1] / 3;
   if (t == 0) return makeError(path + ": 'poses' has no frames");
   if (!modelKindFromJointCount(static_cast<int>(j), &m->layout))
@@ -144,8 +155,11 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
                      " joints; expected 24 (SMPL), 52 (SMPL-H), 55 (SMPL-X) or 16 (MANO)");
   for (double v : poses.data)
     if (!std::isfinite(v)) return makeError(path + ": 'poses' contains NaN or infinite values");
-  const uint64_t frame_bytes = sizeof(Rotations) + j * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
-  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path, std::to_string(t) + " frames"); !st)
+  const uint64_t frame_bytes =
+      sizeof(Rotations) + j * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
+  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path,
+                                std::to_string(t) + " frames");
+      !st)
     return st;
   m->frames.resize(t);
   const int64_t stride = matrices ? 9 * j : 3 * j;
@@ -170,17 +184,20 @@ Status decodeDmpls(const ArrayDict& d, const std::string& path, Motion* m) {
   if (!a) return Status();
   const int64_t t = static_cast<int64_t>(m->frames.size());
   if (a->isString() || a->shape.size() != 2 || a->shape[0] != t || a->shape[1] < 1) {
-    m->dmpls_problem = path + ": 'dmpls' has shape " + shapeString(a->shape) + "; expected (" + std::to_string(t) +
-                       ",D) to match 'poses'";
+    m->dmpls_problem = path + ": 'dmpls' has shape " + shapeString(a->shape) + "; expected (" +
+                       std::to_string(t) + ",D) to match 'poses'";
     return Status();
   }
   if (Status st = motion_detail::checkNumbers(*a, path, "dmpls"); !st) {
     m->dmpls_problem = st.message();
     return Status();
   }
-  if (Status st = m->charge.add(static_cast<uint64_t>(a->size()) * sizeof(double), path, "dmpls"); !st) return st;
-  m->dmpls = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      a->data.data(), a->shape[0], a->shape[1]);
+  if (Status st = m->charge.add(static_cast<uint64_t>(a->size()) * sizeof(double), path, "dmpls");
+      !st)
+    return st;
+  m->dmpls =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          a->data.data(), a->shape[0], a->shape[1]);
   return Status();
 }
 
@@ -188,26 +205,31 @@ Status decodeExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   const size_t t = m->frames.size();
   m->translation.assign(t, Eigen::Vector3d::Zero());
   if (const Array* trans = find(d, "trans")) {
-    if (trans->shape.size() != 2 || trans->shape[0] != static_cast<int64_t>(t) || trans->shape[1] != 3)
+    if (trans->shape.size() != 2 || trans->shape[0] != static_cast<int64_t>(t) ||
+        trans->shape[1] != 3)
       return makeError(path + ": 'trans' has shape " + shapeString(trans->shape) + "; expected (" +
                        std::to_string(t) + ",3) to match 'poses'");
-    for (size_t f = 0; f < t; ++f) m->translation[f] = Eigen::Map<const Eigen::Vector3d>(trans->data.data() + 3 * f);
+    for (size_t f = 0; f < t; ++f)
+      m->translation[f] = Eigen::Map<const Eigen::Vector3d>(trans->data.data() + 3 * f);
     for (double v : trans->data)
       if (!std::isfinite(v)) return makeError(path + ": 'trans' contains NaN or infinite values");
   }
-  if (const Array* betas = find(d, "betas"); betas && !betas->isString()) {  // per-frame rows: betas_rows.h
+  if (const Array* betas = find(d, "betas");
+      betas && !betas->isString()) {  // per-frame rows: betas_rows.h
     Result<BetasRows> rows = collapseBetasRows(*betas, path);
     if (!rows) return rows.error();
     m->betas = rows->betas;
     if (rows->averaged) m->notes.push_back(betasRowsNote(*rows));
   }
-  if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty()) m->gender = gender->strings[0];
+  if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty())
+    m->gender = gender->strings[0];
   if (Status st = decodeDmpls(d, path, m); !st) return st;
   m->fps = 0.0;
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {
     const Array* rate = find(d, key);
     if (!rate || rate->isString() || rate->data.size() != 1) continue;
-    if (Status st = checkFrameRate(rate->data[0], path, "'" + std::string(key) + "'"); !st) return st;
+    if (Status st = checkFrameRate(rate->data[0], path, "'" + std::string(key) + "'"); !st)
+      return st;
     m->fps = rate->data[0];
     m->amass = m->amass || std::string(key) != "fps";
     break;
@@ -237,7 +259,8 @@ void settleFps(const MotionOptions& o, double fallback, const char* why, Motion*
   char text[200];
   if (o.source_fps > 0) {
     if (m->fps > 0 && std::abs(m->fps - o.source_fps) > 1e-9) {
-      std::snprintf(text, sizeof text, "the stored rate %g fps is overridden by --source-fps %g", m->fps, o.source_fps);
+      std::snprintf(text, sizeof text, "the stored rate %g fps is overridden by --source-fps %g",
+                    m->fps, o.source_fps);
       m->notes.push_back(text);
     }
     m->fps = o.source_fps;
@@ -248,7 +271,8 @@ void settleFps(const MotionOptions& o, double fallback, const char* why, Motion*
   m->fps = fallback;
   m->fps_assumed = true;
   if (m->frames.size() < 2) return;
-  std::snprintf(text, sizeof text, "%s; assumed %g fps (state the rate with --source-fps R)", why, fallback);
+  std::snprintf(text, sizeof text, "%s; assumed %g fps (state the rate with --source-fps R)", why,
+                fallback);
   m->notes.push_back(text);
 }
 
@@ -259,11 +283,11 @@ const std::vector<std::string>& motionKeys() {
       "poses", "root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand", "trans", "betas",
       "gender", "dmpls", "mocap_framerate", "mocap_frame_rate", "fps", "surface_model_type",
       // SMPLCodec
-      "smplVersion", "shapeParameters", "frameCount", "frameRate", "bodyTranslation", "bodyPose", "headPose",
-      "leftHandPose", "rightHandPose", "expressionParameters", "globalOrient",
+      "smplVersion", "shapeParameters", "frameCount", "frameRate", "bodyTranslation", "bodyPose",
+      "headPose", "leftHandPose", "rightHandPose", "expressionParameters", "globalOrient",
       // fits
-      "global_orient", "body_pose", "left_hand_pose", "right_hand_pose", "jaw_pose", "leye_pose", "reye_pose",
-      "expression", "transl", "frame_rate",
+      "global_orient", "body_pose", "left_hand_pose", "right_hand_pose", "jaw_pose", "leye_pose",
+      "reye_pose", "expression", "transl", "frame_rate",
       // AIST++
       "smpl_poses", "smpl_trans", "smpl_scaling"};
   return keys;
@@ -292,10 +316,12 @@ Result<ArrayDict> readMotionArrays(const std::string& path) {
   const std::vector<uint8_t>& b = *bytes;
   if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']'))
     return parsePickle(b.data(), b.size(), path);
-  const size_t first = std::min(b.size(), static_cast<size_t>(std::find_if(b.begin(), b.end(), [](uint8_t c) {
-                                  return !std::isspace(c);
-                                }) - b.begin()));
-  if (hasSuffix(path, ".json") || (first < b.size() && b[first] == '{')) return readJsonArrays(b, path);
+  const size_t first = std::min(
+      b.size(), static_cast<size_t>(
+                    std::find_if(b.begin(), b.end(), [](uint8_t c) { return !std::isspace(c); }) -
+                    b.begin()));
+  if (hasSuffix(path, ".json") || (first < b.size() && b[first] == '{'))
+    return readJsonArrays(b, path);
   return parseNpz(b.data(), b.size(), path);  // its error says what a zip needed
 }
 
@@ -329,17 +355,25 @@ Result<Motion> loadMotion(const std::string& path, const MotionOptions& options)
   double fallback = options.fps_fallback;
   const char* why = "no frame rate is stored";
   switch (motion_detail::detectFormat(d)) {
-    case Format::Poses: s = decodePoses(d, path, &m); break;
-    case Format::SmplCodec: s = motion_detail::decodeSmplCodec(d, path, &m); break;
-    case Format::Fit: s = motion_detail::decodeFit(d, path, &m); break;
+    case Format::Poses:
+      s = decodePoses(d, path, &m);
+      break;
+    case Format::SmplCodec:
+      s = motion_detail::decodeSmplCodec(d, path, &m);
+      break;
+    case Format::Fit:
+      s = motion_detail::decodeFit(d, path, &m);
+      break;
     case Format::Aist:
       s = motion_detail::decodeAist(d, path, &m);
       fallback = 60.0;
       why = "AIST++ stores no frame rate; its documentation gives 60 fps";
       break;
     case Format::NoPoses:
-      return makeError(path + ": missing key 'poses': no pose data (none of 'poses', 'root_orient', 'bodyPose', "
-                              "'body_pose', 'global_orient', 'smpl_poses'): a shape file, not a motion");
+      return makeError(
+          path +
+          ": missing key 'poses': no pose data (none of 'poses', 'root_orient', 'bodyPose', "
+          "'body_pose', 'global_orient', 'smpl_poses'): a shape file, not a motion");
   }
   if (!s) return s.error();
   settleFps(options, fallback, why, &m);

@@ -36,21 +36,21 @@ struct PendingHands {
 };
 
 struct Motion {
-  std::string name;                 // file stem
-  ModelKind layout = ModelKind::Smpl;  // joint layout of `rotations`
-  double fps = 30.0;                // source frames per second
-  bool fps_assumed = false;         // no rate was stored: fps is a default (see notes)
-  std::vector<Rotations> frames;    // T x J local rotations, source layout order
+  std::string name;                          // file stem
+  ModelKind layout = ModelKind::Smpl;        // joint layout of `rotations`
+  double fps = 30.0;                         // source frames per second
+  bool fps_assumed = false;                  // no rate was stored: fps is a default (see notes)
+  std::vector<Rotations> frames;             // T x J local rotations, source layout order
   std::vector<Eigen::Vector3d> translation;  // T root translations in metres (zeros if absent)
-  std::vector<double> betas;        // empty if the file has none
-  std::string gender;               // "" if absent
-  Eigen::MatrixXd dmpls;            // T x D DMPL soft-tissue coefficients (AMASS `dmpls`); 0 x 0 if absent
-  std::string dmpls_problem;        // "<path>: 'dmpls' ..." when present but unusable (shape, NaN); the
-                                    // error of an export that needs them (core/load/dmpl.h)
-  bool amass = false;               // AMASS-style file (Z-up world)
-  PendingHands hands;               // fits only: resolved by resolveFitHands()
-  std::vector<std::string> notes;   // for the user: what was assumed or averaged, one line each
-  MemoryCharge charge;              // `frames` and `translation` against the memory budget
+  std::vector<double> betas;                 // empty if the file has none
+  std::string gender;                        // "" if absent
+  Eigen::MatrixXd dmpls;  // T x D DMPL soft-tissue coefficients (AMASS `dmpls`); 0 x 0 if absent
+  std::string dmpls_problem;  // "<path>: 'dmpls' ..." when present but unusable (shape, NaN); the
+                              // error of an export that needs them (core/load/dmpl.h)
+  bool amass = false;         // AMASS-style file (Z-up world)
+  PendingHands hands;         // fits only: resolved by resolveFitHands()
+  std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
+  MemoryCharge charge;             // `frames` and `translation` against the memory budget
 };
 
 // Options of loadMotion.

@@ -10,21 +10,24 @@ namespace motion_detail {
 Status decodeAist(const ArrayDict& d, const std::string& path, Motion* m) {
   const Array* poses = find(d, "smpl_poses");
   if (poses->shape.size() != 2 || poses->shape[1] != 72 || poses->shape[0] < 1)
-    return makeError(path + ": 'smpl_poses' has shape " + shapeString(poses->shape) + "; expected (T,72)");
+    return makeError(path + ": 'smpl_poses' has shape " + shapeString(poses->shape) +
+                     "; expected (T,72)");
   if (Status s = checkNumbers(*poses, path, "smpl_poses"); !s) return s;
   const int64_t t = poses->shape[0];
   const Array* trans = find(d, "smpl_trans");
   if (!trans) return makeError(path + ": missing key 'smpl_trans'");
   if (trans->shape != std::vector<int64_t>{t, 3})
-    return makeError(path + ": 'smpl_trans' has shape " + shapeString(trans->shape) + "; expected (" + std::to_string(t) +
-                     ",3)");
+    return makeError(path + ": 'smpl_trans' has shape " + shapeString(trans->shape) +
+                     "; expected (" + std::to_string(t) + ",3)");
   if (Status s = checkNumbers(*trans, path, "smpl_trans"); !s) return s;
   double scaling = 1.0;
   if (const Array* sc = find(d, "smpl_scaling")) {
     if (sc->isString() || sc->data.size() != 1)
-      return makeError(path + ": 'smpl_scaling' has shape " + shapeString(sc->shape) + "; expected one number");
+      return makeError(path + ": 'smpl_scaling' has shape " + shapeString(sc->shape) +
+                       "; expected one number");
     if (!(sc->data[0] > 0) || !std::isfinite(sc->data[0]))
-      return makeError(path + ": 'smpl_scaling' is " + std::to_string(sc->data[0]) + "; expected a positive scale");
+      return makeError(path + ": 'smpl_scaling' is " + std::to_string(sc->data[0]) +
+                       "; expected a positive scale");
     scaling = sc->data[0];
   } else {
     m->notes.push_back("no 'smpl_scaling': the translation is used unscaled");

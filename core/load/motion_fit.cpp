@@ -48,18 +48,21 @@ int64_t framesOf(const std::vector<int64_t>& s, int joints, bool* matrices) {
 }
 
 // Optional part with `joints` joints and T frames into joints [first, ...).
-Status putPart(const ArrayDict& d, const std::string& path, const char* key, int joints, int first, Motion* m) {
+Status putPart(const ArrayDict& d, const std::string& path, const char* key, int joints, int first,
+               Motion* m) {
   const Array* a = find(d, key);
   if (!a) return Status();
   const int64_t t = static_cast<int64_t>(m->frames.size());
   bool matrices = false;
   if (!matchPart(a->shape, joints, t, &matrices))
-    return makeError(path + ": '" + key + "' has shape " + shapeString(a->shape) + "; expected " + std::to_string(t) +
-                     " frame(s) of " + std::to_string(joints) + " axis-angle triples or 3x3 rotation matrices");
+    return makeError(path + ": '" + key + "' has shape " + shapeString(a->shape) + "; expected " +
+                     std::to_string(t) + " frame(s) of " + std::to_string(joints) +
+                     " axis-angle triples or 3x3 rotation matrices");
   if (Status s = checkNumbers(*a, path, key); !s) return s;
   const int64_t stride = (matrices ? 9 : 3) * joints;
   for (int64_t f = 0; f < t; ++f)
-    (matrices ? putMatrices : putAxisAngle)(a->data.data() + f * stride, joints, first, &m->frames[f]);
+    (matrices ? putMatrices : putAxisAngle)(a->data.data() + f * stride, joints, first,
+                                            &m->frames[f]);
   return Status();
 }
 
@@ -72,13 +75,15 @@ Status putHand(const ArrayDict& d, const std::string& path, const char* key, int
   const int64_t t = static_cast<int64_t>(m->frames.size());
   if (framesAs(a->shape, 15, true) == t) return putPart(d, path, key, 15, first, m);
   const int64_t c = t > 0 && a->size() % t == 0 ? a->size() / t : 0;
-  if (c < 1 || c > 45 || a->shape.empty() || (c == 45 ? framesAs(a->shape, 15, false) != t
-                                                       : product(a->shape, a->shape.size() - 1) != t))
-    return makeError(path + ": '" + key + "' has shape " + shapeString(a->shape) + "; expected (" + std::to_string(t) +
-                     ",45) axis-angle, (" + std::to_string(t) + ",C) PCA coefficients with C < 45, or (" +
-                     std::to_string(t) + ",15,3,3) rotation matrices");
+  if (c < 1 || c > 45 || a->shape.empty() ||
+      (c == 45 ? framesAs(a->shape, 15, false) != t : product(a->shape, a->shape.size() - 1) != t))
+    return makeError(path + ": '" + key + "' has shape " + shapeString(a->shape) + "; expected (" +
+                     std::to_string(t) + ",45) axis-angle, (" + std::to_string(t) +
+                     ",C) PCA coefficients with C < 45, or (" + std::to_string(t) +
+                     ",15,3,3) rotation matrices");
   if (Status s = checkNumbers(*a, path, key); !s) return s;
-  for (int64_t f = 0; f < t; ++f) pending->push_back(Eigen::Map<const Eigen::VectorXd>(a->data.data() + f * c, c));
+  for (int64_t f = 0; f < t; ++f)
+    pending->push_back(Eigen::Map<const Eigen::VectorXd>(a->data.data() + f * c, c));
   return Status();
 }
 
@@ -90,10 +95,12 @@ std::vector<double> oneRow(const Array& a, const char* key, Motion* m) {
   for (int64_t r = 0; r < rows; ++r)
     for (int64_t i = 0; i < n; ++i) mean[i] += a.data[r * n + i] / rows;
   for (int64_t r = 0; r < rows; ++r)
-    for (int64_t i = 0; i < n; ++i) deviation = std::max(deviation, std::abs(a.data[r * n + i] - mean[i]));
+    for (int64_t i = 0; i < n; ++i)
+      deviation = std::max(deviation, std::abs(a.data[r * n + i] - mean[i]));
   if (deviation > 0) {
     char text[160];
-    std::snprintf(text, sizeof text, "'%s' has %lld different rows: their mean is used (largest deviation %.3g)", key,
+    std::snprintf(text, sizeof text,
+                  "'%s' has %lld different rows: their mean is used (largest deviation %.3g)", key,
                   static_cast<long long>(rows), deviation);
     m->notes.push_back(text);
   }
@@ -105,9 +112,11 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   m->translation.assign(t, Eigen::Vector3d::Zero());
   if (const Array* a = find(d, "transl")) {
     if (a->size() != 3 * t || a->shape.empty() || a->shape.back() != 3)
-      return makeError(path + ": 'transl' has shape " + shapeString(a->shape) + "; expected (" + std::to_string(t) + ",3)");
+      return makeError(path + ": 'transl' has shape " + shapeString(a->shape) + "; expected (" +
+                       std::to_string(t) + ",3)");
     if (Status s = checkNumbers(*a, path, "transl"); !s) return s;
-    for (int64_t f = 0; f < t; ++f) m->translation[f] = Eigen::Map<const Eigen::Vector3d>(a->data.data() + 3 * f);
+    for (int64_t f = 0; f < t; ++f)
+      m->translation[f] = Eigen::Map<const Eigen::Vector3d>(a->data.data() + 3 * f);
   }
   if (const Array* b = find(d, "betas")) {
     if (Status s = checkNumbers(*b, path, "betas"); !s) return s;
@@ -115,7 +124,8 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
   }
   if (const Array* g = find(d, "gender"); g && !g->strings.empty()) m->gender = g->strings[0];
   if (const Array* e = find(d, "expression"))
-    m->notes.push_back("'expression' " + shapeString(e->shape) + " is not baked (the export has a fixed expression)");
+    m->notes.push_back("'expression' " + shapeString(e->shape) +
+                       " is not baked (the export has a fixed expression)");
   m->fps = 0.0;
   for (const char* key : {"fps", "frame_rate", "mocap_framerate"})
     if (const Array* r = find(d, key); r && !r->isString() && r->data.size() == 1) {
@@ -130,14 +140,16 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
 
 Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m) {
   const Array* body = find(d, "body_pose");
-  if (!body) return makeError(path + ": missing key 'body_pose' (a fit with 'global_orient' needs it)");
+  if (!body)
+    return makeError(path + ": missing key 'body_pose' (a fit with 'global_orient' needs it)");
   bool matrices = false;
   int64_t t = framesOf(body->shape, 21, &matrices);
   int joints = 21;
   if (t == 0 && (t = framesOf(body->shape, 23, &matrices)) > 0) joints = 23;
   if (t <= 0)
     return makeError(path + ": 'body_pose' has shape " + shapeString(body->shape) +
-                     "; expected 21 joints (SMPL-X/SMPL-H: (T,63), (T,21,3), (T,21,3,3)) or 23 (SMPL: (T,69), ...)");
+                     "; expected 21 joints (SMPL-X/SMPL-H: (T,63), (T,21,3), (T,21,3,3)) or 23 "
+                     "(SMPL: (T,69), ...)");
   m->layout = joints == 21 ? ModelKind::SmplX : ModelKind::Smpl;
   if (Status s = allocateFrames(t, canonicalJointNames(m->layout).size(), path, m); !s) return s;
   if (!find(d, "global_orient")) m->notes.push_back("no 'global_orient': the root stays at rest");
@@ -159,23 +171,25 @@ namespace {
 
 // One side: coefficients -> 45-d axis-angle per the reference, into joints [first, first+15).
 Status resolveSide(const BodyModel& model, bool flat, const std::string& context, const char* side,
-                   const Eigen::MatrixXd& components, const Eigen::VectorXd& mean, int first, Motion* m,
-                   const std::vector<Eigen::VectorXd>& coefficients) {
+                   const Eigen::MatrixXd& components, const Eigen::VectorXd& mean, int first,
+                   Motion* m, const std::vector<Eigen::VectorXd>& coefficients) {
   const std::string suffix = side;
   for (size_t f = 0; f < coefficients.size(); ++f) {
     const Eigen::Index c = coefficients[f].size();
     Eigen::VectorXd pose = coefficients[f];
     if (c < 45) {
       if (components.rows() < c)
-        return makeError(context + ": " + std::to_string(c) + " PCA hand coefficients need 'hands_components" + suffix +
-                         "' with at least " + std::to_string(c) + " rows in the model " + model.name + " (it has " +
-                         std::to_string(components.rows()) + ")");
+        return makeError(context + ": " + std::to_string(c) +
+                         " PCA hand coefficients need 'hands_components" + suffix +
+                         "' with at least " + std::to_string(c) + " rows in the model " +
+                         model.name + " (it has " + std::to_string(components.rows()) + ")");
       pose = components.topRows(c).transpose() * coefficients[f];
     }
     if (!flat) {
       if (mean.size() != 45)
-        return makeError(context + ": the hand pose is relative to the mean hand, but the model " + model.name +
-                         " has no 'hands_mean" + suffix + "' (give --flat-hand-mean if the poses are flat-hand relative)");
+        return makeError(context + ": the hand pose is relative to the mean hand, but the model " +
+                         model.name + " has no 'hands_mean" + suffix +
+                         "' (give --flat-hand-mean if the poses are flat-hand relative)");
       pose += mean;
     }
     motion_detail::putAxisAngle(pose.data(), 15, first, &m->frames[f]);
@@ -185,20 +199,24 @@ Status resolveSide(const BodyModel& model, bool flat, const std::string& context
 
 }  // namespace
 
-Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::string& context, Motion* m) {
+Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::string& context,
+                       Motion* m) {
   if (!m->hands.active()) return Status();
   const auto& names = model.joint_names;
   if (std::find(names.begin(), names.end(), "left_index1") == names.end()) {
-    m->notes.push_back("the fit's hand poses are dropped: the model " + model.name + " has no finger joints");
+    m->notes.push_back("the fit's hand poses are dropped: the model " + model.name +
+                       " has no finger joints");
     m->hands = PendingHands();
     return Status();
   }
   const int left = m->layout == ModelKind::SmplX ? 25 : 22;
-  if (Status s = resolveSide(model, flat_hand_mean, context, "l", model.hands_components_l, model.hands_mean_l, left, m,
-                             m->hands.left); !s)
+  if (Status s = resolveSide(model, flat_hand_mean, context, "l", model.hands_components_l,
+                             model.hands_mean_l, left, m, m->hands.left);
+      !s)
     return s;
-  if (Status s = resolveSide(model, flat_hand_mean, context, "r", model.hands_components_r, model.hands_mean_r,
-                             left + 15, m, m->hands.right); !s)
+  if (Status s = resolveSide(model, flat_hand_mean, context, "r", model.hands_components_r,
+                             model.hands_mean_r, left + 15, m, m->hands.right);
+      !s)
     return s;
   m->hands = PendingHands();
   return Status();

@@ -45,6 +45,7 @@ Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m);
 // joints drops the hands (note). Errors name the motion and the missing key:
 //   "fit.pkl: 12 PCA hand coefficients need 'hands_componentsl' in the model m.npz".
 // No-op when there is nothing pending.
-Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::string& context, Motion* m);
+Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::string& context,
+                       Motion* m);
 
 }  // namespace smpl

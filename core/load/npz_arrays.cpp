@@ -3,8 +3,8 @@
 #include <utility>
 
 #include "core/io/npy.h"
-#include "core/io/printable.h"
 #include "core/io/pickle/pickle.h"
+#include "core/io/printable.h"
 
 namespace smpl {
 
@@ -14,7 +14,8 @@ Result<Array> readNpzMember(const NpzArchive& npz, const std::string& key) {
   if (!*object) return npz.get(key);
   Result<ZipEntry> e = npz.memberBytes(key);
   if (!e) return e.error();
-  return parseObjectNpy(e->data.data(), e->data.size(), npz.context() + ": '" + printable(key) + "'");
+  return parseObjectNpy(e->data.data(), e->data.size(),
+                        npz.context() + ": '" + printable(key) + "'");
 }
 
 Result<ArrayDict> readNpzArrays(const std::string& path, const std::vector<std::string>& keys,

@@ -46,18 +46,20 @@ Result<ObjData> parseObj(const std::string& path) {
       ++obj.positions;
     } else if (tag == "vt") {
       Eigen::Vector2f uv;
-      if (!(ls >> uv.x() >> uv.y())) return makeError(path + ":" + std::to_string(line_no) + ": malformed 'vt' line");
+      if (!(ls >> uv.x() >> uv.y()))
+        return makeError(path + ":" + std::to_string(line_no) + ": malformed 'vt' line");
       obj.uvs.push_back(uv);
     } else if (tag == "f") {
       std::vector<std::pair<int, int>> face;
       for (std::string token; ls >> token;) {
         std::pair<int, int> corner;
         if (!parseCorner(token, obj, &corner))
-          return makeError(path + ":" + std::to_string(line_no) + ": face corner '" + printable(token, 64) +
-                           "' is not v/vt with indices in the int range");
+          return makeError(path + ":" + std::to_string(line_no) + ": face corner '" +
+                           printable(token, 64) + "' is not v/vt with indices in the int range");
         face.push_back(corner);
       }
-      if (face.size() < 3) return makeError(path + ":" + std::to_string(line_no) + ": face with fewer than 3 corners");
+      if (face.size() < 3)
+        return makeError(path + ":" + std::to_string(line_no) + ": face with fewer than 3 corners");
       obj.faces.push_back(std::move(face));
     }
   }
@@ -71,7 +73,8 @@ Result<UvLayout> loadUvLayout(const std::string& path, const BodyModel& model) {
   if (!obj) return obj.error();
   const int n = model.numVertices();
   if (obj->positions != 0 && obj->positions != n)
-    return makeError(path + ": has " + std::to_string(obj->positions) + " vertices; the model has " + std::to_string(n) +
+    return makeError(path + ": has " + std::to_string(obj->positions) +
+                     " vertices; the model has " + std::to_string(n) +
                      " (the UV mesh must share the model's vertex order)");
   if (obj->faces.empty()) return makeError(path + ": no faces with texture coordinates");
   return splitUvSeams(obj->faces, obj->uvs, n, path);

@@ -8,8 +8,8 @@ namespace smpl {
 
 Result<std::optional<UvLayout>> modelUvLayout(const BodyModel& model) {
   if (model.texcoord_faces.rows() == 0) return std::optional<UvLayout>();
-  Result<UvLayout> layout =
-      splitUvSeams(model.faces, model.texcoord_faces, model.texcoords, model.numVertices(), model.name + ": 'ft'");
+  Result<UvLayout> layout = splitUvSeams(model.faces, model.texcoord_faces, model.texcoords,
+                                         model.numVertices(), model.name + ": 'ft'");
   if (!layout) return layout.error();
   return std::optional<UvLayout>(std::move(*layout));
 }
@@ -17,7 +17,8 @@ Result<std::optional<UvLayout>> modelUvLayout(const BodyModel& model) {
 Result<std::optional<UvLayout>> resolveUvLayout(const std::string& option, const BodyModel& model) {
   if (option == "none") return std::optional<UvLayout>();
   if (option.empty()) return modelUvLayout(model);
-  Result<UvLayout> layout = hasSuffix(option, ".npy") ? loadUvNumpyPair(option, model) : loadUvLayout(option, model);
+  Result<UvLayout> layout =
+      hasSuffix(option, ".npy") ? loadUvNumpyPair(option, model) : loadUvLayout(option, model);
   if (!layout) return layout.error();
   return std::optional<UvLayout>(std::move(*layout));
 }

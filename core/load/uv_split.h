@@ -26,12 +26,14 @@ using UvPolygon = std::vector<std::pair<int, int>>;
 
 // Polygons are fanned into triangles. Errors name `context` and the first
 // corner whose vertex (>= N) or uv index (>= uvs.size()) is out of range.
-Result<UvLayout> splitUvSeams(const std::vector<UvPolygon>& polygons, const std::vector<Eigen::Vector2f>& uvs,
-                              int num_vertices, const std::string& context);
+Result<UvLayout> splitUvSeams(const std::vector<UvPolygon>& polygons,
+                              const std::vector<Eigen::Vector2f>& uvs, int num_vertices,
+                              const std::string& context);
 
 // Triangles as the model stores them (`faces` F x 3) with per-corner UV
 // indices `uv_faces` (F x 3) into `uvs` (U x 2): the SMPL-X release's f/ft/vt.
 Result<UvLayout> splitUvSeams(const Eigen::MatrixXi& faces, const Eigen::MatrixXi& uv_faces,
-                              const Eigen::MatrixXd& uvs, int num_vertices, const std::string& context);
+                              const Eigen::MatrixXd& uvs, int num_vertices,
+                              const std::string& context);
 
 }  // namespace smpl

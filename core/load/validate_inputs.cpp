@@ -32,18 +32,21 @@ Status checkRotation(Eigen::Matrix3d* r, const Motion& m, size_t frame, size_t j
   }
   const std::vector<std::string>& names = canonicalJointNames(m.layout);
   const std::string name = joint < names.size() ? " (" + names[joint] + ")" : "";
-  return makeError(path + ": 'poses' frame " + std::to_string(frame) + " joint " + std::to_string(joint) +
-                   name + " is not a rotation matrix: ||R^T R - I|| = " + number(error) + ", det = " +
-                   number(det) + "; expected orthonormal with det +1 within " + number(kRotationTolerance));
+  return makeError(
+      path + ": 'poses' frame " + std::to_string(frame) + " joint " + std::to_string(joint) + name +
+      " is not a rotation matrix: ||R^T R - I|| = " + number(error) + ", det = " + number(det) +
+      "; expected orthonormal with det +1 within " + number(kRotationTolerance));
 }
 
 }  // namespace
 
-Status checkCoefficients(const std::vector<double>& values, const std::string& context, const std::string& what) {
+Status checkCoefficients(const std::vector<double>& values, const std::string& context,
+                         const std::string& what) {
   for (size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]) || std::abs(values[i]) > kMaxCoefficient)
-      return makeError(context + ": " + what + "[" + std::to_string(i) + "] is " + number(values[i]) +
-                       "; expected a finite value with magnitude at most " + number(kMaxCoefficient));
+      return makeError(context + ": " + what + "[" + std::to_string(i) + "] is " +
+                       number(values[i]) + "; expected a finite value with magnitude at most " +
+                       number(kMaxCoefficient));
   return Status();
 }
 
@@ -53,10 +56,11 @@ Status checkFloatRange(const Array& a, const std::string& context, const std::st
   if (!bad) return Status();
   for (size_t i = 0; i < a.data.size(); ++i) {
     const double v = a.data[i];
-    if (!std::isfinite(v)) return makeError(context + ": '" + key + "' contains NaN or infinite values");
+    if (!std::isfinite(v))
+      return makeError(context + ": '" + key + "' contains NaN or infinite values");
     if (std::abs(v) > FLT_MAX)
-      return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " + number(v) +
-                       ", beyond the float32 range the output is written in");
+      return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " +
+                       number(v) + ", beyond the float32 range the output is written in");
   }
   return Status();
 }
@@ -65,8 +69,8 @@ Status checkIndices(const Array& a, const std::string& context, const std::strin
   for (size_t i = 0; i < a.data.size(); ++i) {
     const double v = a.data[i];
     if (!(v >= 0 && v < 2147483648.0) || v != std::floor(v))
-      return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " + number(v) +
-                       "; expected a non-negative integer index");
+      return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " +
+                       number(v) + "; expected a non-negative integer index");
   }
   return Status();
 }
@@ -84,8 +88,9 @@ Status checkMotionValues(Motion* m, const std::string& path) {
   for (size_t f = 0; f < m->translation.size(); ++f)
     for (int c = 0; c < 3; ++c)
       if (!(std::abs(m->translation[f][c]) <= kMaxTranslation))
-        return makeError(path + ": 'trans' frame " + std::to_string(f) + " is " + number(m->translation[f][c]) +
-                         " m; expected finite values within " + number(kMaxTranslation) + " m");
+        return makeError(path + ": 'trans' frame " + std::to_string(f) + " is " +
+                         number(m->translation[f][c]) + " m; expected finite values within " +
+                         number(kMaxTranslation) + " m");
   for (size_t f = 0; f < m->frames.size(); ++f)
     for (size_t j = 0; j < m->frames[f].size(); ++j)
       if (Status st = checkRotation(&m->frames[f][j], *m, f, j, path); !st) return st;

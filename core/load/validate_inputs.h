@@ -33,8 +33,8 @@
 namespace smpl {
 
 constexpr double kMaxCoefficient = 1e3;
-constexpr double kMaxTranslation = 1e4;      // metres
-constexpr double kMinFrameRate = 1.0;        // frames per second
+constexpr double kMaxTranslation = 1e4;  // metres
+constexpr double kMinFrameRate = 1.0;    // frames per second
 constexpr double kMaxFrameRate = 10000.0;
 constexpr double kRotationTolerance = 1e-3;  // Frobenius norm of R^T R - I
 

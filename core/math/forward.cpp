@@ -20,7 +20,8 @@ Eigen::Matrix3d rodrigues(const Eigen::Vector3d& axis_angle) {
 
 Rotations rotationsFromAxisAngle(const Eigen::VectorXd& axis_angle) {
   Rotations rotations(axis_angle.size() / 3);
-  for (size_t k = 0; k < rotations.size(); ++k) rotations[k] = rodrigues(axis_angle.segment<3>(3 * k));
+  for (size_t k = 0; k < rotations.size(); ++k)
+    rotations[k] = rodrigues(axis_angle.segment<3>(3 * k));
   return rotations;
 }
 
@@ -29,7 +30,8 @@ Eigen::VectorXd poseFeatures(const Rotations& rotations) {
   Eigen::VectorXd f(9 * std::max(0, k - 1));
   for (int j = 1; j < k; ++j)
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) f[9 * (j - 1) + 3 * r + c] = rotations[j](r, c) - (r == c ? 1.0 : 0.0);
+      for (int c = 0; c < 3; ++c)
+        f[9 * (j - 1) + 3 * r + c] = rotations[j](r, c) - (r == c ? 1.0 : 0.0);
   return f;
 }
 
@@ -37,8 +39,8 @@ namespace {
 
 Status checkLength(const char* what, Eigen::Index given, Eigen::Index available) {
   if (given > available)
-    return makeError(std::string(what) + ": " + std::to_string(given) + " values given; the model has " +
-                     std::to_string(available));
+    return makeError(std::string(what) + ": " + std::to_string(given) +
+                     " values given; the model has " + std::to_string(available));
   return Status();
 }
 
@@ -54,7 +56,8 @@ Eigen::MatrixXd blend(const Eigen::MatrixXd& dirs, const Eigen::VectorXd& coeffs
 Result<ShapedBody> shapeBody(const BodyModel& model, const Eigen::VectorXd& betas,
                              const Eigen::VectorXd& expression) {
   if (Status s = checkLength("betas", betas.size(), model.numBetas()); !s) return s.error();
-  if (Status s = checkLength("expression", expression.size(), model.numExpressions()); !s) return s.error();
+  if (Status s = checkLength("expression", expression.size(), model.numExpressions()); !s)
+    return s.error();
   ShapedBody body;
   body.v_shaped = model.v_template;
   if (betas.size() > 0) body.v_shaped += blend(model.shapedirs, betas);
@@ -105,8 +108,9 @@ Eigen::MatrixXd skin(const Eigen::MatrixXd& weights, const std::vector<Eigen::Ma
 
 Status checkInput(const BodyModel& model, const ForwardInput& input) {
   if (static_cast<int>(input.rotations.size()) != model.numJoints())
-    return makeError("pose: " + std::to_string(input.rotations.size()) + " rotations given; the model has " +
-                     std::to_string(model.numJoints()) + " joints");
+    return makeError("pose: " + std::to_string(input.rotations.size()) +
+                     " rotations given; the model has " + std::to_string(model.numJoints()) +
+                     " joints");
   if (input.weights &&
       (input.weights->rows() != model.numVertices() || input.weights->cols() != model.numJoints()))
     return makeError("skin weights override has the wrong shape");
@@ -132,7 +136,8 @@ Result<ForwardResult> forward(const BodyModel& model, const ForwardInput& input)
   out.vertices.rowwise() += input.translation.transpose();
   out.joints.resize(model.numJoints(), 3);
   for (int j = 0; j < model.numJoints(); ++j)
-    out.joints.row(j) = out.world[j].topRightCorner<3, 1>().transpose() + input.translation.transpose();
+    out.joints.row(j) =
+        out.world[j].topRightCorner<3, 1>().transpose() + input.translation.transpose();
   return out;
 }
 

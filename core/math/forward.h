@@ -38,18 +38,18 @@ Result<ShapedBody> shapeBody(const BodyModel& model, const Eigen::VectorXd& beta
 struct ForwardInput {
   Eigen::VectorXd betas;
   Eigen::VectorXd expression;
-  Rotations rotations;                          // K local rotations (model axes)
+  Rotations rotations;  // K local rotations (model axes)
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-  const Eigen::MatrixXd* weights = nullptr;     // N x K override (e.g. pruned); null = model's
-  bool pose_correctives = true;                 // false: skip P f (LBS only)
+  const Eigen::MatrixXd* weights = nullptr;  // N x K override (e.g. pruned); null = model's
+  bool pose_correctives = true;              // false: skip P f (LBS only)
 };
 
 struct ForwardResult {
-  Eigen::MatrixXd vertices;        // N x 3 posed
-  Eigen::MatrixXd v_shaped;        // N x 3
-  Eigen::MatrixXd joints;          // K x 3 posed joint positions
-  Eigen::MatrixXd rest_joints;     // K x 3
-  Eigen::VectorXd pose_features;   // 9(K-1)
+  Eigen::MatrixXd vertices;            // N x 3 posed
+  Eigen::MatrixXd v_shaped;            // N x 3
+  Eigen::MatrixXd joints;              // K x 3 posed joint positions
+  Eigen::MatrixXd rest_joints;         // K x 3
+  Eigen::VectorXd pose_features;       // 9(K-1)
   std::vector<Eigen::Matrix4d> world;  // G_k
 };
 

@@ -16,7 +16,9 @@ Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, c
   Eigen::Matrix<double, Eigen::Dynamic, 12> a(k, 12);
   for (int j = 0; j < k; ++j) {
     const int p = model.parents[j];
-    Eigen::Vector3d offset = joints.row(j).transpose() - (p >= 0 ? Eigen::Vector3d(joints.row(p).transpose()) : Eigen::Vector3d::Zero());
+    Eigen::Vector3d offset =
+        joints.row(j).transpose() -
+        (p >= 0 ? Eigen::Vector3d(joints.row(p).transpose()) : Eigen::Vector3d::Zero());
     if (p < 0) {
       world[j] << rot[j], offset;
     } else {
@@ -24,7 +26,8 @@ Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, c
       world[j].col(3) = world[p].leftCols<3>() * offset + world[p].col(3);
     }
     Eigen::Matrix<double, 3, 4> aj;
-    aj << world[j].leftCols<3>(), world[j].col(3) - world[j].leftCols<3>() * joints.row(j).transpose();
+    aj << world[j].leftCols<3>(),
+        world[j].col(3) - world[j].leftCols<3>() * joints.row(j).transpose();
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 4; ++c) a(j, 4 * r + c) = aj(r, c);
   }
@@ -34,16 +37,19 @@ Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, c
 using Transforms = Eigen::Matrix<float, Eigen::Dynamic, 12, Eigen::RowMajor>;
 
 void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs, const BatchInput& in,
-              const Eigen::MatrixXf& weights, bool simd, int first, int count, Eigen::MatrixXd* out) {
+              const Eigen::MatrixXf& weights, bool simd, int first, int count,
+              Eigen::MatrixXd* out) {
   const int n = static_cast<int>(model.numVertices()), p = model.numPoseFeatures();
   Eigen::MatrixXf features(p, count);
-  for (int t = 0; t < count; ++t) features.col(t) = poseFeatures((*in.frames)[first + t]).cast<float>();
+  for (int t = 0; t < count; ++t)
+    features.col(t) = poseFeatures((*in.frames)[first + t]).cast<float>();
   Eigen::MatrixXf v_posed(posedirs.rows_padded, count);  // the correctives, one column per frame
   batch::correctiveProduct(posedirs, features.data(), count, v_posed.data(), simd);
   for (int t = 0; t < count; ++t) {
-    const Transforms a = restRelative(model, (*in.frames)[first + t], in.body->joints).cast<float>();
-    batch::skinFrame(weights.data(), n, model.numJoints(), a.data(), in.body->v_shaped.data(), v_posed.col(t).data(),
-                     out->col(first + t).data(), simd);
+    const Transforms a =
+        restRelative(model, (*in.frames)[first + t], in.body->joints).cast<float>();
+    batch::skinFrame(weights.data(), n, model.numJoints(), a.data(), in.body->v_shaped.data(),
+                     v_posed.col(t).data(), out->col(first + t).data(), simd);
   }
 }
 
@@ -53,14 +59,16 @@ Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
   const int frames = static_cast<int>(in.frames->size());
   Eigen::MatrixXd out(3 * model.numVertices(), frames);
   const Eigen::MatrixXf weights = (in.weights ? *in.weights : model.weights).cast<float>();
-  const batch::PackedPosedirs posedirs = batch::packPosedirs(
-      model.posedirs.data(), static_cast<int>(model.posedirs.rows()), static_cast<int>(model.posedirs.cols()));
+  const batch::PackedPosedirs posedirs =
+      batch::packPosedirs(model.posedirs.data(), static_cast<int>(model.posedirs.rows()),
+                          static_cast<int>(model.posedirs.cols()));
   const bool simd = in.simd && batch::haveAvx2Fma();
   const int block = std::max(1, in.block);
   const int blocks = (frames + block - 1) / block;
   auto work = [&](int worker, int workers) {
     for (int b = worker; b < blocks; b += workers)
-      runBlock(model, posedirs, in, weights, simd, b * block, std::min(block, frames - b * block), &out);
+      runBlock(model, posedirs, in, weights, simd, b * block, std::min(block, frames - b * block),
+               &out);
   };
   const int workers = std::max(1, std::min(in.threads, blocks));
   std::vector<std::thread> pool;

@@ -17,12 +17,12 @@
 namespace smpl {
 
 struct BatchInput {
-  const ShapedBody* body = nullptr;         // from shapeBody()
+  const ShapedBody* body = nullptr;  // from shapeBody()
   const std::vector<Rotations>* frames = nullptr;
-  const Eigen::MatrixXd* weights = nullptr; // N x K override; null = model's
-  int threads = 1;                          // worker threads over blocks of frames
-  int block = 256;                          // frames per GEMM
-  bool simd = true;                         // false: the portable kernels even on AVX2 CPUs (tests)
+  const Eigen::MatrixXd* weights = nullptr;  // N x K override; null = model's
+  int threads = 1;                           // worker threads over blocks of frames
+  int block = 256;                           // frames per GEMM
+  bool simd = true;  // false: the portable kernels even on AVX2 CPUs (tests)
 };
 
 // Returns 3N x T: column t holds frame t's vertices (x0 y0 z0 x1 ...).

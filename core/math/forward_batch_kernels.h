@@ -32,7 +32,8 @@ PackedPosedirs packPosedirs(const double* posedirs, int rows, int depth);
 
 // out = posedirs * features: features is P x cols (column-major floats, pose
 // features f of each frame); out is rows_padded x cols, column-major.
-void correctiveProduct(const PackedPosedirs& a, const float* features, int cols, float* out, bool simd);
+void correctiveProduct(const PackedPosedirs& a, const float* features, int cols, float* out,
+                       bool simd);
 
 // One frame's linear blend skinning. weights: N x K column-major floats;
 // transforms: K x 12 row-major floats (top 3x4 rows of G_k [I | -J_k], row

@@ -15,7 +15,8 @@ std::vector<Eigen::VectorXd> samplePoses(int num_joints, int count, uint64_t see
   uint64_t state = seed;
   std::vector<Eigen::VectorXd> poses(count, Eigen::VectorXd(3 * num_joints));
   for (Eigen::VectorXd& pose : poses)
-    for (Eigen::Index i = 0; i < pose.size(); ++i) pose[i] = (2.0 * uniform01(&state) - 1.0) * scale;
+    for (Eigen::Index i = 0; i < pose.size(); ++i)
+      pose[i] = (2.0 * uniform01(&state) - 1.0) * scale;
   return poses;
 }
 

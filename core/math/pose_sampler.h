@@ -10,7 +10,8 @@
 
 namespace smpl {
 
-std::vector<Eigen::VectorXd> samplePoses(int num_joints, int count, uint64_t seed, double scale = 0.6);
+std::vector<Eigen::VectorXd> samplePoses(int num_joints, int count, uint64_t seed,
+                                         double scale = 0.6);
 
 // The generator behind samplePoses, for other code that needs the same
 // machine-independent stream (the demo body's pose set): the next 64-bit

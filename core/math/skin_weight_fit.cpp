@@ -19,7 +19,8 @@ using Affine = Eigen::Matrix<double, 3, 4>;
 constexpr int kMaxCandidates = 12;
 
 // A_k = G_k [I | -J_k] of every joint for one pose (docs/file-contract.md).
-std::vector<Affine> skinningTransforms(const BodyModel& model, const Eigen::MatrixXd& joints, const Rotations& r) {
+std::vector<Affine> skinningTransforms(const BodyModel& model, const Eigen::MatrixXd& joints,
+                                       const Rotations& r) {
   const int k_count = model.numJoints();
   std::vector<Eigen::Matrix3d> rot(k_count);
   std::vector<Eigen::Vector3d> trans(k_count);
@@ -65,7 +66,8 @@ TrainingSet trainingSet(const BodyModel& model, const ShapedBody& body, const Sk
 std::vector<int> jointsByWeight(const Eigen::MatrixXd& weights, Eigen::Index i) {
   std::vector<int> order(static_cast<size_t>(weights.cols()));
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weights(i, a) > weights(i, b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return weights(i, a) > weights(i, b); });
   return order;
 }
 
@@ -105,14 +107,16 @@ Eigen::MatrixXd residualGram(const BodyModel& model, const TrainingSet& ts, Eige
 }
 
 // Largest |sum_s u_s a_ps - y_p| over the training poses.
-double maxResidual(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, const std::vector<int>& nonzero,
-                   const std::vector<int>& joints, const Eigen::VectorXd& u) {
+double maxResidual(const BodyModel& model, const TrainingSet& ts, Eigen::Index i,
+                   const std::vector<int>& nonzero, const std::vector<int>& joints,
+                   const Eigen::VectorXd& u) {
   double worst = 0.0;
   for (size_t p = 0; p < ts.transforms.size(); ++p) {
     const Eigen::Vector4d x = ts.v_posed.col(Eigen::Index(p)).segment<3>(3 * i).homogeneous();
     Eigen::Vector3d r = Eigen::Vector3d::Zero();
     for (int k : nonzero) r -= model.weights(i, k) * (ts.transforms[p][size_t(k)] * x);
-    for (size_t s = 0; s < joints.size(); ++s) r += u(Eigen::Index(s)) * (ts.transforms[p][size_t(joints[s])] * x);
+    for (size_t s = 0; s < joints.size(); ++s)
+      r += u(Eigen::Index(s)) * (ts.transforms[p][size_t(joints[s])] * x);
     worst = std::max(worst, r.norm());
   }
   return worst;
@@ -121,8 +125,8 @@ double maxResidual(const BodyModel& model, const TrainingSet& ts, Eigen::Index i
 // Fitted weights on the candidate subset `subset` (indices into the Gram
 // matrix) and their training error u' D u. `prior` (same length) is the
 // ridge's anchor and the solver's feasible start.
-double fitSubset(const Eigen::MatrixXd& gram, const std::vector<int>& subset, const Eigen::VectorXd& prior,
-                 Eigen::VectorXd* u) {
+double fitSubset(const Eigen::MatrixXd& gram, const std::vector<int>& subset,
+                 const Eigen::VectorXd& prior, Eigen::VectorXd* u) {
   const int m = int(subset.size());
   Eigen::MatrixXd d(m, m);
   for (int a = 0; a < m; ++a)
@@ -138,18 +142,21 @@ double fitSubset(const Eigen::MatrixXd& gram, const std::vector<int>& subset, co
 // adds the joint that lowers the fitted error most; ties: larger weight).
 // Guard: if the fit's largest training-pose error exceeds truncation's, the
 // vertex keeps its truncated weights (so the worst case does not grow).
-void fitVertex(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, int m, SparseSkin* skin) {
+void fitVertex(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, int m,
+               SparseSkin* skin) {
   const std::vector<int> order = jointsByWeight(model.weights, i);
   int count = 0;
   while (count < int(order.size()) && model.weights(i, order[size_t(count)]) > 0) ++count;
-  if (count == 0) return storeRow(i, {0}, Eigen::VectorXd::Ones(1), skin);  // no weight: follows the root
+  if (count == 0)
+    return storeRow(i, {0}, Eigen::VectorXd::Ones(1), skin);  // no weight: follows the root
   const std::vector<int> nonzero(order.begin(), order.begin() + count);
   if (count <= m) {  // every influence kept: exact
     Eigen::VectorXd u(count);
     for (int s = 0; s < count; ++s) u(s) = model.weights(i, nonzero[size_t(s)]);
     return storeRow(i, nonzero, u / u.sum(), skin);
   }
-  const std::vector<int> candidates(nonzero.begin(), nonzero.begin() + std::min(count, std::max(kMaxCandidates, 2 * m)));
+  const std::vector<int> candidates(
+      nonzero.begin(), nonzero.begin() + std::min(count, std::max(kMaxCandidates, 2 * m)));
   const Eigen::MatrixXd gram = residualGram(model, ts, i, nonzero, candidates);
   std::vector<int> top(static_cast<size_t>(m), 0);
   std::iota(top.begin(), top.end(), 0);
@@ -165,7 +172,8 @@ void fitVertex(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, in
       if (std::find(greedy.begin(), greedy.end(), c) != greedy.end()) continue;
       std::vector<int> trial = greedy;
       trial.push_back(c);
-      const double err = fitSubset(gram, trial, Eigen::VectorXd::Constant(int(trial.size()), 1.0 / trial.size()), &u);
+      const double err = fitSubset(
+          gram, trial, Eigen::VectorXd::Constant(int(trial.size()), 1.0 / trial.size()), &u);
       if (pick < 0 || err < pick_err) pick = c, pick_err = err;
     }
     greedy.push_back(pick);
@@ -178,15 +186,16 @@ void fitVertex(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, in
   for (int s : best_set) joints.push_back(candidates[size_t(s)]);
   // Never worse at the vertex's worst training pose than truncation.
   const Eigen::VectorXd truncated = prior / prior.sum();
-  if (maxResidual(model, ts, i, nonzero, joints, best_u) > maxResidual(model, ts, i, nonzero, top_joints, truncated))
+  if (maxResidual(model, ts, i, nonzero, joints, best_u) >
+      maxResidual(model, ts, i, nonzero, top_joints, truncated))
     return storeRow(i, top_joints, truncated, skin);
   storeRow(i, joints, best_u, skin);
 }
 
 // Minimiser of 1/2 u'Hu - c'u with u_j = 0 for the active j and sum u = 1:
 // the KKT system [H_FF -1; 1' 0][u_F; mu] = [c_F; 1]. Returns u and mu.
-Eigen::VectorXd equalityStep(const Eigen::MatrixXd& h, const Eigen::VectorXd& c, const std::vector<bool>& active,
-                             double* mu) {
+Eigen::VectorXd equalityStep(const Eigen::MatrixXd& h, const Eigen::VectorXd& c,
+                             const std::vector<bool>& active, double* mu) {
   std::vector<int> free_idx;
   for (int j = 0; j < int(active.size()); ++j)
     if (!active[size_t(j)]) free_idx.push_back(j);
@@ -209,7 +218,8 @@ Eigen::VectorXd equalityStep(const Eigen::MatrixXd& h, const Eigen::VectorXd& c,
 
 }  // namespace
 
-Eigen::VectorXd solveSimplexQp(const Eigen::MatrixXd& h, const Eigen::VectorXd& c, const Eigen::VectorXd& u0) {
+Eigen::VectorXd solveSimplexQp(const Eigen::MatrixXd& h, const Eigen::VectorXd& c,
+                               const Eigen::VectorXd& u0) {
   const int m = int(h.rows());
   Eigen::VectorXd u = u0;
   std::vector<bool> active(static_cast<size_t>(m), false);

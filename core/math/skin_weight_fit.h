@@ -34,21 +34,23 @@
 namespace smpl {
 
 struct SkinFitOptions {
-  int max_influences = 4;               // M, 1..K
-  int training_poses = 48;              // poses of the fit (axis-angle, uniform in +-pose_scale rad)
-  uint64_t seed = 0x5157a11f17ull;      // training set; differs from the report's held-out seed
-  double pose_scale = 0.6;              // radians, as samplePoses
-  int threads = 2;                      // worker threads over vertices (result is thread-independent)
+  int max_influences = 4;           // M, 1..K
+  int training_poses = 48;          // poses of the fit (axis-angle, uniform in +-pose_scale rad)
+  uint64_t seed = 0x5157a11f17ull;  // training set; differs from the report's held-out seed
+  double pose_scale = 0.6;          // radians, as samplePoses
+  int threads = 2;                  // worker threads over vertices (result is thread-independent)
 };
 
 // Fitted N x M skin of the subject `body` (shapeBody of the exported betas).
 // Same layout as pruneWeights: joints sorted by descending fitted weight
 // (ties: lower joint index), unused slots joint 0 with weight 0, rows sum to 1.
-SparseSkin fitSkinWeights(const BodyModel& model, const ShapedBody& body, const SkinFitOptions& options);
+SparseSkin fitSkinWeights(const BodyModel& model, const ShapedBody& body,
+                          const SkinFitOptions& options);
 
 // The quadratic program of one vertex: minimise 1/2 u'Hu - c'u over
 // u >= 0, sum u = 1 (H symmetric positive definite, m x m), from the feasible
 // start `u0` (u0 >= 0, sum 1). Returns the minimiser (exact up to rounding).
-Eigen::VectorXd solveSimplexQp(const Eigen::MatrixXd& h, const Eigen::VectorXd& c, const Eigen::VectorXd& u0);
+Eigen::VectorXd solveSimplexQp(const Eigen::MatrixXd& h, const Eigen::VectorXd& c,
+                               const Eigen::VectorXd& u0);
 
 }  // namespace smpl

@@ -111,10 +111,12 @@ std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector
   std::atomic<size_t> next{0};
   auto work = [&] {
     libdeflate_compressor* compressor = libdeflate_alloc_compressor(kFbxZlibLevel);
-    for (size_t i; (i = next++) < pending.size();) done[i] = deflatePayload(compressor, pending[i]->payload);
+    for (size_t i; (i = next++) < pending.size();)
+      done[i] = deflatePayload(compressor, pending[i]->payload);
     if (compressor) libdeflate_free_compressor(compressor);
   };
-  const size_t threads = std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size());
+  const size_t threads =
+      std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size());
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
@@ -148,7 +150,9 @@ struct Encoder {
 
   void nullRecord() { out.append(headerSize() + 1, '\0'); }
 
-  const std::string& payloadOf(const FbxProperty& p) const { return p.deflate ? deflated->at(&p) : p.payload; }
+  const std::string& payloadOf(const FbxProperty& p) const {
+    return p.deflate ? deflated->at(&p) : p.payload;
+  }
 
   bool node(const FbxNode& n) {
     if (n.name.empty() || n.name.size() > 255) {

@@ -47,22 +47,22 @@ Result<DracoBlob> encodeDraco(const MeshStreams& m) {
     blob.attributes[semantic] = int(mesh.attribute(id)->unique_id());
   };
   using GA = draco::GeometryAttribute;
-  add("POSITION", addAttribute(mesh, GA::POSITION, 3, draco::DT_FLOAT32, 12, m.positions.data(),
-                               m.vertices));
-  add("NORMAL", addAttribute(mesh, GA::NORMAL, 3, draco::DT_FLOAT32, 12, m.normals.data(), m.vertices));
+  add("POSITION",
+      addAttribute(mesh, GA::POSITION, 3, draco::DT_FLOAT32, 12, m.positions.data(), m.vertices));
+  add("NORMAL",
+      addAttribute(mesh, GA::NORMAL, 3, draco::DT_FLOAT32, 12, m.normals.data(), m.vertices));
   if (!m.uvs.empty())
     add("TEXCOORD_0",
         addAttribute(mesh, GA::TEX_COORD, 2, draco::DT_FLOAT32, 8, m.uvs.data(), m.vertices));
   for (size_t s = 0; s < m.joints.size(); ++s) {
     std::vector<uint8_t> narrow(m.joints[s].begin(), m.joints[s].end());
-    const int id = m.wide_joints
-                       ? addAttribute(mesh, GA::GENERIC, 4, draco::DT_UINT16, 8,
-                                      m.joints[s].data(), m.vertices)
-                       : addAttribute(mesh, GA::GENERIC, 4, draco::DT_UINT8, 4, narrow.data(),
-                                      m.vertices);
+    const int id = m.wide_joints ? addAttribute(mesh, GA::GENERIC, 4, draco::DT_UINT16, 8,
+                                                m.joints[s].data(), m.vertices)
+                                 : addAttribute(mesh, GA::GENERIC, 4, draco::DT_UINT8, 4,
+                                                narrow.data(), m.vertices);
     add("JOINTS_" + std::to_string(s), id);
-    add("WEIGHTS_" + std::to_string(s), addAttribute(mesh, GA::GENERIC, 4, draco::DT_FLOAT32, 16,
-                                                     m.weights[s].data(), m.vertices));
+    add("WEIGHTS_" + std::to_string(s),
+        addAttribute(mesh, GA::GENERIC, 4, draco::DT_FLOAT32, 16, m.weights[s].data(), m.vertices));
   }
   draco::Encoder encoder;
   encoder.SetEncodingMethod(draco::MESH_SEQUENTIAL_ENCODING);
@@ -76,7 +76,8 @@ Result<DracoBlob> encodeDraco(const MeshStreams& m) {
   return blob;
 }
 
-Result<MeshStreams> decodeDraco(const std::string& bytes, const std::map<std::string, int>& attributes,
+Result<MeshStreams> decodeDraco(const std::string& bytes,
+                                const std::map<std::string, int>& attributes,
                                 size_t expected_vertices) {
   draco::DecoderBuffer buffer;
   buffer.Init(bytes.data(), bytes.size());

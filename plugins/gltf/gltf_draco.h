@@ -37,7 +37,8 @@ Result<DracoBlob> encodeDraco(const MeshStreams& mesh);
 
 // Decodes `bytes`; `attributes` as in the glTF extension. Fills positions,
 // normals, uvs (if listed) and indices; checks the point count.
-Result<MeshStreams> decodeDraco(const std::string& bytes, const std::map<std::string, int>& attributes,
+Result<MeshStreams> decodeDraco(const std::string& bytes,
+                                const std::map<std::string, int>& attributes,
                                 size_t expected_vertices);
 
 }  // namespace smpl

@@ -38,7 +38,8 @@ int addDense(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
     for (size_t v = 0; v < v_count; ++v)
       for (int c = 0; c < 3; ++c) q[4 * v + size_t(c)] = quantize(d(Eigen::Index(v), c), e.scale);
     const int view = addView(b, q.data(), q.size() * 2, TINYGLTF_TARGET_ARRAY_BUFFER, 8);
-    accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, v_count, true);
+    accessor =
+        addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, v_count, true);
     shortBounds(q, 4, false, &b.model.accessors[size_t(accessor)]);
   } else {
     std::vector<float> f(3 * v_count);
@@ -63,8 +64,8 @@ int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
   std::vector<uint32_t> kept;
   for (size_t v = 0; v < v_count; ++v) {
     const Eigen::Index r = Eigen::Index(v);
-    const double len2 = double(d(r, 0)) * d(r, 0) + double(d(r, 1)) * d(r, 1) +
-                        double(d(r, 2)) * d(r, 2);
+    const double len2 =
+        double(d(r, 0)) * d(r, 0) + double(d(r, 1)) * d(r, 1) + double(d(r, 2)) * d(r, 2);
     if (len2 > e.epsilon * e.epsilon) kept.push_back(uint32_t(v));
   }
   // Sparse only where it is smaller than dense; dense keeps every delta exactly.
@@ -78,13 +79,15 @@ int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
   const int accessor = addAccessor(b, -1, type, TINYGLTF_TYPE_VEC3, v_count, e.quantized);
   const int index_type =
       wide ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-  const int index_view = wide ? addSparseIndices<uint32_t>(b, kept) : addSparseIndices<uint16_t>(b, kept);
+  const int index_view =
+      wide ? addSparseIndices<uint32_t>(b, kept) : addSparseIndices<uint16_t>(b, kept);
   int value_view;
   tinygltf::Accessor bounds;
   if (e.quantized) {
     std::vector<int16_t> q(3 * kept.size());
     for (size_t i = 0; i < kept.size(); ++i)
-      for (int c = 0; c < 3; ++c) q[3 * i + size_t(c)] = quantize(d(Eigen::Index(kept[i]), c), e.scale);
+      for (int c = 0; c < 3; ++c)
+        q[3 * i + size_t(c)] = quantize(d(Eigen::Index(kept[i]), c), e.scale);
     value_view = addView(b, q.data(), q.size() * 2, 0);
     shortBounds(q, 3, kept.size() < v_count, &bounds);
   } else {

@@ -47,7 +47,8 @@ size_t estimatedBufferBytes(const Asset& a) {
              size_t(a.mesh.triangles.size()) * 4 + a.skeleton.names.size() * 64 + 64 +
              a.mesh.morph_targets.size() * (v * 16 + 8);
   for (const AnimationClip& c : a.animations)
-    n += c.times.size() * (4 + 16 * c.rotations.size() + 12 + 4 * size_t(c.morph_weights.cols()) + 16);
+    n += c.times.size() *
+         (4 + 16 * c.rotations.size() + 12 + 4 * size_t(c.morph_weights.cols()) + 16);
   return n;
 }
 
@@ -296,7 +297,8 @@ void addMorphTargets(GltfBuild& b, const SkinnedMesh& m, const WriterOptions& op
     e.quantized = t.quantized;
     if (e.quantized) requireExtension(b.model, "KHR_mesh_quantization");
     prim.targets.push_back({{"POSITION", addMorphTarget(b, t.deltas, e)}});
-    mesh.weights.push_back(double(t.rest_weight));  // non-zero only for the unit corrective encoding
+    mesh.weights.push_back(
+        double(t.rest_weight));  // non-zero only for the unit corrective encoding
     names.emplace_back(t.name);
   }
   // An empty targetNames would serialise as null (tinygltf), so omit it.
@@ -335,7 +337,8 @@ void addNodesAndSkin(GltfBuild& b, const Asset& asset) {
     node.translation = {s.rest_local(k, 0), s.rest_local(k, 1), s.rest_local(k, 2)};
     b.model.nodes.push_back(node);
   }
-  for (int k = 1; k < k_count; ++k) b.model.nodes[size_t(s.parents[size_t(k)])].children.push_back(k);
+  for (int k = 1; k < k_count; ++k)
+    b.model.nodes[size_t(s.parents[size_t(k)])].children.push_back(k);
 
   tinygltf::Node mesh_node;
   mesh_node.name = asset.name;
@@ -360,7 +363,8 @@ void addNodesAndSkin(GltfBuild& b, const Asset& asset) {
   scene.name = asset.name;
   scene.nodes = {0, k_count};
   // Blender's importer drops asset.extras but keeps scene extras (custom properties).
-  scene.extras = tinygltf::Value(tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholderText(kScenePlaceholder))}});
+  scene.extras = tinygltf::Value(
+      tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholderText(kScenePlaceholder))}});
   b.model.scenes.push_back(scene);
   b.model.defaultScene = 0;
 }
@@ -393,8 +397,7 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node) {
       xyzw.insert(xyzw.end(),
                   {float(q.x() / n), float(q.y() / n), float(q.z() / n), float(q.w() / n)});
     }
-    addChannel(anim, input, addFloats(b, xyzw, TINYGLTF_TYPE_VEC4, 0, false), int(k),
-               "rotation");
+    addChannel(anim, input, addFloats(b, xyzw, TINYGLTF_TYPE_VEC4, 0, false), int(k), "rotation");
   }
   if (!clip.root_translation.empty()) {
     std::vector<float> xyz;
@@ -517,8 +520,10 @@ std::string uriEscape(const std::string& name) {
   static const char hex[] = "0123456789ABCDEF";
   std::string out;
   for (unsigned char c : name) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') out += static_cast<char>(c);
-    else out += std::string("%") + hex[c >> 4] + hex[c & 15];
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~')
+      out += static_cast<char>(c);
+    else
+      out += std::string("%") + hex[c >> 4] + hex[c & 15];
   }
   return out;
 }
@@ -535,7 +540,8 @@ Status pointBufferAt(std::string& json, const std::string& uri, size_t size) {
     return makeError("glTF writer: the buffer entry was not found in the serialised JSON");
   json.replace(data, data_uri.size(), "\"uri\": \"" + uriEscape(uri) + "\"");
   json.replace(name, std::strlen(kBufferPlaceholder), "\"" + uriEscape(uri) + "\"");
-  json.replace(length, std::strlen("\"byteLength\": 0,"), "\"byteLength\": " + std::to_string(size) + ",");
+  json.replace(length, std::strlen("\"byteLength\": 0,"),
+               "\"byteLength\": " + std::to_string(size) + ",");
   return Status();
 }
 
@@ -557,7 +563,8 @@ class GltfWriter : public Writer {
     if (!st) return st.error();
     const std::string byte_length = "\"byteLength\":" + std::to_string(b.bin.size());
     const bool external = !options.binary && !options.buffer_uri.empty();
-    if (!options.binary && !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
+    if (!options.binary &&
+        !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
       b.model.buffers[0].name.clear();
       b.model.buffers[0].data.assign(b.bin.begin(), b.bin.end());
       std::string().swap(b.bin);
@@ -566,7 +573,8 @@ class GltfWriter : public Writer {
     if (!json) return json.error();
     st = spliceMetadata(*json, metadataJson(asset));
     if (st && options.binary)
-      st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder), byte_length);
+      st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder),
+                  byte_length);
     if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, b.bin.size());
     if (!st) return st.error();
     if (options.binary) return Files{assembleGlb(std::move(*json), b.bin), std::string()};

@@ -22,7 +22,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
-  const std::string path = "/tmp/smpl_motion_fuzz_" + std::to_string(::getpid()) + ((data[0] & 1) ? ".json" : ".npz");
+  const std::string path =
+      "/tmp/smpl_motion_fuzz_" + std::to_string(::getpid()) + ((data[0] & 1) ? ".json" : ".npz");
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) return 0;
   std::fwrite(data + 1, 1, size - 1, f);

@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (uv.ok()) {
     // Every index must be in range: read through them.
     float sum = 0;
-    for (Eigen::Index i = 0; i < uv->triangles.size(); ++i) sum += uv->uvs(uv->triangles.data()[i], 0);
+    for (Eigen::Index i = 0; i < uv->triangles.size(); ++i)
+      sum += uv->uvs(uv->triangles.data()[i], 0);
     for (int v : uv->source_vertex) sum += static_cast<float>(model.v_template(v, 0));
     volatile float sink = sum;
     (void)sink;

@@ -36,7 +36,7 @@ TEST(Animation, SmplhMotionOnSmplDropsFingers) {
   Loaded l = load("smpl_small.npz", "amass_smplh.npz");
   Result<MotionMapping> map = mapMotion(l.model, l.motion, "walk.npz");
   ASSERT_TRUE(map.ok()) << map.message();
-  EXPECT_EQ(map->dropped.size(), 30u);                       // 2 x 15 finger joints
+  EXPECT_EQ(map->dropped.size(), 30u);  // 2 x 15 finger joints
   EXPECT_EQ(map->missing, (std::vector<std::string>{"left_hand", "right_hand"}));
   EXPECT_EQ(map->source_of_joint[21], 21);
 }
@@ -60,7 +60,9 @@ TEST(Animation, ManoMotionCannotDriveSmpl) {
   Loaded l = load("mano_small.npz", "amass_smplh.npz");
   Result<MotionMapping> map = mapMotion(l.model, l.motion, "walk.npz");
   ASSERT_FALSE(map.ok());
-  EXPECT_NE(map.message().find("walk.npz: a smplh motion cannot drive a mano model"), std::string::npos) << map.message();
+  EXPECT_NE(map.message().find("walk.npz: a smplh motion cannot drive a mano model"),
+            std::string::npos)
+      << map.message();
 }
 
 TEST(Animation, ResampleZUpAndWeights) {
@@ -71,12 +73,14 @@ TEST(Animation, ResampleZUpAndWeights) {
   ASSERT_TRUE(clip.ok()) << clip.message();
   ASSERT_EQ(clip->times.size(), 60u);  // frames 0, 4, ..., 236
   EXPECT_DOUBLE_EQ(clip->times[1], 1.0 / 30);
-  const Eigen::Matrix3d up = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d up =
+      Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
   for (int i : {0, 17, 59}) {
     const Rotations& src = l.motion.frames[4 * i];
     EXPECT_LT((clip->rotations[5][i].toRotationMatrix() - src[5]).cwiseAbs().maxCoeff(), 1e-12);
-    EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - up * src[0]).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - up * src[0]).cwiseAbs().maxCoeff(),
+              1e-12);
     EXPECT_LT((clip->root_translation[i] - up * (j0 + l.motion.translation[4 * i])).norm(), 1e-12);
     Eigen::VectorXd f = poseFeatures(src);
     for (int n : {0, 100, 450}) EXPECT_NEAR(clip->morph_weights(i, n), f[n], 1e-6);
@@ -95,11 +99,14 @@ TEST(Animation, SlerpBetweenFramesAndFrameRange) {
   Eigen::Quaterniond a(l.motion.frames[12][3]), b(l.motion.frames[13][3]);
   EXPECT_LT(clip->rotations[3][5].angularDistance(a.slerp(0.5, b)), 1e-12);
   EXPECT_FALSE(l.motion.amass);
-  EXPECT_LT((clip->rotations[0][0].toRotationMatrix() - l.motion.frames[10][0]).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT(
+      (clip->rotations[0][0].toRotationMatrix() - l.motion.frames[10][0]).cwiseAbs().maxCoeff(),
+      1e-12);
   o.end_frame = 99;
   Result<AnimationClip> bad = bakeAnimation(l.model, l.asset, l.motion, o, "m.npz");
   ASSERT_FALSE(bad.ok());
-  EXPECT_NE(bad.message().find("outside the motion's 60 frames"), std::string::npos) << bad.message();
+  EXPECT_NE(bad.message().find("outside the motion's 60 frames"), std::string::npos)
+      << bad.message();
 }
 
 TEST(Animation, InPlaceKeepsHeightOnly) {
@@ -111,7 +118,8 @@ TEST(Animation, InPlaceKeepsHeightOnly) {
   const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
   EXPECT_DOUBLE_EQ(clip->root_translation[200].x(), j0.x());
   EXPECT_DOUBLE_EQ(clip->root_translation[200].z(), j0.z());
-  const Eigen::Matrix3d up = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d up =
+      Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   EXPECT_NEAR(clip->root_translation[200].y(), (up * (j0 + l.motion.translation[200])).y(), 1e-12);
 }
 

@@ -10,7 +10,6 @@
 #include "cli/settings.h"
 #include "core/io/npz.h"
 #include "core/load/motion.h"
-
 #include "tests/unit/test_util.h"
 
 namespace smpl {

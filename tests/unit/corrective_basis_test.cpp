@@ -9,8 +9,8 @@
 #include <Eigen/SVD>
 #include <nlohmann/json.hpp>
 
-#include "core/math/forward.h"
 #include "core/load/model_loader.h"
+#include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
@@ -73,7 +73,8 @@ TEST(CorrectiveBasis, RejectsBadK) {
   EXPECT_FALSE(fitCorrectiveBasis(model.posedirs, 0).ok());
   Result<CorrectiveBasisFit> big = fitCorrectiveBasis(model.posedirs, 208);
   ASSERT_FALSE(big.ok());
-  EXPECT_NE(big.message().find("--corrective-basis 208: expected 1..207"), std::string::npos) << big.message();
+  EXPECT_NE(big.message().find("--corrective-basis 208: expected 1..207"), std::string::npos)
+      << big.message();
   ExportOptions o;
   o.corrective_basis = 4;
   o.correctives = false;
@@ -123,7 +124,8 @@ Eigen::MatrixXd morphedMesh(const Asset& asset, const Eigen::VectorXd& weights) 
   return v;
 }
 
-Eigen::MatrixXd posedMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const Eigen::VectorXd& f) {
+Eigen::MatrixXd posedMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped,
+                          const Eigen::VectorXd& f) {
   Eigen::VectorXd d = model.posedirs * f;
   return v_shaped + Eigen::Map<Eigen::MatrixXd>(d.data(), 3, model.numVertices()).transpose();
 }
@@ -154,7 +156,9 @@ TEST(CorrectiveBasis, AssetReproducesPosedirsAtFullK) {
         EXPECT_GE(w(k), lo - 1e-12);
         EXPECT_LE(w(k), 1.0 + 1e-12);
       }
-      EXPECT_LT((morphedMesh(*asset, w) - posedMesh(model, body->v_shaped, f)).cwiseAbs().maxCoeff(), 1e-5);
+      EXPECT_LT(
+          (morphedMesh(*asset, w) - posedMesh(model, body->v_shaped, f)).cwiseAbs().maxCoeff(),
+          1e-5);
     }
   }
 }
@@ -193,7 +197,8 @@ TEST(CorrectiveBasis, MetadataCarriesMatrix) {
   const nlohmann::json j = nlohmann::json::parse(metadataJson(*asset));
   ASSERT_TRUE(j.contains("corrective_basis"));
   const nlohmann::json& b = j["corrective_basis"];
-  EXPECT_EQ(b["targets"], (std::vector<std::string>{"pose_basis_0", "pose_basis_1", "pose_basis_2"}));
+  EXPECT_EQ(b["targets"],
+            (std::vector<std::string>{"pose_basis_0", "pose_basis_1", "pose_basis_2"}));
   EXPECT_EQ(b["features"], 207);
   ASSERT_EQ(b["matrix"].size(), 3u * 207u);
   const Eigen::MatrixXd& c = asset->metadata.corrective_basis.projection;
@@ -221,7 +226,8 @@ TEST(CorrectiveBasis, ErrorReportShrinksToZero) {
   for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), 8, 11)) {
     const Eigen::VectorXd d = model.posedirs * poseFeatures(rotationsFromAxisAngle(pose));
     const Eigen::VectorXd r = d - u * (u.transpose() * d);
-    for (int i = 0; i < model.numVertices(); ++i) max_err = std::max(max_err, r.segment<3>(3 * i).norm());
+    for (int i = 0; i < model.numVertices(); ++i)
+      max_err = std::max(max_err, r.segment<3>(3 * i).norm());
   }
   EXPECT_NEAR(rows[0].max_error, max_err, 1e-9);
 }

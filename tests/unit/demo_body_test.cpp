@@ -12,16 +12,17 @@
 #include <utility>
 
 #include "core/demo/demo_body_internal.h"
-#include "core/math/forward.h"
 #include "core/joint_names.h"
 #include "core/load/model_loader.h"
+#include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 
 namespace smpl {
 namespace {
 
 // SMPL's tree, typed here independently of the generator.
-const int kSmplParents[24] = {-1, 0, 0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 9, 9, 12, 13, 14, 16, 17, 18, 19, 20, 21};
+const int kSmplParents[24] = {-1, 0, 0, 0,  1,  2,  3,  4,  5,  6,  7,  8,
+                              9,  9, 9, 12, 13, 14, 16, 17, 18, 19, 20, 21};
 
 double signedVolume(const Eigen::MatrixXd& v, const Eigen::MatrixXi& f) {
   double vol = 0;
@@ -65,7 +66,8 @@ TEST(DemoBody, MeshIsOneClosedOrientedSphere) {
       ++directed[{f(t, q), f(t, (q + 1) % 3)}];
     }
   int bad = 0;
-  for (const auto& [e, count] : directed) bad += count != 1 || directed.count({e.second, e.first}) != 1;
+  for (const auto& [e, count] : directed)
+    bad += count != 1 || directed.count({e.second, e.first}) != 1;
   EXPECT_EQ(bad, 0);
   const long edges = static_cast<long>(directed.size()) / 2;
   EXPECT_EQ(m.numVertices() - edges + f.rows(), 2) << "Euler characteristic";
@@ -88,7 +90,8 @@ TEST(DemoBody, MeshIsOneClosedOrientedSphere) {
   EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
   // Counter-clockwise seen from outside: positive volume, about an adult's.
   const double vol = signedVolume(m.v_template, f);
-  std::printf("[demo] %d vertices, %d faces, volume %.4f m^3\n", m.numVertices(), static_cast<int>(f.rows()), vol);
+  std::printf("[demo] %d vertices, %d faces, volume %.4f m^3\n", m.numVertices(),
+              static_cast<int>(f.rows()), vol);
   EXPECT_GT(vol, 0.04);
   EXPECT_LT(vol, 0.12);
 }
@@ -119,7 +122,8 @@ TEST(DemoBody, JointRegressorRowsAreLocalAverages) {
     double sum = 0;
     int count = 0;
     double far = 0;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(m.j_regressor, k); it; ++it) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(m.j_regressor, k); it;
+         ++it) {
       EXPECT_GE(it.value(), 0.0);
       sum += it.value();
       ++count;
@@ -162,14 +166,18 @@ TEST(DemoBody, SkinWeightsAreSmoothAndFollowTheNearestBone) {
     ++limb;
     nearest_ok += arg == best || (best >= 0 && arg == child[best]) || arg == 22 || arg == 23;
   }
-  std::printf("[demo] %d vertices with >4 influences; arm vertices on the nearest bone: %d of %d\n", many, nearest_ok, limb);
+  std::printf("[demo] %d vertices with >4 influences; arm vertices on the nearest bone: %d of %d\n",
+              many, nearest_ok, limb);
   EXPECT_GT(many, 20);
   EXPECT_GT(nearest_ok, 0.9 * limb);
   // Smooth: two vertices sharing an edge differ little in weight.
   double worst = 0;
   for (int t = 0; t < m.faces.rows(); ++t)
     for (int q = 0; q < 3; ++q)
-      worst = std::max(worst, (m.weights.row(m.faces(t, q)) - m.weights.row(m.faces(t, (q + 1) % 3))).cwiseAbs().maxCoeff());
+      worst =
+          std::max(worst, (m.weights.row(m.faces(t, q)) - m.weights.row(m.faces(t, (q + 1) % 3)))
+                              .cwiseAbs()
+                              .maxCoeff());
   EXPECT_LT(worst, 0.6);
 }
 
@@ -225,7 +233,8 @@ TEST(DemoBody, DualQuaternionTargetIsRigidForSingleBoneVertices) {
     EXPECT_LT((target.row(i) - lbs->vertices.row(i)).norm(), 1e-9) << "vertex " << i;
   }
   EXPECT_GT(rigid, 100);
-  const Eigen::MatrixXd rest = demo::dualQuaternionSkin(m, Rotations(24, Eigen::Matrix3d::Identity()));
+  const Eigen::MatrixXd rest =
+      demo::dualQuaternionSkin(m, Rotations(24, Eigen::Matrix3d::Identity()));
   EXPECT_LT((rest - m.v_template).cwiseAbs().maxCoeff(), 1e-12);
 }
 
@@ -243,14 +252,17 @@ TEST(DemoBody, CorrectivesBringLbsCloserToTheTargetOnHeldOutPoses) {
     const Eigen::MatrixXd lbs = forward(m, in)->vertices;
     in.pose_correctives = true;
     const Eigen::MatrixXd corrected = forward(m, in)->vertices;
-    const Eigen::VectorXd e0 = (lbs - target).rowwise().norm(), e1 = (corrected - target).rowwise().norm();
+    const Eigen::VectorXd e0 = (lbs - target).rowwise().norm(),
+                          e1 = (corrected - target).rowwise().norm();
     before += e0.mean() / poses.size();
     after += e1.mean() / poses.size();
     worst_before = std::max(worst_before, e0.maxCoeff());
     worst_after = std::max(worst_after, e1.maxCoeff());
   }
-  std::printf("[demo] held-out mean vertex error vs DQS: LBS %.3f mm, LBS+correctives %.3f mm (%.1fx); worst %.1f -> %.1f mm\n",
-              1e3 * before, 1e3 * after, before / after, 1e3 * worst_before, 1e3 * worst_after);
+  std::printf(
+      "[demo] held-out mean vertex error vs DQS: LBS %.3f mm, LBS+correctives %.3f mm (%.1fx); "
+      "worst %.1f -> %.1f mm\n",
+      1e3 * before, 1e3 * after, before / after, 1e3 * worst_before, 1e3 * worst_after);
   EXPECT_GT(before, 2e-4) << "the poses bend the body enough to matter";
   EXPECT_LT(after, before / 4);
   EXPECT_LT(worst_after, worst_before);
@@ -259,7 +271,8 @@ TEST(DemoBody, CorrectivesBringLbsCloserToTheTargetOnHeldOutPoses) {
 TEST(DemoBody, BuildIsDeterministicAndFast) {
   const auto start = std::chrono::steady_clock::now();
   const BodyModel fresh = demo::buildDemoBody();
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::printf("[demo] build time %.0f ms (this build type)\n", ms);
   const BodyModel& cached = demoBody();
   EXPECT_EQ(&cached, &demoBody()) << "memoised";

@@ -5,17 +5,17 @@
 // forward pass on a model whose template is displaced, and the engine's LBS
 // from the asset (base mesh + weighted morph targets, animated node transforms,
 // inverse bind matrices translation(-J_k)).
-#include "exporter/dmpl_targets.h"
+#include "core/load/dmpl.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <filesystem>
 
-#include "core/load/dmpl.h"
 #include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "exporter/animation.h"
+#include "exporter/dmpl_targets.h"
 #include "exporter/pipeline.h"
 #include "plugins/writer.h"
 
@@ -40,7 +40,8 @@ TEST(DmplBasis, LoadsEigvecAndKeepsCount) {
 TEST(DmplBasis, WrongVertexCountNamesFileAndShape) {
   Result<DmplBasis> b = loadDmplBasis(kDmpl + "/bad_vertices.npz", 624);
   ASSERT_FALSE(b.ok());
-  EXPECT_NE(b.message().find("bad_vertices.npz: 'eigvec' has shape (618,3,8); expected (N,3,D) with N=624"),
+  EXPECT_NE(b.message().find(
+                "bad_vertices.npz: 'eigvec' has shape (618,3,8); expected (N,3,D) with N=624"),
             std::string::npos)
       << b.message();
 }
@@ -53,7 +54,8 @@ TEST(DmplBasis, FindsAmassLayoutByGender) {
   EXPECT_TRUE(note.empty());
   Result<std::string> male = findDmplBasis(kDmpl + "/amass", "m", &note);  // no male, no neutral
   ASSERT_FALSE(male.ok());
-  EXPECT_NE(male.message().find("no DMPL basis for gender 'male'"), std::string::npos) << male.message();
+  EXPECT_NE(male.message().find("no DMPL basis for gender 'male'"), std::string::npos)
+      << male.message();
 }
 
 TEST(DmplCoefficients, ReadFromMotionAndCheckedOnlyWhenUsed) {
@@ -66,12 +68,14 @@ TEST(DmplCoefficients, ReadFromMotionAndCheckedOnlyWhenUsed) {
   ASSERT_TRUE(nan.ok()) << nan.message();
   Status st = checkDmplCoefficients(*nan, kDmpl + "/bad_nan.npz", 8, "basis.npz");
   ASSERT_FALSE(st.ok());
-  EXPECT_NE(st.message().find("bad_nan.npz: 'dmpls' contains NaN"), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find("bad_nan.npz: 'dmpls' contains NaN"), std::string::npos)
+      << st.message();
   Result<Motion> width = loadMotion(kDmpl + "/bad_width.npz");
   ASSERT_TRUE(width.ok()) << width.message();
   st = checkDmplCoefficients(*width, "w.npz", 8, "basis.npz");
   ASSERT_FALSE(st.ok());
-  EXPECT_EQ(st.message(), "w.npz: 'dmpls' has 6 columns; the DMPL basis basis.npz has 8 directions");
+  EXPECT_EQ(st.message(),
+            "w.npz: 'dmpls' has 6 columns; the DMPL basis basis.npz has 8 directions");
 }
 
 TEST(DmplLayout, WeightsSpanZeroToOneAndStaticIsRest) {
@@ -96,9 +100,10 @@ Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip, int f)
   const size_t k = s.parents.size();
   std::vector<Eigen::Affine3d> world(k);
   for (size_t j = 0; j < k; ++j) {
-    Eigen::Vector3d t = j == 0 ? clip.root_translation[f]
-                               : (clip.joint_translations.empty() ? Eigen::Vector3d(s.rest_local.row(j).transpose())
-                                                                  : clip.joint_translations[j][f]);
+    Eigen::Vector3d t =
+        j == 0 ? clip.root_translation[f]
+               : (clip.joint_translations.empty() ? Eigen::Vector3d(s.rest_local.row(j).transpose())
+                                                  : clip.joint_translations[j][f]);
     Eigen::Affine3d local = Eigen::Translation3d(t) * clip.rotations[j][f];
     world[j] = s.parents[j] < 0 ? local : world[s.parents[j]] * local;
   }
@@ -111,7 +116,8 @@ Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip, int f)
     for (Eigen::Index m = 0; m < a.mesh.joints.cols(); ++m) {
       const int j = a.mesh.joints(i, m);
       p += double(a.mesh.weights(i, m)) *
-           (world[j] * (Eigen::Vector3d(v.row(i).transpose()) - Eigen::Vector3d(s.rest_world.row(j).transpose())));
+           (world[j] * (Eigen::Vector3d(v.row(i).transpose()) -
+                        Eigen::Vector3d(s.rest_world.row(j).transpose())));
     }
     out.row(i) = p.transpose();
   }
@@ -119,8 +125,8 @@ Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip, int f)
 }
 
 // The published math at source frame f (no resampling: same rate), Y-up.
-Eigen::MatrixXd published(const BodyModel& model, const Asset& a, const Motion& m, const DmplBasis& b, int f,
-                          const Eigen::MatrixXd& pruned) {
+Eigen::MatrixXd published(const BodyModel& model, const Asset& a, const Motion& m,
+                          const DmplBasis& b, int f, const Eigen::MatrixXd& pruned) {
   BodyModel displaced = model;
   const Eigen::VectorXd d = b.directions * m.dmpls.row(f).transpose();
   for (int i = 0; i < model.numVertices(); ++i)
@@ -132,7 +138,8 @@ Eigen::MatrixXd published(const BodyModel& model, const Asset& a, const Motion& 
   in.weights = &pruned;
   Result<ForwardResult> r = forward(displaced, in);
   EXPECT_TRUE(r.ok()) << r.message();
-  const Eigen::Matrix3d up = Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d up =
+      Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   return r->vertices * up.transpose();
 }
 
@@ -153,10 +160,12 @@ double bakeAndCompare(bool regressed, double* joint_error, Asset* baked = nullpt
   EXPECT_EQ(clip->joint_translations.empty(), !regressed);
   Eigen::MatrixXd pruned = Eigen::MatrixXd::Zero(model->numVertices(), model->numJoints());
   for (Eigen::Index i = 0; i < a->mesh.joints.rows(); ++i)
-    for (Eigen::Index k = 0; k < a->mesh.joints.cols(); ++k) pruned(i, a->mesh.joints(i, k)) += a->mesh.weights(i, k);
+    for (Eigen::Index k = 0; k < a->mesh.joints.cols(); ++k)
+      pruned(i, a->mesh.joints(i, k)) += a->mesh.weights(i, k);
   double worst = 0;
   for (int f = 0; f < 90; f += 7) {
-    const Eigen::MatrixXd e = enginePlayback(*a, *clip, f) - published(*model, *a, *m, *b, f, pruned);
+    const Eigen::MatrixXd e =
+        enginePlayback(*a, *clip, f) - published(*model, *a, *m, *b, f, pruned);
     worst = std::max(worst, e.rowwise().norm().maxCoeff());
   }
   *joint_error = clip->dmpl_joint_error;
@@ -170,7 +179,7 @@ double bakeAndCompare(bool regressed, double* joint_error, Asset* baked = nullpt
 TEST(DmplBake, RegressedJointsMatchPublishedMath) {
   double joint_error = 0;
   EXPECT_LT(bakeAndCompare(true, &joint_error), 2e-5);  // float32 deltas and weights
-  EXPECT_GT(joint_error, 1e-3);                          // what fixed joints would cost
+  EXPECT_GT(joint_error, 1e-3);                         // what fixed joints would cost
 }
 
 TEST(DmplBake, FixedJointsCostIsMeasured) {

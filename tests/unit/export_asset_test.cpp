@@ -40,7 +40,9 @@ TEST(ExportAsset, BakesEachMotionAndResolvesTheEncoding) {
   ASSERT_TRUE(still.ok()) << still.message();
   EXPECT_TRUE(still->animations.empty());
   EXPECT_EQ(still->mesh.morph_targets[0].rest_weight, 0.f);  // Auto without motions: signed
-  Result<Asset> moving = exportAsset(in.model, ExportOptions(), {{&in.motion, "walk.npz", {}, nullptr}, {&in.motion, "again.npz", {}, nullptr}});
+  Result<Asset> moving =
+      exportAsset(in.model, ExportOptions(),
+                  {{&in.motion, "walk.npz", {}, nullptr}, {&in.motion, "again.npz", {}, nullptr}});
   ASSERT_TRUE(moving.ok()) << moving.message();
   ASSERT_EQ(moving->animations.size(), 2u);
   EXPECT_EQ(moving->animations[0].times.size(), in.motion.frames.size());
@@ -71,7 +73,8 @@ TEST(ExportAsset, QuantizeFoldsTheScalesIntoTheAsset) {
     marked += t.quantized;
     if (!t.quantized) continue;
     EXPECT_EQ(t.deltas.cwiseAbs().maxCoeff(), 1.f) << t.name;
-    EXPECT_FLOAT_EQ(t.rest_weight, float(plain->mesh.morph_targets[n].rest_weight * s[n])) << t.name;
+    EXPECT_FLOAT_EQ(t.rest_weight, float(plain->mesh.morph_targets[n].rest_weight * s[n]))
+        << t.name;
     EXPECT_FLOAT_EQ(q->animations[0].morph_weights(5, Eigen::Index(n)),
                     float(plain->animations[0].morph_weights(5, Eigen::Index(n)) * s[n]));
   }
@@ -79,7 +82,8 @@ TEST(ExportAsset, QuantizeFoldsTheScalesIntoTheAsset) {
   EXPECT_DOUBLE_EQ(q->metadata.correctives[0].scale, plain->metadata.correctives[0].scale * s[0]);
   Result<std::string> bytes = gltfWriter().serialize(*q, WriterOptions());
   ASSERT_TRUE(bytes.ok()) << bytes.message();
-  EXPECT_NE(bytes->find(metadataJson(*q)), std::string::npos) << "file metadata != sidecar metadata";
+  EXPECT_NE(bytes->find(metadataJson(*q)), std::string::npos)
+      << "file metadata != sidecar metadata";
   Result<DecodedMorphs> d = decodeMorphs(*bytes);
   ASSERT_TRUE(d.ok()) << d.message();
   const Eigen::MatrixXf& exact = plain->mesh.morph_targets[0].deltas;
@@ -91,7 +95,8 @@ TEST(ExportAsset, ErrorsNameTheMotionAndLeaveNoAsset) {
   const Inputs in = load();
   AnimationOptions frames;
   frames.first_frame = 100000;
-  Result<Asset> a = exportAsset(in.model, ExportOptions(), {{&in.motion, "walk.npz", frames, nullptr}});
+  Result<Asset> a =
+      exportAsset(in.model, ExportOptions(), {{&in.motion, "walk.npz", frames, nullptr}});
   ASSERT_FALSE(a.ok());
   EXPECT_NE(a.message().find("walk.npz"), std::string::npos) << a.message();
   Result<Asset> none = exportAsset(in.model, ExportOptions(), {{nullptr, "gone.npz", {}, nullptr}});

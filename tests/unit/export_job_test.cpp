@@ -33,7 +33,8 @@ class ExportJobTest : public ::testing::Test {
     ::rmdir(dir_.c_str());
   }
   Settings settings(std::vector<const char*> extra) const {
-    std::vector<const char*> argv = {"smpl-export", "--model", "builtin", "--out", out_.c_str(), "-q"};
+    std::vector<const char*> argv = {"smpl-export", "--model",    "builtin",
+                                     "--out",       out_.c_str(), "-q"};
     argv.insert(argv.end(), extra.begin(), extra.end());
     Result<Settings> s = parseSettings(static_cast<int>(argv.size()), argv.data());
     EXPECT_TRUE(s.ok()) << s.message();
@@ -70,10 +71,10 @@ TEST_F(ExportJobTest, SidecarRecordsWhatProducedTheOutput) {
   };
   const std::string plain = hashWith({});
   EXPECT_EQ(plain.size(), 16u);
-  EXPECT_EQ(hashWith({}), plain);                                  // deterministic
-  EXPECT_NE(hashWith({"--max-influences", "2"}), plain);           // changes the bytes
+  EXPECT_EQ(hashWith({}), plain);                         // deterministic
+  EXPECT_NE(hashWith({"--max-influences", "2"}), plain);  // changes the bytes
   EXPECT_NE(hashWith({"--betas", "0.5"}), plain);
-  EXPECT_EQ(hashWith({"--memory-limit", "1G"}), plain);            // does not
+  EXPECT_EQ(hashWith({"--memory-limit", "1G"}), plain);  // does not
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ struct Lcg {
 inline Skeleton testSkeleton() {
   Eigen::MatrixXd rest_world(5, 3);
   rest_world << 0, 0.9, 0, 0, 1.2, 0.02, 0, 1.5, 0, 0.1, 0.5, 0, -0.1, 0.5, 0;
-  return test::skeletonFromWorld({"pelvis", "spine", "head", "left_leg", "right_leg"}, {-1, 0, 1, 0, 0},
-                                 rest_world);
+  return test::skeletonFromWorld({"pelvis", "spine", "head", "left_leg", "right_leg"},
+                                 {-1, 0, 1, 0, 0}, rest_world);
 }
 
 // Cylinder: kRings rings of kSegments vertices from y=0 to y=1.7, plus a

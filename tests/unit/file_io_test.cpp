@@ -8,9 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -138,7 +138,9 @@ TEST_F(FileIo, FailedSidecarKeepsTheOldOutput) {
   Status st = writeFilesTogether({{out, a.data(), a.size()}, {side, b.data(), b.size()}});
   std::remove((side + "/keep").c_str());
   ASSERT_FALSE(st.ok());
-  EXPECT_NE(st.message().find(side + ": cannot rename temporary file into place"), std::string::npos) << st.message();
+  EXPECT_NE(st.message().find(side + ": cannot rename temporary file into place"),
+            std::string::npos)
+      << st.message();
   EXPECT_EQ(readText(out), "old output");
   std::vector<std::string> names = list();
   std::sort(names.begin(), names.end());
@@ -179,20 +181,23 @@ TEST_F(FileIo, RemovesOnlyStaleTemporariesOfItsOutputs) {
   ASSERT_GT(child, 0);
   int status = 0;
   ::waitpid(child, &status, 0);  // now a pid that is not alive
-  pid_t sleeper = ::fork();  // another live process
+  pid_t sleeper = ::fork();      // another live process
   if (sleeper == 0) {
     ::pause();
     ::_exit(0);
   }
   ASSERT_GT(sleeper, 0);
   const std::string dead = std::to_string(child), live = std::to_string(sleeper);
-  const std::vector<std::string> files = {
-      ".out.glb.smpl.tmp-" + dead,           ".out.glb.smpl.json.smpl.tmp-" + dead,
-      ".out.glb.smpl.tmp-" + dead + "-old",  ".out.glb.smpl.tmp-" + live,
-      ".other.glb.smpl.tmp-" + dead,         "out.glb.smpl.tmp-" + dead,
-      ".out.glb.tmp-" + dead};
+  const std::vector<std::string> files = {".out.glb.smpl.tmp-" + dead,
+                                          ".out.glb.smpl.json.smpl.tmp-" + dead,
+                                          ".out.glb.smpl.tmp-" + dead + "-old",
+                                          ".out.glb.smpl.tmp-" + live,
+                                          ".other.glb.smpl.tmp-" + dead,
+                                          "out.glb.smpl.tmp-" + dead,
+                                          ".out.glb.tmp-" + dead};
   for (const std::string& f : files) std::ofstream(dir_ + "/" + f) << "x";
-  std::ofstream(dir_ + "/.out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid())) << "x";  // this run's
+  std::ofstream(dir_ + "/.out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid()))
+      << "x";  // this run's
   const int removed = removeStaleTemps(dir_, {"out.glb", "out.glb.smpl.json"});
   ::kill(sleeper, SIGKILL);
   ::waitpid(sleeper, &status, 0);
@@ -200,7 +205,7 @@ TEST_F(FileIo, RemovesOnlyStaleTemporariesOfItsOutputs) {
   std::vector<std::string> left = list();
   std::sort(left.begin(), left.end());
   std::vector<std::string> want = {files[3], files[4], files[5], files[6],
-                                    ".out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid())};
+                                   ".out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid())};
   std::sort(want.begin(), want.end());
   EXPECT_EQ(left, want);
 }

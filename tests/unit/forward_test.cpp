@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/load/model_loader.h"
 #include "core/io/npz.h"
+#include "core/load/model_loader.h"
 
 namespace smpl {
 namespace {
@@ -14,7 +14,8 @@ const std::string kModels = std::string(SMPL_FIXTURE_DIR) + "/models/";
 
 Eigen::MatrixXd slice(const Array& a, int64_t index, int64_t rows, int64_t cols) {
   const double* p = a.data.data() + index * rows * cols;
-  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(p, rows, cols);
+  return Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      p, rows, cols);
 }
 
 struct Case {
@@ -43,24 +44,30 @@ TEST_P(ForwardReference, MatchesNumpyTo1e9) {
     in.translation = slice(r.at("trans"), i, 3, 1);
     Result<ForwardResult> out = forward(*model, in);
     ASSERT_TRUE(out.ok()) << out.message();
-    EXPECT_LT((out->v_shaped - slice(r.at("v_shaped"), i, n, 3)).cwiseAbs().maxCoeff(), 1e-9) << "pose " << i;
-    EXPECT_LT((out->joints - slice(r.at("joints"), i, k, 3)).cwiseAbs().maxCoeff(), 1e-9) << "pose " << i;
-    EXPECT_LT((out->pose_features - slice(r.at("features"), i, 9 * (k - 1), 1)).cwiseAbs().maxCoeff(), 1e-9);
-    EXPECT_LT((out->vertices - slice(r.at("vertices"), i, n, 3)).cwiseAbs().maxCoeff(), 1e-9) << "pose " << i;
+    EXPECT_LT((out->v_shaped - slice(r.at("v_shaped"), i, n, 3)).cwiseAbs().maxCoeff(), 1e-9)
+        << "pose " << i;
+    EXPECT_LT((out->joints - slice(r.at("joints"), i, k, 3)).cwiseAbs().maxCoeff(), 1e-9)
+        << "pose " << i;
+    EXPECT_LT(
+        (out->pose_features - slice(r.at("features"), i, 9 * (k - 1), 1)).cwiseAbs().maxCoeff(),
+        1e-9);
+    EXPECT_LT((out->vertices - slice(r.at("vertices"), i, n, 3)).cwiseAbs().maxCoeff(), 1e-9)
+        << "pose " << i;
   }
 }
 
 INSTANTIATE_TEST_SUITE_P(
     AllContainers, ForwardReference,
-    ::testing::Values(Case{"smpl", "smpl_small.npz"}, Case{"smpl", "smpl_small_compressed.npz"},
-                      Case{"smpl", "smpl_small_p2.pkl"}, Case{"smpl", "smpl_small_p4.pkl"},
-                      Case{"smplh", "smplh_small.npz"}, Case{"smplh", "smplh_small_p2.pkl"},
-                      Case{"smplh", "smplh_small_p4.pkl"}, Case{"smplx", "smplx_small.npz"},
-                      Case{"smplx", "smplx_small_p2.pkl"}, Case{"smplx", "smplx_small_p4.pkl"},
-                      Case{"mano", "mano_small.npz"}, Case{"mano", "mano_small_p2.pkl"},
-                      Case{"mano", "mano_small_p4.pkl"},
-                      // the SMPL-X release layout: object arrays, UVs, landmarks (same model arrays)
-                      Case{"smplx", "../released/smplx_release.npz"}),
+    ::testing::Values(
+        Case{"smpl", "smpl_small.npz"}, Case{"smpl", "smpl_small_compressed.npz"},
+        Case{"smpl", "smpl_small_p2.pkl"}, Case{"smpl", "smpl_small_p4.pkl"},
+        Case{"smplh", "smplh_small.npz"}, Case{"smplh", "smplh_small_p2.pkl"},
+        Case{"smplh", "smplh_small_p4.pkl"}, Case{"smplx", "smplx_small.npz"},
+        Case{"smplx", "smplx_small_p2.pkl"}, Case{"smplx", "smplx_small_p4.pkl"},
+        Case{"mano", "mano_small.npz"}, Case{"mano", "mano_small_p2.pkl"},
+        Case{"mano", "mano_small_p4.pkl"},
+        // the SMPL-X release layout: object arrays, UVs, landmarks (same model arrays)
+        Case{"smplx", "../released/smplx_release.npz"}),
     [](const ::testing::TestParamInfo<Case>& info) {
       std::string name = info.param.file;
       for (char& ch : name)
@@ -93,7 +100,8 @@ TEST(Forward, RejectsTooManyBetasAndWrongJointCount) {
   in.betas = Eigen::VectorXd::Zero(11);
   Result<ForwardResult> out = forward(*model, in);
   ASSERT_FALSE(out.ok());
-  EXPECT_NE(out.message().find("betas: 11 values given; the model has 10"), std::string::npos) << out.message();
+  EXPECT_NE(out.message().find("betas: 11 values given; the model has 10"), std::string::npos)
+      << out.message();
   in.betas.resize(0);
   in.rotations.resize(23);
   EXPECT_FALSE(forward(*model, in).ok());

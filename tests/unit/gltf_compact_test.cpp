@@ -7,10 +7,10 @@
 
 #include <random>
 
-#include "plugins/gltf/gltf_writer.h"
-#include "tools/morph_error.h"
 #include "exporter/morph_scales.h"
+#include "plugins/gltf/gltf_writer.h"
 #include "tests/unit/test_asset.h"
+#include "tools/morph_error.h"
 
 namespace smpl {
 namespace {
@@ -78,7 +78,8 @@ TEST(GltfCompact, SparseKeepsExactlyTheDeltasAboveEpsilon) {
       kept += keep;
       const bool listed = keep || (t == 1 && i == 0);  // nothing kept: vertex 0 stands in
       for (int c = 0; c < 3; ++c)
-        EXPECT_EQ(d->deltas[t](i, c), listed ? exact(i, c) : 0.f) << "target " << t << " vertex " << i;
+        EXPECT_EQ(d->deltas[t](i, c), listed ? exact(i, c) : 0.f)
+            << "target " << t << " vertex " << i;
     }
     if (t == 1) {
       EXPECT_EQ(kept, 0);  // all tiny (see gltf_morphs.h)
@@ -132,18 +133,23 @@ TEST(GltfCompact, WriterQuantizesExactlyTheMarkedTargets) {
   tinygltf::TinyGLTF loader;
   std::string err, warn;
   const std::string bytes = write(a, WriterOptions());
-  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn,
+                                          reinterpret_cast<const unsigned char*>(bytes.data()),
                                           unsigned(bytes.size())))
       << err;
   const auto& targets = m.meshes[0].primitives[0].targets;
   ASSERT_EQ(targets.size(), 3u);
-  EXPECT_EQ(m.accessors[size_t(targets[0].at("POSITION"))].componentType, TINYGLTF_COMPONENT_TYPE_SHORT);
-  EXPECT_EQ(m.accessors[size_t(targets[1].at("POSITION"))].componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
-  EXPECT_EQ(m.accessors[size_t(targets[2].at("POSITION"))].componentType, TINYGLTF_COMPONENT_TYPE_FLOAT);
+  EXPECT_EQ(m.accessors[size_t(targets[0].at("POSITION"))].componentType,
+            TINYGLTF_COMPONENT_TYPE_SHORT);
+  EXPECT_EQ(m.accessors[size_t(targets[1].at("POSITION"))].componentType,
+            TINYGLTF_COMPONENT_TYPE_FLOAT);
+  EXPECT_EQ(m.accessors[size_t(targets[2].at("POSITION"))].componentType,
+            TINYGLTF_COMPONENT_TYPE_FLOAT);
   Result<DecodedMorphs> d = decodeMorphs(bytes);
   ASSERT_TRUE(d.ok()) << d.message();
   EXPECT_DOUBLE_EQ(d->correctives[0].scale, 1.0);  // the metadata as the asset has it
-  EXPECT_LE((d->deltas[0] - a.mesh.morph_targets[0].deltas).cwiseAbs().maxCoeff(), 0.5f / 32767 + 1e-7f);
+  EXPECT_LE((d->deltas[0] - a.mesh.morph_targets[0].deltas).cwiseAbs().maxCoeff(),
+            0.5f / 32767 + 1e-7f);
 }
 
 TEST(GltfCompact, FoldingTwiceIsTheIdentity) {

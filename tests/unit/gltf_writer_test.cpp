@@ -317,14 +317,16 @@ TEST(GltfWriter, GlbEightInfluencesWithoutUvs) {
   EXPECT_EQ(onlyPrimitive(m).attributes.count("JOINTS_1"), 1u);
 }
 
-TEST(GltfWriter, GlbAllTwentyFourInfluencesWritesSixSets) {  // --max-influences all on a 24-joint body
+TEST(GltfWriter,
+     GlbAllTwentyFourInfluencesWritesSixSets) {  // --max-influences all on a 24-joint body
   AssetSpec spec;
   spec.joints = 24;
   spec.influences = 24;
   const Asset a = makeAsset(spec);
   const Loaded m = writeAndLoad(a, true, "m24.glb");
   expectAsset(m, a);
-  for (int s = 0; s < 6; ++s) EXPECT_EQ(onlyPrimitive(m).attributes.count("WEIGHTS_" + std::to_string(s)), 1u) << s;
+  for (int s = 0; s < 6; ++s)
+    EXPECT_EQ(onlyPrimitive(m).attributes.count("WEIGHTS_" + std::to_string(s)), 1u) << s;
   EXPECT_EQ(onlyPrimitive(m).attributes.count("JOINTS_6"), 0u);
 }
 

@@ -2,9 +2,8 @@
 // are released with their owner, and every reader refuses before allocating.
 #include "core/memory_budget.h"
 
-#include <gtest/gtest.h>
-
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -39,7 +38,8 @@ TEST_F(MemoryBudgetTest, ChargesAddUpAndAreReleasedWithTheirOwner) {
     Status st = b.add(40 * kMiB, "b.npz", "'poses' as doubles");
     ASSERT_FALSE(st);  // 80 MiB > 64 MiB together, though each fits alone
     EXPECT_EQ(st.message(),
-              "b.npz: 'poses' as doubles would need 80.0 MiB in total; the limit is 64.0 MiB, set --memory-limit");
+              "b.npz: 'poses' as doubles would need 80.0 MiB in total; the limit is 64.0 MiB, set "
+              "--memory-limit");
     EXPECT_EQ(b.bytes(), 0u);
     a.release();
     EXPECT_TRUE(b.add(40 * kMiB, "b.npz", "second"));
@@ -79,14 +79,17 @@ TEST_F(MemoryBudgetTest, ThreadsShareOneLimit) {
 TEST_F(MemoryBudgetTest, NpyArrayIsRefusedBeforeWideningToDoubles) {
   // 16M one-byte elements: 16 MiB of payload, 128 MiB as doubles.
   const size_t n = 16 * kMiB;
-  std::string dict = "{'descr': '|u1', 'fortran_order': False, 'shape': (" + std::to_string(n) + ",), }";
+  std::string dict =
+      "{'descr': '|u1', 'fortran_order': False, 'shape': (" + std::to_string(n) + ",), }";
   while ((10 + dict.size() + 1) % 64 != 0) dict += ' ';
   dict += '\n';
   std::string bytes = std::string("\x93NUMPY\x01\x00", 8) + static_cast<char>(dict.size() & 0xff) +
                       static_cast<char>(dict.size() >> 8) + dict + std::string(n, '\0');
-  Result<Array> a = parseNpy(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "big.npy");
+  Result<Array> a =
+      parseNpy(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "big.npy");
   ASSERT_FALSE(a.ok());
-  EXPECT_NE(a.message().find("big.npy: the array (16777216,) as doubles would need 128.0 MiB"), std::string::npos)
+  EXPECT_NE(a.message().find("big.npy: the array (16777216,) as doubles would need 128.0 MiB"),
+            std::string::npos)
       << a.message();
   setMemoryLimit(256 * kMiB);
   a = parseNpy(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "big.npy");
@@ -97,7 +100,10 @@ TEST_F(MemoryBudgetTest, NpyArrayIsRefusedBeforeWideningToDoubles) {
 TEST_F(MemoryBudgetTest, PickleHeapUsesTheSameBudget) {
   // Protocol 4: {'a': b'<70 MiB>'} (BINBYTES8): the heap's copy alone exceeds the 64 MiB budget,
   // though PickleLimits (4 GiB) would allow it.
-  std::string p = "\x80\x04}\x8c\x01" "a" "\x8e";
+  std::string p =
+      "\x80\x04}\x8c\x01"
+      "a"
+      "\x8e";
   const uint64_t n = 70 * kMiB;
   for (int i = 0; i < 8; ++i) p += static_cast<char>((n >> (8 * i)) & 0xff);
   p += std::string(n, 'x') + "s.";
@@ -127,7 +133,8 @@ TEST_F(MemoryBudgetTest, DevicesAreRefusedAndEndlessPipesStopAtTheLimit) {
   writer.join();
   std::remove(fifo.c_str());
   ASSERT_FALSE(endless.ok());
-  EXPECT_NE(endless.message().find("reading the file would need 128.0 MiB; the limit is 64.0 MiB"), std::string::npos)
+  EXPECT_NE(endless.message().find("reading the file would need 128.0 MiB; the limit is 64.0 MiB"),
+            std::string::npos)
       << endless.message();
 }
 

@@ -30,11 +30,10 @@ TEST(MetadataJson, KeysInDocumentedOrder) {
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(metadataJson(metadataAsset()));
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  const std::vector<std::string> want = {"model_kind",  "model_name",     "exporter_version",
-                                         "joint_names", "parents",        "betas",
-                                         "expression",  "max_influences", "skin_weights",
-                                         "units",       "up_axis",        "corrective_encoding",
-                                         "correctives", "morph_targets"};
+  const std::vector<std::string> want = {
+      "model_kind", "model_name",          "exporter_version", "joint_names",  "parents",
+      "betas",      "expression",          "max_influences",   "skin_weights", "units",
+      "up_axis",    "corrective_encoding", "correctives",      "morph_targets"};
   EXPECT_EQ(keys, want);
   std::vector<std::string> entry_keys;
   for (auto it = j["correctives"][0].begin(); it != j["correctives"][0].end(); ++it)

@@ -7,8 +7,8 @@
 namespace smpl {
 namespace {
 
-std::string pick(const std::vector<std::string>& files, std::optional<ModelKind> kind, const std::string& gender,
-                 std::string* note = nullptr) {
+std::string pick(const std::vector<std::string>& files, std::optional<ModelKind> kind,
+                 const std::string& gender, std::string* note = nullptr) {
   Result<ModelFileChoice> c = chooseModelFile(files, kind, gender, "models");
   if (!c) return "error: " + c.message();
   if (note) *note = c->note;
@@ -16,7 +16,8 @@ std::string pick(const std::vector<std::string>& files, std::optional<ModelKind>
 }
 
 TEST(ModelFolder, SmplReleaseNamesByGender) {
-  const std::vector<std::string> files = {"SMPL_FEMALE.pkl", "SMPL_MALE.pkl", "SMPL_NEUTRAL.pkl", "readme.txt"};
+  const std::vector<std::string> files = {"SMPL_FEMALE.pkl", "SMPL_MALE.pkl", "SMPL_NEUTRAL.pkl",
+                                          "readme.txt"};
   EXPECT_EQ(pick(files, ModelKind::Smpl, "female"), "SMPL_FEMALE.pkl");
   EXPECT_EQ(pick(files, ModelKind::Smpl, "male"), "SMPL_MALE.pkl");
   EXPECT_EQ(pick(files, ModelKind::Smpl, "m"), "SMPL_MALE.pkl");
@@ -34,17 +35,19 @@ TEST(ModelFolder, BasicModelNamesOfTheSmpl10Release) {
 }
 
 TEST(ModelFolder, KindSubfoldersAndTheAuthorsExtension) {
-  // smplx.create(model_path, model_type): <dir>/<model_type>/<KIND>_<GENDER>.<ext>; smplx defaults to npz,
-  // smpl/smplh/mano to pkl.
-  const std::vector<std::string> files = {"smpl/SMPL_NEUTRAL.npz", "smpl/SMPL_NEUTRAL.pkl", "smplh/SMPLH_MALE.pkl",
-                                          "smplx/SMPLX_NEUTRAL.pkl", "smplx/SMPLX_NEUTRAL.npz",
-                                          "smplx/SMPLX_FEMALE.npz", "mano/MANO_LEFT.pkl", "mano/MANO_RIGHT.pkl"};
+  // smplx.create(model_path, model_type): <dir>/<model_type>/<KIND>_<GENDER>.<ext>; smplx defaults
+  // to npz, smpl/smplh/mano to pkl.
+  const std::vector<std::string> files = {"smpl/SMPL_NEUTRAL.npz",   "smpl/SMPL_NEUTRAL.pkl",
+                                          "smplh/SMPLH_MALE.pkl",    "smplx/SMPLX_NEUTRAL.pkl",
+                                          "smplx/SMPLX_NEUTRAL.npz", "smplx/SMPLX_FEMALE.npz",
+                                          "mano/MANO_LEFT.pkl",      "mano/MANO_RIGHT.pkl"};
   EXPECT_EQ(pick(files, ModelKind::Smpl, "neutral"), "smpl/SMPL_NEUTRAL.pkl");
   EXPECT_EQ(pick(files, ModelKind::SmplX, "neutral"), "smplx/SMPLX_NEUTRAL.npz");
   EXPECT_EQ(pick(files, ModelKind::SmplX, "female"), "smplx/SMPLX_FEMALE.npz");
   EXPECT_EQ(pick(files, ModelKind::SmplH, "male"), "smplh/SMPLH_MALE.pkl");
   EXPECT_EQ(pick(files, ModelKind::Mano, ""), "mano/MANO_RIGHT.pkl");
-  EXPECT_EQ(pick(files, std::nullopt, "female"), "smplx/SMPLX_FEMALE.npz");  // no motion kind: SMPL-X first
+  EXPECT_EQ(pick(files, std::nullopt, "female"),
+            "smplx/SMPLX_FEMALE.npz");  // no motion kind: SMPL-X first
 }
 
 TEST(ModelFolder, AmassBodyModelLayout) {
@@ -67,12 +70,15 @@ TEST(ModelFolder, MissingGenderFallsBackToNeutralWithANote) {
 }
 
 TEST(ModelFolder, ErrorsNameTheFolderAndWhatWasFound) {
-  EXPECT_EQ(pick({"SMPLH_FEMALE.pkl"}, ModelKind::SmplH, "male"),
-            "error: models: no male SMPL-H model (e.g. smplh/SMPLH_NEUTRAL.pkl); found SMPLH_FEMALE.pkl");
-  EXPECT_EQ(pick({"SMPLX_NEUTRAL.npz"}, ModelKind::Smpl, ""),
-            "error: models: no neutral SMPL model (e.g. smpl/SMPL_NEUTRAL.pkl); found SMPLX_NEUTRAL.npz");
+  EXPECT_EQ(
+      pick({"SMPLH_FEMALE.pkl"}, ModelKind::SmplH, "male"),
+      "error: models: no male SMPL-H model (e.g. smplh/SMPLH_NEUTRAL.pkl); found SMPLH_FEMALE.pkl");
+  EXPECT_EQ(
+      pick({"SMPLX_NEUTRAL.npz"}, ModelKind::Smpl, ""),
+      "error: models: no neutral SMPL model (e.g. smpl/SMPL_NEUTRAL.pkl); found SMPLX_NEUTRAL.npz");
   EXPECT_EQ(pick({"notes.txt"}, std::nullopt, ""),
-            "error: models: no model files with the released names (e.g. SMPLX_NEUTRAL.npz, SMPL_FEMALE.pkl)");
+            "error: models: no model files with the released names (e.g. SMPLX_NEUTRAL.npz, "
+            "SMPL_FEMALE.pkl)");
 }
 
 }  // namespace

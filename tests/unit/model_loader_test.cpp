@@ -7,7 +7,6 @@
 
 #include "core/io/npz.h"
 #include "core/joint_names.h"
-
 #include "tests/unit/test_util.h"
 
 namespace smpl {
@@ -29,7 +28,11 @@ std::string errorOf(const ArrayDict& arrays) {
 }
 
 TEST(ModelLoader, DetectsFamiliesAndSplitsSmplxShapedirs) {
-  struct Expect { const char* file; ModelKind kind; int joints, betas, expr; };
+  struct Expect {
+    const char* file;
+    ModelKind kind;
+    int joints, betas, expr;
+  };
   for (const Expect& e : {Expect{"smpl_small.npz", ModelKind::Smpl, 24, 10, 0},
                           Expect{"smplh_small.npz", ModelKind::SmplH, 52, 16, 0},
                           Expect{"smplx_small.npz", ModelKind::SmplX, 55, 300, 100},
@@ -68,8 +71,8 @@ TEST(ModelLoader, PosedirsShapeMismatchNamesFileKeyAndShapes) {
   const int64_t n = a["v_template"].shape[0];
   a["posedirs"].shape = {n, 3, 200};
   a["posedirs"].data.resize(n * 3 * 200);
-  EXPECT_EQ(errorOf(a), "model.npz: 'posedirs' has shape (" + std::to_string(n) + ",3,200); expected (" +
-                            std::to_string(n) + ",3,207)");
+  EXPECT_EQ(errorOf(a), "model.npz: 'posedirs' has shape (" + std::to_string(n) +
+                            ",3,200); expected (" + std::to_string(n) + ",3,207)");
 }
 
 TEST(ModelLoader, MissingKey) {
@@ -93,7 +96,8 @@ TEST(ModelLoader, UnsupportedJointCount) {
 TEST(ModelLoader, ParentAfterChildIsRejected) {
   ArrayDict a = loadArrays("smpl_small.npz");
   a["kintree_table"].data[5] = 9;  // joint 5's parent set to a later joint
-  EXPECT_NE(errorOf(a).find("'kintree_table' gives joint 5 the parent 9"), std::string::npos) << errorOf(a);
+  EXPECT_NE(errorOf(a).find("'kintree_table' gives joint 5 the parent 9"), std::string::npos)
+      << errorOf(a);
 }
 
 TEST(ModelLoader, FaceIndexOutOfRange) {

@@ -24,7 +24,9 @@ bool hasNote(const Motion& m, const std::string& text) {
   return false;
 }
 
-double rotationError(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return (a - b).cwiseAbs().maxCoeff(); }
+double rotationError(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+  return (a - b).cwiseAbs().maxCoeff();
+}
 
 // Axis-angle triple j of frame f of a (T,J,3) array.
 Eigen::Matrix3d stored(const Array& a, int64_t f, int64_t j) {
@@ -46,7 +48,8 @@ TEST(MotionFormats, SmplCodecWithRoot) {
   EXPECT_EQ(m->betas.size(), 10u);
   EXPECT_NEAR(m->translation[10].x(), 0.1, 1e-6);
   for (int64_t f : {0, 17, 39}) {
-    for (int64_t j : {0, 5, 21}) EXPECT_LT(rotationError(m->frames[f][j], stored(body, f, j)), 1e-12) << f << " " << j;
+    for (int64_t j : {0, 5, 21})
+      EXPECT_LT(rotationError(m->frames[f][j], stored(body, f, j)), 1e-12) << f << " " << j;
     for (int64_t j = 0; j < 3; ++j)  // headPose: jaw, left eye, right eye
       EXPECT_LT(rotationError(m->frames[f][22 + j], stored(raw->at("headPose"), f, j)), 1e-12);
     EXPECT_LT(rotationError(m->frames[f][25 + 4], stored(raw->at("leftHandPose"), f, 4)), 1e-12);
@@ -63,8 +66,10 @@ TEST(MotionFormats, SmplCodecWithoutRoot) {
   ASSERT_EQ(m->frames.size(), 40u);
   for (int64_t f : {0, 20, 39}) {
     EXPECT_LT(rotationError(m->frames[f][0], Eigen::Matrix3d::Identity()), 1e-15);
-    EXPECT_GT(rotationError(with->frames[f][0], Eigen::Matrix3d::Identity()), 1e-3);  // the fixture's root is posed
-    for (int j = 1; j < 55; ++j) EXPECT_LT(rotationError(m->frames[f][j], with->frames[f][j]), 1e-15) << j;
+    EXPECT_GT(rotationError(with->frames[f][0], Eigen::Matrix3d::Identity()),
+              1e-3);  // the fixture's root is posed
+    for (int j = 1; j < 55; ++j)
+      EXPECT_LT(rotationError(m->frames[f][j], with->frames[f][j]), 1e-15) << j;
   }
   EXPECT_TRUE(hasNote(*m, "root stays at rest"));
   EXPECT_TRUE(m->fps_assumed);  // no frameRate in this file
@@ -81,8 +86,9 @@ TEST(MotionFormats, ShapeOnlyFilesHaveNoPoseData) {
     ASSERT_FALSE(m.ok());
     EXPECT_NE(m.message().find("no pose data"), std::string::npos) << m.message();
   }
-  for (const std::string& path : {kFormats + "subject/walk_poses.npz", kFormats + "subject/run_stageii.npz",
-                                  kFormats + "broken_poses.npz", kFormats + "fit_pca.pkl", kFormats + "aist.pkl"}) {
+  for (const std::string& path :
+       {kFormats + "subject/walk_poses.npz", kFormats + "subject/run_stageii.npz",
+        kFormats + "broken_poses.npz", kFormats + "fit_pca.pkl", kFormats + "aist.pkl"}) {
     Result<bool> poses = hasPoseData(path);
     ASSERT_TRUE(poses.ok()) << poses.message();
     EXPECT_TRUE(*poses) << path;
@@ -95,7 +101,8 @@ TEST(MotionFormats, ShapeOnlyFilesHaveNoPoseData) {
 // Vertices of frame f of a fit through the C++ reference forward pass.
 Eigen::MatrixXd fitVertices(const BodyModel& model, const Motion& m, size_t f) {
   ForwardInput in;
-  in.betas = Eigen::Map<const Eigen::VectorXd>(m.betas.data(), static_cast<Eigen::Index>(m.betas.size()));
+  in.betas =
+      Eigen::Map<const Eigen::VectorXd>(m.betas.data(), static_cast<Eigen::Index>(m.betas.size()));
   in.rotations = m.frames[f];
   in.translation = m.translation[f];
   Result<ForwardResult> r = forward(model, in);
@@ -106,7 +113,8 @@ Eigen::MatrixXd fitVertices(const BodyModel& model, const Motion& m, size_t f) {
 double maxDifference(const Eigen::MatrixXd& v, const Array& reference, int64_t offset) {
   double worst = 0.0;
   for (Eigen::Index i = 0; i < v.rows(); ++i)
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(v(i, c) - reference.data[offset + 3 * i + c]));
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(v(i, c) - reference.data[offset + 3 * i + c]));
   return worst;
 }
 
@@ -121,7 +129,8 @@ TEST(MotionFormats, PcaHandFitMatchesNumpyAuthorsMath) {
     EXPECT_TRUE(m->hands.active());
     ASSERT_TRUE(resolveFitHands(*model, flat, "fit_pca.pkl", &*m).ok());
     EXPECT_FALSE(m->hands.active());
-    Result<ArrayDict> ref = readNpzFile(kFormats + (flat ? "fit_pca_flat_reference.npz" : "fit_pca_reference.npz"));
+    Result<ArrayDict> ref =
+        readNpzFile(kFormats + (flat ? "fit_pca_flat_reference.npz" : "fit_pca_reference.npz"));
     ASSERT_TRUE(ref.ok()) << ref.message();
     const double err = maxDifference(fitVertices(*model, *m, 0), ref->at("vertices"), 0);
     EXPECT_LT(err, 1e-9) << "flat_hand_mean " << flat;
@@ -140,7 +149,10 @@ TEST(MotionFormats, FullPoseFitWithMatricesMatchesNumpy) {
   ASSERT_TRUE(ref.ok()) << ref.message();
   const int64_t n = model->numVertices();
   for (size_t f = 0; f < 3; ++f)
-    EXPECT_LT(maxDifference(fitVertices(*model, *m, f), ref->at("vertices"), static_cast<int64_t>(f) * n * 3), 1e-9) << f;
+    EXPECT_LT(maxDifference(fitVertices(*model, *m, f), ref->at("vertices"),
+                            static_cast<int64_t>(f) * n * 3),
+              1e-9)
+        << f;
 }
 
 TEST(MotionFormats, FitHandsNeedTheModelsPcaAndMean) {
@@ -159,7 +171,8 @@ TEST(MotionFormats, FitHandsNeedTheModelsPcaAndMean) {
   s = resolveFitHands(no_mean, false, "fit_pca.pkl", &b);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("'hands_meanr'"), std::string::npos) << s.message();
-  EXPECT_TRUE(resolveFitHands(no_mean, true, "fit_pca.pkl", &c).ok());  // flat-hand relative: no mean needed
+  EXPECT_TRUE(resolveFitHands(no_mean, true, "fit_pca.pkl", &c)
+                  .ok());  // flat-hand relative: no mean needed
 }
 
 TEST(MotionFormats, AistTranslationIsDividedByTheScaling) {
@@ -171,7 +184,8 @@ TEST(MotionFormats, AistTranslationIsDividedByTheScaling) {
   EXPECT_EQ(m->layout, ModelKind::Smpl);
   ASSERT_EQ(m->frames.size(), 50u);
   for (int f : {0, 25, 49})
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(m->translation[f][c], trans.data[3 * f + c] / 2.5, 1e-12);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(m->translation[f][c], trans.data[3 * f + c] / 2.5, 1e-12);
   EXPECT_EQ(m->fps, 60.0);
   EXPECT_TRUE(m->fps_assumed);
   EXPECT_TRUE(hasNote(*m, "AIST++"));

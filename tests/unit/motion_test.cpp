@@ -37,7 +37,8 @@ TEST(Motion, MatricesEqualAxisAngle) {
   EXPECT_FALSE(aa->amass);
   ASSERT_EQ(aa->frames.size(), mats->frames.size());
   for (size_t f = 0; f < aa->frames.size(); f += 7)
-    for (int j = 0; j < 24; ++j) EXPECT_LT((aa->frames[f][j] - mats->frames[f][j]).cwiseAbs().maxCoeff(), 1e-12);
+    for (int j = 0; j < 24; ++j)
+      EXPECT_LT((aa->frames[f][j] - mats->frames[f][j]).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 TEST(Motion, Json) {
@@ -49,11 +50,14 @@ TEST(Motion, Json) {
 }
 
 TEST(Motion, BadInputsNameFileAndProblem) {
-  struct Bad { const char* file; const char* text; };
-  for (const Bad& b : {Bad{"bad_trans.npz", "'trans' has shape (10,3); expected (60,3)"},
-                       Bad{"bad_nan.npz", "'poses' contains NaN"},
-                       Bad{"bad_joints.npz", "'poses' has 21 joints"},
-                       Bad{"missing.npz", "missing.npz"}}) {
+  struct Bad {
+    const char* file;
+    const char* text;
+  };
+  for (const Bad& b :
+       {Bad{"bad_trans.npz", "'trans' has shape (10,3); expected (60,3)"},
+        Bad{"bad_nan.npz", "'poses' contains NaN"}, Bad{"bad_joints.npz", "'poses' has 21 joints"},
+        Bad{"missing.npz", "missing.npz"}}) {
     Result<Motion> m = loadMotion(kMotions + b.file);
     ASSERT_FALSE(m.ok()) << b.file;
     EXPECT_NE(m.message().find(b.text), std::string::npos) << m.message();

@@ -12,7 +12,8 @@ namespace {
 const std::string kReleased = std::string(SMPL_FIXTURE_DIR) + "/released/";
 
 TEST(NpzArrays, DecodesObjectDictsWhenAsked) {
-  Result<ArrayDict> d = readNpzArrays(kReleased + "smplx_release.npz", {"joint2num", "part2num", "vt", "absent"});
+  Result<ArrayDict> d =
+      readNpzArrays(kReleased + "smplx_release.npz", {"joint2num", "part2num", "vt", "absent"});
   ASSERT_TRUE(d.ok()) << d.message();
   EXPECT_EQ(d->count("absent"), 0u);
   const Array& j = d->at("joint2num");
@@ -25,7 +26,8 @@ TEST(NpzArrays, DecodesObjectDictsWhenAsked) {
 }
 
 TEST(NpzArrays, AmassStageIIMarkerDict) {
-  Result<ArrayDict> d = readNpzArrays(kReleased + "amass_stageii.npz", {"markers_latent_vids", "latent_labels"});
+  Result<ArrayDict> d =
+      readNpzArrays(kReleased + "amass_stageii.npz", {"markers_latent_vids", "latent_labels"});
   ASSERT_TRUE(d.ok()) << d.message();
   const Array& v = d->at("markers_latent_vids");
   EXPECT_EQ(v.keys, (std::vector<std::string>{"C7", "CLAV", "LFHD", "RFHD", "STRN"}));
@@ -54,10 +56,14 @@ TEST(NpzArrays, ObjectElementsAndErrors) {
   EXPECT_EQ(d->at("text").strings, std::vector<std::string>{"smplx"});
   Result<ArrayDict> nested = readNpzArrays(path, {"nested"});
   ASSERT_FALSE(nested.ok());
-  EXPECT_EQ(nested.message(), "object_cases.npz: 'nested': object array holds a dict of str -> list; expected str -> number");
+  EXPECT_EQ(nested.message(),
+            "object_cases.npz: 'nested': object array holds a dict of str -> list; expected str -> "
+            "number");
   Result<ArrayDict> mixed = readNpzArrays(path, {"mixed"});
   ASSERT_FALSE(mixed.ok());
-  EXPECT_EQ(mixed.message(), "object_cases.npz: 'mixed': object array element is a str; expected all numbers or all strings");
+  EXPECT_EQ(mixed.message(),
+            "object_cases.npz: 'mixed': object array element is a str; expected all numbers or all "
+            "strings");
 }
 
 }  // namespace

@@ -107,17 +107,20 @@ TEST(Npz, MemberErrorsNameArchiveAndMember) {
   EXPECT_EQ(d.message(), "model.npz/shapedirs.npy: truncated data: expected 16 bytes, found 10");
   const std::string obj =
       npy("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
-  // Eager reads skip object members (not numeric data); asking for one by name is an error naming it.
+  // Eager reads skip object members (not numeric data); asking for one by name is an error naming
+  // it.
   Result<ArrayDict> o = parse(storedZip({{"kintree_table.npy", obj}, {"betas.npy", good}}));
   ASSERT_TRUE(o.ok()) << o.message();
   EXPECT_EQ(o->count("kintree_table"), 0u);
   EXPECT_EQ(o->count("betas"), 1u);
   const std::string zip = storedZip({{"kintree_table.npy", obj}});
-  Result<NpzArchive> npz = NpzArchive::fromBytes(reinterpret_cast<const uint8_t*>(zip.data()), zip.size(), "model.npz");
+  Result<NpzArchive> npz =
+      NpzArchive::fromBytes(reinterpret_cast<const uint8_t*>(zip.data()), zip.size(), "model.npz");
   ASSERT_TRUE(npz.ok()) << npz.message();
   Result<Array> g = npz->get("kintree_table");
   ASSERT_FALSE(g.ok());
-  EXPECT_EQ(g.message(), "model.npz: 'kintree_table' is an object array ('|O'); expected numbers or text");
+  EXPECT_EQ(g.message(),
+            "model.npz: 'kintree_table' is an object array ('|O'); expected numbers or text");
   Result<ArrayDict> txt = parse(storedZip({{"readme.txt", "hello"}}));
   ASSERT_FALSE(txt.ok());
   EXPECT_EQ(txt.message().rfind("model.npz/readme.txt: not an .npy file", 0), 0u) << txt.message();
@@ -150,9 +153,12 @@ TEST(Npz, EveryTruncationOfAStoredArchiveIsAnError) {
 TEST(Npz, UnusedMembersAreNeverDecoded) {
   const std::string good =
       npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", std::string(16, '\0'));
-  std::string zip = storedZip({{"betas.npy", good}, {"junk.npy", "this is not an npy file at all"},
-                               {"huge.npy", npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", "")}});
-  Result<NpzArchive> npz = NpzArchive::fromBytes(reinterpret_cast<const uint8_t*>(zip.data()), zip.size(), "m.npz");
+  std::string zip = storedZip(
+      {{"betas.npy", good},
+       {"junk.npy", "this is not an npy file at all"},
+       {"huge.npy", npy("{'descr': '<f8', 'fortran_order': False, 'shape': (2,), }", "")}});
+  Result<NpzArchive> npz =
+      NpzArchive::fromBytes(reinterpret_cast<const uint8_t*>(zip.data()), zip.size(), "m.npz");
   ASSERT_TRUE(npz.ok()) << npz.message();
   EXPECT_EQ(npz->keys(), (std::vector<std::string>{"betas", "junk", "huge"}));
   Result<ArrayDict> d = npz->read({"betas", "absent"});
@@ -163,14 +169,17 @@ TEST(Npz, UnusedMembersAreNeverDecoded) {
   EXPECT_FALSE(parse(zip).ok());  // the eager reader does parse them
   // An unsupported compression method on an unused member: listing still works.
   std::string odd = storedZip({{"betas.npy", good}, {"odd.npy", good}});
-  const size_t second_cd = odd.find(std::string("PK\x01\x02", 4), odd.find(std::string("PK\x01\x02", 4)) + 1);
+  const size_t second_cd =
+      odd.find(std::string("PK\x01\x02", 4), odd.find(std::string("PK\x01\x02", 4)) + 1);
   odd[second_cd + 10] = 99;  // central directory: compression method
-  Result<NpzArchive> lazy = NpzArchive::fromBytes(reinterpret_cast<const uint8_t*>(odd.data()), odd.size(), "m.npz");
+  Result<NpzArchive> lazy =
+      NpzArchive::fromBytes(reinterpret_cast<const uint8_t*>(odd.data()), odd.size(), "m.npz");
   ASSERT_TRUE(lazy.ok()) << lazy.message();
   EXPECT_TRUE(lazy->read({"betas"}).ok());
   Result<Array> bad = lazy->get("odd");
   ASSERT_FALSE(bad.ok());
-  EXPECT_NE(bad.message().find("unsupported compression method 99"), std::string::npos) << bad.message();
+  EXPECT_NE(bad.message().find("unsupported compression method 99"), std::string::npos)
+      << bad.message();
 }
 
 // Found by npz_fuzz: an empty stored member made the header probe call

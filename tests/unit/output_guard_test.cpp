@@ -22,7 +22,8 @@ class OutputGuard : public ::testing::Test {
     std::ofstream(model_) << "model bytes";
   }
   void TearDown() override {
-    for (const char* f : {"model.npz", "link.glb", "hard.glb", "other.glb", "in_link.npz", "model.npz.smpl.json"})
+    for (const char* f :
+         {"model.npz", "link.glb", "hard.glb", "other.glb", "in_link.npz", "model.npz.smpl.json"})
       std::remove((dir_ + "/" + f).c_str());
     ::rmdir(dir_.c_str());
   }

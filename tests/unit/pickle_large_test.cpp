@@ -26,7 +26,8 @@ TEST(PickleLargePayloads, EveryProtocolMatchesNumpy) {
       auto it = got->find(key);
       ASSERT_NE(it, got->end()) << name << ": no '" << key << "'";
       EXPECT_EQ(it->second.shape, want.shape) << name << "/" << key;
-      EXPECT_EQ(it->second.data, want.data) << name << "/" << key;  // exact: same bytes, same widening
+      EXPECT_EQ(it->second.data, want.data)
+          << name << "/" << key;  // exact: same bytes, same widening
     }
   }
 }

@@ -2,6 +2,8 @@
 // tests/fixtures/make_pickle_cases.py (pickled by Python itself, or assembled
 // as Python 2 writes them) and are compared element by element with values
 // numpy computed; bad inputs are built here byte by byte.
+#include "core/io/pickle/pickle.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -10,8 +12,6 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include "core/io/pickle/pickle.h"
 
 #include "tests/unit/test_util.h"
 
@@ -29,7 +29,8 @@ std::string B(const char (&s)[N]) {
 const std::string kCases = std::string(SMPL_FIXTURE_DIR) + "/pickle_cases/";
 
 Result<ArrayDict> parse(const std::string& bytes, const PickleLimits& limits = PickleLimits()) {
-  return parsePickle(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "model.pkl", limits);
+  return parsePickle(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "model.pkl",
+                     limits);
 }
 
 void expectArray(const Array& a, const nlohmann::json& e, const std::string& what) {
@@ -48,7 +49,9 @@ void expectArray(const Array& a, const nlohmann::json& e, const std::string& wha
   for (size_t i = 0; i < values.size(); ++i) EXPECT_EQ(a.data[i], values[i]) << "element " << i;
 }
 
-nlohmann::json readJson(const std::string& name) { return nlohmann::json::parse(readAll(kCases + name)); }
+nlohmann::json readJson(const std::string& name) {
+  return nlohmann::json::parse(readAll(kCases + name));
+}
 
 TEST(Pickle, EveryProtocolMatchesNumpy) {
   nlohmann::json expected = readJson("expected.json");
@@ -87,8 +90,8 @@ TEST(Pickle, Python2FilesMatchNumpy) {
     ++seen;
   }
   EXPECT_EQ(seen, p2.size() + p0.size());
-  EXPECT_EQ(p2.at("shapedirs").shape, (std::vector<int64_t>{6, 3, 2}));   // chumpy Ch -> its 'x'
-  EXPECT_EQ(p2.at("J_regressor").shape, (std::vector<int64_t>{2, 6}));    // sparse -> dense
+  EXPECT_EQ(p2.at("shapedirs").shape, (std::vector<int64_t>{6, 3, 2}));  // chumpy Ch -> its 'x'
+  EXPECT_EQ(p2.at("J_regressor").shape, (std::vector<int64_t>{2, 6}));   // sparse -> dense
   EXPECT_EQ(p2.at("kintree_table").data[0], 4294967295.0);
 }
 
@@ -121,10 +124,14 @@ TEST(Pickle, ForbiddenGlobalsAreRefusedByName) {
   expectRefused("csubprocess\nPopen\n(S'ls'\ntR.", "subprocess.Popen");
   expectRefused("c__builtin__\ngetattr\n(S'x'\nS'y'\ntR.", "__builtin__.getattr");
   // STACK_GLOBAL (protocol 4) and INST (protocol 0) name globals too.
-  expectRefused(B("\x80\x04\x8c\x08" "builtins\x8c\x04" "exec\x93\x8c\x01x\x85R."), "builtins.exec");
+  expectRefused(B("\x80\x04\x8c\x08"
+                  "builtins\x8c\x04"
+                  "exec\x93\x8c\x01x\x85R."),
+                "builtins.exec");
   expectRefused("(S'ls'\nios\nsystem\n.", "os.system");
   // A module that merely starts like an allowed one is still refused.
-  expectRefused("cnumpy.core.multiarray_evil\n_reconstruct\n.", "numpy.core.multiarray_evil._reconstruct");
+  expectRefused("cnumpy.core.multiarray_evil\n_reconstruct\n.",
+                "numpy.core.multiarray_evil._reconstruct");
   expectRefused("cscipy.sparse.csc\nsomething\n.", "scipy.sparse.csc.something");
 }
 
@@ -134,7 +141,8 @@ TEST(Pickle, HostileLengthsFailBeforeAllocating) {
     std::string bytes = B("\x80\x05") + op + B("\x00\x00\x00\x00\x00\x00\x00\x40") + ".";
     Result<ArrayDict> r = parse(bytes);
     ASSERT_FALSE(r.ok());
-    EXPECT_NE(r.message().find("length 4611686018427387904 exceeds the 1 bytes left"), std::string::npos)
+    EXPECT_NE(r.message().find("length 4611686018427387904 exceeds the 1 bytes left"),
+              std::string::npos)
         << r.message();
   }
   Result<ArrayDict> r = parse(B("\x80\x02T\xff\xff\xff\x7f."));  // BINSTRING 2^31-1
@@ -155,7 +163,7 @@ TEST(Pickle, StructuralErrors) {
       {"g3\n.", "memo index 3 not defined"},
       {B("\x80\x02\x85."), "stack underflow"},
       {B("\x80\x02."), "stack underflow"},
-      {B("\x80\x02}(."), "stack underflow"},          // STOP cannot pop across a MARK
+      {B("\x80\x02}(."), "stack underflow"},  // STOP cannot pop across a MARK
       {B("\x80\x02(}."), "unbalanced MARK"},
       {B("\x80\x02K\x01t."), "no MARK"},
       {B("\x80\x02]q\x00."), "top level is list, expected a dict"},
@@ -183,7 +191,10 @@ TEST(Pickle, StructuralErrors) {
 
 struct Builder {
   std::string s = B("\x80\x02");
-  Builder& raw(const std::string& b) { s += b; return *this; }
+  Builder& raw(const std::string& b) {
+    s += b;
+    return *this;
+  }
   Builder& str(const std::string& t) {
     s += 'X';
     uint32_t n = static_cast<uint32_t>(t.size());
@@ -208,8 +219,13 @@ struct Builder {
     return raw("NNN").integer(-1).integer(-1).integer(0).raw("tb");
   }
   // numpy.core.multiarray._reconstruct + BUILD (1, shape, dtype, False, payload)
-  Builder& ndarray(const std::vector<int32_t>& shape, const std::string& dtype_name, const std::string& payload) {
-    raw("cnumpy.core.multiarray\n_reconstruct\ncnumpy\nndarray\n").integer(0).raw("\x85").bytes("b").raw("\x87R(");
+  Builder& ndarray(const std::vector<int32_t>& shape, const std::string& dtype_name,
+                   const std::string& payload) {
+    raw("cnumpy.core.multiarray\n_reconstruct\ncnumpy\nndarray\n")
+        .integer(0)
+        .raw("\x85")
+        .bytes("b")
+        .raw("\x87R(");
     integer(1).raw("(");
     for (int32_t d : shape) integer(d);
     raw("t").dtype(dtype_name).raw("\x89").bytes(payload);
@@ -249,15 +265,20 @@ TEST(Pickle, PayloadMustMatchDtypeAndShape) {
   b.raw("}").str("a").ndarray({2, 3}, "f8", std::string(40, '\0')).raw("s.");
   Result<ArrayDict> r = parse(b.s);
   ASSERT_FALSE(r.ok());
-  EXPECT_EQ(r.message(), "model.pkl: array of dtype <f8 and shape (2,3) needs 48 bytes, payload has 40");
+  EXPECT_EQ(r.message(),
+            "model.pkl: array of dtype <f8 and shape (2,3) needs 48 bytes, payload has 40");
   Builder huge;
   huge.raw("}").str("a").ndarray({1 << 30, 1 << 30, 1 << 30}, "f8", "").raw("s.");
   r = parse(huge.s);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.message().find("too large"), std::string::npos) << r.message();
   Builder object;
-  object.raw("}").str("a").raw("cnumpy.core.multiarray\n_reconstruct\ncnumpy\nndarray\n").integer(0);
-  object.raw("\x85").bytes("b").raw("\x87R(").integer(1).raw("(").integer(1).raw("t").dtype("O8", "|");
+  object.raw("}")
+      .str("a")
+      .raw("cnumpy.core.multiarray\n_reconstruct\ncnumpy\nndarray\n")
+      .integer(0);
+  object.raw("\x85").bytes("b").raw("\x87R(").integer(1).raw("(").integer(1).raw("t").dtype("O8",
+                                                                                            "|");
   object.raw("\x89]K\x01\x61tbs.");
   // An object array in a model pickle is not model data: the key is dropped, the load goes on
   // (parseObjectNpy decodes such arrays when a caller needs one).
@@ -296,15 +317,21 @@ TEST(Pickle, SparseIndicesAreValidated) {
 
 TEST(Pickle, CyclesAndDeepNestingAreSafe) {
   // l = []; l.append(l); {'a': l}: converted as not array-like, no leak.
-  Result<ArrayDict> r = parse(B("\x80\x02}X\x01\x00\x00\x00" "a]q\x01h\x01\x61s."));
+  Result<ArrayDict> r =
+      parse(B("\x80\x02}X\x01\x00\x00\x00"
+              "a]q\x01h\x01\x61s."));
   ASSERT_TRUE(r.ok()) << r.message();
   EXPECT_EQ(r->count("a"), 0u);
   // A dict that contains itself.
-  r = parse(B("\x80\x02}q\x00X\x01\x00\x00\x00" "bh\x00s."));
+  r =
+      parse(B("\x80\x02}q\x00X\x01\x00\x00\x00"
+              "bh\x00s."));
   ASSERT_TRUE(r.ok()) << r.message();
   EXPECT_TRUE(r->empty());
   // 100000 nested lists: built iteratively, converted with bounded recursion.
-  std::string deep = B("\x80\x02}X\x01\x00\x00\x00" "d");
+  std::string deep =
+      B("\x80\x02}X\x01\x00\x00\x00"
+        "d");
   for (int i = 0; i < 100000; ++i) deep += "]";
   for (int i = 0; i < 99999; ++i) deep += "a";
   deep += "s.";
@@ -324,7 +351,10 @@ TEST(Pickle, CyclesAndDeepNestingAreSafe) {
   EXPECT_NE(r.message().find("memo exceeds limit of 4"), std::string::npos) << r.message();
   limits = PickleLimits();
   limits.max_total_bytes = 64;
-  r = parse(B("\x80\x03}X\x01\x00\x00\x00" "aC\x64") + std::string(100, 'z') + "s.", limits);
+  r = parse(B("\x80\x03}X\x01\x00\x00\x00"
+              "aC\x64") +
+                std::string(100, 'z') + "s.",
+            limits);
   ASSERT_FALSE(r.ok());
   EXPECT_NE(r.message().find("exceeds the limit of 64 bytes"), std::string::npos) << r.message();
 }
@@ -333,7 +363,8 @@ TEST(Pickle, ProtocolZeroDetails) {
   // INST of an allowed class with a BUILD state; STRING escapes; UNICODE escapes;
   // text INT/LONG/FLOAT and bools.
   std::string text =
-      "(dp0\nS'c'\n(ichumpy.ch\nCh\n(dS'x'\n(lF1.5\naF-2e3\nasbsS'e\\'sc\\x41\\n'\nS'\\t\\\\\\101'\ns"
+      "(dp0\nS'c'\n(ichumpy.ch\nCh\n(dS'x'\n(lF1.5\naF-2e3\nasbsS'e\\'sc\\x41\\n'\nS'\\t\\\\\\101'"
+      "\ns"
       "S'u'\nVa\\u00e9\\U0001f600\\u005c\ns"
       "S'i'\nI-12\nsS'l'\nL99999999999999999999L\nsS't'\nI01\ns.";
   Result<ArrayDict> r = parse(text);
@@ -351,19 +382,39 @@ TEST(Pickle, ProtocolZeroDetails) {
 }
 
 TEST(Pickle, LessCommonBinaryOpcodes) {
-  std::string bytes = B("\x80\x04}(")
-      + B("\x8c\x01" "a\x8d\x02\x00\x00\x00\x00\x00\x00\x00" "hi")   // BINUNICODE8
-      + B("\x8c\x01" "b\x8e\x01\x00\x00\x00\x00\x00\x00\x00" "z")    // BINBYTES8
-      + B("\x8c\x01" "c\x8b\x02\x00\x00\x00\x00\x01")                 // LONG4 256
-      + B("\x8c\x01" "dM\x10\x27")                                       // BININT2 10000
-      + B("\x8c\x01" "eK\x05" "20")                                       // DUP, POP
-      + B("\x8c\x01" "f(K\x01K\x02" "1K\x03")                             // POP_MARK
-      + B("\x8c\x01" "g(K\x01\x91")                                       // FROZENSET: dropped
-      + B("\x8c\x01" "h\x8c\x09" "chumpy.ch\x8c\x02" "Ch\x93)}\x92")     // NEWOBJ_EX
-      + B("}(\x8c\x01" "xG\x40\x04\x00\x00\x00\x00\x00\x00ub")
-      + B("\x8c\x01" "i(\x8c\x09" "chumpy.ch\x8c\x02" "Ch\x93o")          // OBJ
-      + B("}(\x8c\x01" "x]K\x01" "aub")
-      + B("u.");
+  std::string bytes = B("\x80\x04}(") +
+                      B("\x8c\x01"
+                        "a\x8d\x02\x00\x00\x00\x00\x00\x00\x00"
+                        "hi")  // BINUNICODE8
+                      + B("\x8c\x01"
+                          "b\x8e\x01\x00\x00\x00\x00\x00\x00\x00"
+                          "z")  // BINBYTES8
+                      + B("\x8c\x01"
+                          "c\x8b\x02\x00\x00\x00\x00\x01")  // LONG4 256
+                      + B("\x8c\x01"
+                          "dM\x10\x27")  // BININT2 10000
+                      + B("\x8c\x01"
+                          "eK\x05"
+                          "20")  // DUP, POP
+                      + B("\x8c\x01"
+                          "f(K\x01K\x02"
+                          "1K\x03")  // POP_MARK
+                      + B("\x8c\x01"
+                          "g(K\x01\x91")  // FROZENSET: dropped
+                      + B("\x8c\x01"
+                          "h\x8c\x09"
+                          "chumpy.ch\x8c\x02"
+                          "Ch\x93)}\x92")  // NEWOBJ_EX
+                      + B("}(\x8c\x01"
+                          "xG\x40\x04\x00\x00\x00\x00\x00\x00ub") +
+                      B("\x8c\x01"
+                        "i(\x8c\x09"
+                        "chumpy.ch\x8c\x02"
+                        "Ch\x93o")  // OBJ
+                      + B("}(\x8c\x01"
+                          "x]K\x01"
+                          "aub") +
+                      B("u.");
   Result<ArrayDict> r = parse(bytes);
   ASSERT_TRUE(r.ok()) << r.message();
   EXPECT_EQ(r->at("a").strings, (std::vector<std::string>{"hi"}));
@@ -384,7 +435,10 @@ TEST(Pickle, LessCommonBinaryOpcodes) {
 
 TEST(Pickle, OrderedDictTopLevel) {
   // collections.OrderedDict.__reduce__: (OrderedDict, ()) then SETITEMS.
-  Result<ArrayDict> r = parse(B("\x80\x02\x63" "collections\nOrderedDict\n)R(X\x01\x00\x00\x00" "aK\x01u."));
+  Result<ArrayDict> r =
+      parse(B("\x80\x02\x63"
+              "collections\nOrderedDict\n)R(X\x01\x00\x00\x00"
+              "aK\x01u."));
   ASSERT_TRUE(r.ok()) << r.message();
   EXPECT_EQ(r->at("a").data, (std::vector<double>{1}));
 }

@@ -7,8 +7,8 @@
 
 #include <fstream>
 
-#include "core/math/forward.h"
 #include "core/load/model_loader.h"
+#include "core/math/forward.h"
 
 namespace smpl {
 namespace {
@@ -29,7 +29,8 @@ TEST(Pipeline, AssetMatchesModel) {
   ASSERT_TRUE(body.ok());
   const SkinnedMesh& mesh = asset->mesh;
   EXPECT_LT((mesh.positions.cast<double>() - body->v_shaped).cwiseAbs().maxCoeff(), 1e-6);
-  EXPECT_EQ(asset->skeleton.rest_local.row(4), body->joints.row(4) - body->joints.row(1));  // left_knee under left_hip
+  EXPECT_EQ(asset->skeleton.rest_local.row(4),
+            body->joints.row(4) - body->joints.row(1));  // left_knee under left_hip
   ASSERT_EQ(mesh.morph_targets.size(), 207u + 2u);
   EXPECT_EQ(mesh.morph_targets[0].name, "pose_left_hip_00");
   EXPECT_EQ(mesh.morph_targets[9 * 3 + 5].name, "pose_left_knee_12");
@@ -38,7 +39,8 @@ TEST(Pipeline, AssetMatchesModel) {
   for (int n : {0, 50, 206})
     for (int i = 0; i < model->numVertices(); i += 37)
       for (int c = 0; c < 3; ++c)
-        EXPECT_FLOAT_EQ(mesh.morph_targets[n].deltas(i, c), static_cast<float>(model->posedirs(3 * i + c, n)));
+        EXPECT_FLOAT_EQ(mesh.morph_targets[n].deltas(i, c),
+                        static_cast<float>(model->posedirs(3 * i + c, n)));
   EXPECT_EQ(mesh.joints.cols(), 4);
   for (int i = 0; i < mesh.weights.rows(); ++i) EXPECT_NEAR(mesh.weights.row(i).sum(), 1.0f, 1e-6f);
   EXPECT_EQ(asset->metadata.correctives.size(), 207u);
@@ -67,8 +69,8 @@ TEST(Pipeline, UvSeamsSplitVerticesAndTargetsFollow) {
     for (int i = 0; i < model->numVertices(); ++i) obj << "v 0 0 0\n";
     for (int f = 0; f < model->faces.rows(); ++f) obj << "vt 0 0\nvt 1 0\nvt 0 1\n";
     for (int f = 0; f < model->faces.rows(); ++f)
-      obj << "f " << model->faces(f, 0) + 1 << "/" << 3 * f + 1 << " " << model->faces(f, 1) + 1 << "/" << 3 * f + 2
-          << " " << model->faces(f, 2) + 1 << "/" << 3 * f + 3 << "\n";
+      obj << "f " << model->faces(f, 0) + 1 << "/" << 3 * f + 1 << " " << model->faces(f, 1) + 1
+          << "/" << 3 * f + 2 << " " << model->faces(f, 2) + 1 << "/" << 3 * f + 3 << "\n";
   }
   ExportOptions o;
   o.uv_obj = path;
@@ -79,7 +81,8 @@ TEST(Pipeline, UvSeamsSplitVerticesAndTargetsFollow) {
   EXPECT_EQ(mesh.uvs.rows(), mesh.positions.rows());
   for (int i = 0; i < mesh.positions.rows(); i += 11) {
     const int s = mesh.source_vertex[i];
-    EXPECT_FLOAT_EQ(mesh.morph_targets[3].deltas(i, 1), static_cast<float>(model->posedirs(3 * s + 1, 3)));
+    EXPECT_FLOAT_EQ(mesh.morph_targets[3].deltas(i, 1),
+                    static_cast<float>(model->posedirs(3 * s + 1, 3)));
     EXPECT_FLOAT_EQ(mesh.positions(i, 0), static_cast<float>(model->v_template(s, 0)));
   }
   std::ofstream(path) << "v 0 0 0\nvt 0 0\nf 1/1 2/1 3/1\n";

@@ -22,10 +22,12 @@ TEST(Printable, EscapesControlsDelAndBadUtf8) {
   EXPECT_EQ(printable(std::string("a\0b", 3)), "a\\x00b");
   EXPECT_EQ(printable("\x7f"), "\\x7f");
   EXPECT_EQ(printable("caf\xc3\xa9 \xe2\x9c\x93"), "caf\xc3\xa9 \xe2\x9c\x93");  // valid UTF-8 kept
-  EXPECT_EQ(printable("\xc2\x9b" "31m"), "\\xc2\\x9b31m");                        // C1 CSI
-  EXPECT_EQ(printable("\xff\xc3"), "\\xff\\xc3");                                 // invalid, truncated
-  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");                                 // overlong '/'
-  EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");                        // surrogate
+  EXPECT_EQ(printable("\xc2\x9b"
+                      "31m"),
+            "\\xc2\\x9b31m");                               // C1 CSI
+  EXPECT_EQ(printable("\xff\xc3"), "\\xff\\xc3");           // invalid, truncated
+  EXPECT_EQ(printable("\xc0\xaf"), "\\xc0\\xaf");           // overlong '/'
+  EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // surrogate
 }
 
 TEST(Printable, IsIdempotentAndTruncates) {
@@ -33,15 +35,17 @@ TEST(Printable, IsIdempotentAndTruncates) {
   EXPECT_EQ(printable(once), once);
   const std::string long_text(10000, 'a');
   EXPECT_EQ(printable(long_text, 100), std::string(100, 'a') + "...");
-  EXPECT_EQ(printable("\xe2\x9c\x93\xe2\x9c\x93\xe2\x9c\x93", 4), "\xe2\x9c\x93\xe2\x9c\x93...");  // whole characters
+  EXPECT_EQ(printable("\xe2\x9c\x93\xe2\x9c\x93\xe2\x9c\x93", 4),
+            "\xe2\x9c\x93\xe2\x9c\x93...");  // whole characters
 }
 
 TEST(Printable, NpyHeaderKeyIsEscapedInTheError) {
-  std::string dict = "{'descr': '<f8', 'fortran_order': False, 'shape': (1,), '\x1b]0;pwned\x07\r': 1}";
+  std::string dict =
+      "{'descr': '<f8', 'fortran_order': False, 'shape': (1,), '\x1b]0;pwned\x07\r': 1}";
   while ((10 + dict.size() + 1) % 64 != 0) dict += ' ';
   dict += '\n';
-  const std::string bytes = std::string("\x93NUMPY\x01\x00", 8) + static_cast<char>(dict.size()) + '\0' + dict +
-                            std::string(8, '\0');
+  const std::string bytes = std::string("\x93NUMPY\x01\x00", 8) + static_cast<char>(dict.size()) +
+                            '\0' + dict + std::string(8, '\0');
   Result<Array> a = parseNpy(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), "b.npy");
   ASSERT_FALSE(a.ok());
   EXPECT_TRUE(allPrintable(a.message())) << a.message();
@@ -49,7 +53,10 @@ TEST(Printable, NpyHeaderKeyIsEscapedInTheError) {
 }
 
 TEST(Printable, PickleGlobalNameIsEscapedInTheError) {
-  const std::string p = "\x80\x02" "cos\x1b[31m\nsys\rtem\n" ".";
+  const std::string p =
+      "\x80\x02"
+      "cos\x1b[31m\nsys\rtem\n"
+      ".";
   Result<ArrayDict> d = parsePickle(reinterpret_cast<const uint8_t*>(p.data()), p.size(), "m.pkl");
   ASSERT_FALSE(d.ok());
   EXPECT_TRUE(allPrintable(d.message())) << d.message();

@@ -1,11 +1,12 @@
-#include "cli/betas_file.h"
-#include "cli/options.h"
 #include "cli/settings.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <map>
+
+#include "cli/betas_file.h"
+#include "cli/options.h"
 
 namespace smpl {
 namespace {
@@ -22,7 +23,8 @@ TEST(Settings, DefaultsAndValues) {
   EXPECT_TRUE(s->export_options.correctives);
   EXPECT_TRUE(s->writer_options.binary);
   EXPECT_EQ(s->export_options.betas, (std::vector<double>{1, -2.5, 0.3}));
-  Result<Settings> eq = parse({"--model=builtin", "--out=a.gltf", "--max-influences=8", "--correctives=none"});
+  Result<Settings> eq =
+      parse({"--model=builtin", "--out=a.gltf", "--max-influences=8", "--correctives=none"});
   ASSERT_TRUE(eq.ok()) << eq.message();
   EXPECT_FALSE(eq->writer_options.binary);
   EXPECT_EQ(eq->export_options.max_influences, 8);
@@ -30,9 +32,13 @@ TEST(Settings, DefaultsAndValues) {
 }
 
 TEST(Settings, RejectsBeforeWork) {
-  struct Bad { std::vector<const char*> args; const char* message; };
+  struct Bad {
+    std::vector<const char*> args;
+    const char* message;
+  };
   const Bad cases[] = {
-      {{"--model", "builtin", "--out", "a.glb", "--frobnicate", "1"}, "unknown option '--frobnicate'"},
+      {{"--model", "builtin", "--out", "a.glb", "--frobnicate", "1"},
+       "unknown option '--frobnicate'"},
       {{"--model", "builtin", "--out", "a.glb", "--frobnicate"}, "unknown option '--frobnicate'"},
       {{"-V"}, "unknown option '-V'"},
       {{"--model", "builtin", "stray", "--out", "a.glb"}, "unexpected argument 'stray'"},
@@ -40,27 +46,38 @@ TEST(Settings, RejectsBeforeWork) {
       {{"--out", "a.glb"}, "missing --model"},
       {{"--model", "builtin"}, "missing --out"},
       {{"--model", "builtin", "--out", "a.obj"}, "unknown format"},
-      {{"--model", "builtin", "--out", "a.glb", "--betas", "1,x"}, "--betas: 'x' is not a finite number"},
+      {{"--model", "builtin", "--out", "a.glb", "--betas", "1,x"},
+       "--betas: 'x' is not a finite number"},
       {{"--model", "builtin", "--out", "a.glb", "--betas", "1,nan"}, "not a finite number"},
-      {{"--model", "builtin", "--out", "a.glb", "--betas", "1", "--betas-file", "b.npy"}, "conflict"},
-      {{"--model", "builtin", "--out", "a.glb", "--fbx-units", "cm"}, "--fbx-units applies only to .fbx"},
-      {{"--model", "builtin", "--out", "a.glb", "--correctives", "some"}, "expected 'all' or 'none'"},
+      {{"--model", "builtin", "--out", "a.glb", "--betas", "1", "--betas-file", "b.npy"},
+       "conflict"},
+      {{"--model", "builtin", "--out", "a.glb", "--fbx-units", "cm"},
+       "--fbx-units applies only to .fbx"},
+      {{"--model", "builtin", "--out", "a.glb", "--correctives", "some"},
+       "expected 'all' or 'none'"},
       {{"--model", "builtin", "--out", "a.glb", "--max-influences", "2.5"}, "is not an integer"},
       {{"--model", "builtin", "--out", "a.glb", "--out", "b.glb"}, "given twice"},
       {{"--model", "builtin", "--out"}, "needs a value"},
-      {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--correctives", "none"}, "conflicts with --correctives none"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--correctives", "none"},
+       "conflicts with --correctives none"},
       {{"--model", "builtin", "--out", "a.fbx", "--draco"}, "applies only to glTF"},
       {{"--model", "builtin", "--out", "a.glb", "--frames", "0:10"}, "needs --motion"},
-      {{"--model", "builtin", "--out", "a.glb", "--skin-weights", "best"}, "expected 'truncated' or 'optimized'"},
-      {{"--model", "builtin", "--out", "a.glb", "--max-influences", "0"}, "expected a count >= 1 or 'all'"},
-      {{"--model", "builtin", "--out", "a.glb", "--corrective-weights", "half"}, "expected 'signed', 'unit' or 'split'"},
-      {{"--model", "builtin", "--out", "a.glb", "--corrective-weights", "unit", "--correctives", "none"},
+      {{"--model", "builtin", "--out", "a.glb", "--skin-weights", "best"},
+       "expected 'truncated' or 'optimized'"},
+      {{"--model", "builtin", "--out", "a.glb", "--max-influences", "0"},
+       "expected a count >= 1 or 'all'"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-weights", "half"},
+       "expected 'signed', 'unit' or 'split'"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-weights", "unit", "--correctives",
+        "none"},
        "--corrective-weights conflicts with --correctives none"},
       {{"--model", "builtin", "--out", "a.glb", "--quantize-morphs", "--correctives", "none"},
        "with --correctives none there are none"},
-      {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--corrective-weights", "split"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-basis", "8", "--corrective-weights",
+        "split"},
        "conflicts with --corrective-weights split"},
-      {{"--model", "builtin", "--out", "a.glb", "--corrective-epsilon", "0.001", "--correctives", "none"},
+      {{"--model", "builtin", "--out", "a.glb", "--corrective-epsilon", "0.001", "--correctives",
+        "none"},
        "there are none"},
   };
   for (const Bad& c : cases) {
@@ -98,15 +115,19 @@ TEST(Settings, BetasFileJson) {
 }
 
 TEST(Settings, MotionFormatAndShardOptions) {
-  Result<Settings> s = parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--source-fps", "59.94",
-                              "--flat-hand-mean", "--shard", "3/8", "--manifest", "s3.jsonl"});
+  Result<Settings> s =
+      parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--source-fps", "59.94",
+             "--flat-hand-mean", "--shard", "3/8", "--manifest", "s3.jsonl"});
   ASSERT_TRUE(s.ok()) << s.message();
   EXPECT_EQ(s->source_fps, 59.94);
   EXPECT_TRUE(s->flat_hand_mean);
   EXPECT_EQ(s->shard_index, 3);
   EXPECT_EQ(s->shard_count, 8);
   EXPECT_EQ(s->manifest, "s3.jsonl");
-  struct Bad { std::vector<const char*> args; const char* message; };
+  struct Bad {
+    std::vector<const char*> args;
+    const char* message;
+  };
   const Bad cases[] = {
       {{"--source-fps", "0"}, "--source-fps: expected a rate in [1, 1000]"},
       {{"--source-fps", "-30"}, "--source-fps: expected a rate"},
@@ -127,13 +148,15 @@ TEST(Settings, MotionFormatAndShardOptions) {
     EXPECT_NE(r.message().find(b.message), std::string::npos) << r.message();
   }
   for (const char* option : {"--shard", "--manifest"}) {
-    Result<Settings> r = parse({"--model", "builtin", "--out", "a.glb", "--motion", "w.npz", option, "0/2"});
+    Result<Settings> r =
+        parse({"--model", "builtin", "--out", "a.glb", "--motion", "w.npz", option, "0/2"});
     ASSERT_FALSE(r.ok()) << option;
     EXPECT_NE(r.message().find("only to batch mode"), std::string::npos) << r.message();
   }
   Result<Settings> still = parse({"--model", "builtin", "--out", "a.glb", "--source-fps", "30"});
   ASSERT_FALSE(still.ok());
-  EXPECT_NE(still.message().find("--source-fps needs --motion"), std::string::npos) << still.message();
+  EXPECT_NE(still.message().find("--source-fps needs --motion"), std::string::npos)
+      << still.message();
 }
 
 // --memory-limit and the range checks of numbers given on the command line.
@@ -146,7 +169,8 @@ TEST(SettingsMemory, MemoryLimitIsParsedAndChecked) {
   EXPECT_EQ(s->memory_limit, 0u);  // the default, chosen at run time
   s = parse({"--model", "builtin", "--out", "a.glb", "--memory-limit", "lots"});
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.message().rfind("--memory-limit: expected a size such as 512M or 4G", 0), 0u) << s.message();
+  EXPECT_EQ(s.message().rfind("--memory-limit: expected a size such as 512M or 4G", 0), 0u)
+      << s.message();
   EXPECT_NE(usageText().find("--memory-limit SIZE"), std::string::npos);
 }
 
@@ -154,7 +178,8 @@ TEST(SettingsMemory, BetasAndExpressionOnTheCommandLineAreBounded) {
   EXPECT_TRUE(parse({"--model", "builtin", "--out", "a.glb", "--betas", "1000,-1000,0.5"}).ok());
   Result<Settings> s = parse({"--model", "builtin", "--out", "a.glb", "--betas", "0,1e300"});
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.message(), "--betas: value[1] is 1e+300; expected a finite value with magnitude at most 1000");
+  EXPECT_EQ(s.message(),
+            "--betas: value[1] is 1e+300; expected a finite value with magnitude at most 1000");
   s = parse({"--model", "builtin", "--out", "a.glb", "--expression", "-1001"});
   ASSERT_FALSE(s.ok());
   EXPECT_EQ(s.message().rfind("--expression: value[0] is -1001", 0), 0u) << s.message();
@@ -176,12 +201,14 @@ TEST(OptionTable, EveryRuleIsEnforced) {
         o.applies != Applies::Motion)
       continue;
     std::vector<const char*> args = {"--model", "builtin", "--out", out, o.name};
-    const std::map<std::string, std::string> valid = {{"--fbx-units", "cm"}, {"--fbx-version", "7500"}, {"--up", "y"},
-                                                      {"--root-motion", "keep"}, {"--frames", "0:1"}, {"--format", "glb"},
-                                                      {"--shard", "0/1"}, {"--manifest", "m.jsonl"}, {"--corrective-epsilon", "0.001"}};
+    const std::map<std::string, std::string> valid = {
+        {"--fbx-units", "cm"},     {"--fbx-version", "7500"}, {"--up", "y"},
+        {"--root-motion", "keep"}, {"--frames", "0:1"},       {"--format", "glb"},
+        {"--shard", "0/1"},        {"--manifest", "m.jsonl"}, {"--corrective-epsilon", "0.001"}};
     const std::string value = valid.count(o.name) ? valid.at(o.name) : "1";
     if (o.value) args.push_back(value.c_str());
-    if (std::string(o.name) == "--motion-dir" || std::string(o.name) == "--out-dir") continue;  // these start batch mode
+    if (std::string(o.name) == "--motion-dir" || std::string(o.name) == "--out-dir")
+      continue;  // these start batch mode
     Result<Settings> s = parse(args);
     ASSERT_FALSE(s.ok()) << o.name;
     EXPECT_NE(s.message().find(appliesRule(o.applies)), std::string::npos) << s.message();

@@ -17,13 +17,15 @@ namespace {
 TEST(SolveSimplexQp, ProjectsOntoTheSimplex) {
   // min |u - t|^2 on the simplex, t = (1.5, -0.5, 0.2): the projection is (1, 0, 0).
   const Eigen::Vector3d t(1.5, -0.5, 0.2);
-  const Eigen::VectorXd u = solveSimplexQp(2.0 * Eigen::Matrix3d::Identity(), 2.0 * t, Eigen::Vector3d::Constant(1.0 / 3));
+  const Eigen::VectorXd u = solveSimplexQp(2.0 * Eigen::Matrix3d::Identity(), 2.0 * t,
+                                           Eigen::Vector3d::Constant(1.0 / 3));
   EXPECT_NEAR(u(0), 1.0, 1e-12);
   EXPECT_NEAR(u(1), 0.0, 1e-12);
   EXPECT_NEAR(u(2), 0.0, 1e-12);
   // t = (0.6, 0.5, -1): both positive entries shift by 0.05 -> (0.55, 0.45, 0).
-  const Eigen::VectorXd v = solveSimplexQp(2.0 * Eigen::Matrix3d::Identity(), 2.0 * Eigen::Vector3d(0.6, 0.5, -1.0),
-                                           Eigen::Vector3d(0, 0, 1));
+  const Eigen::VectorXd v =
+      solveSimplexQp(2.0 * Eigen::Matrix3d::Identity(), 2.0 * Eigen::Vector3d(0.6, 0.5, -1.0),
+                     Eigen::Vector3d(0, 0, 1));
   EXPECT_NEAR(v(0), 0.55, 1e-12);
   EXPECT_NEAR(v(1), 0.45, 1e-12);
   EXPECT_NEAR(v(2), 0.0, 1e-12);
@@ -42,7 +44,8 @@ TEST(SolveSimplexQp, NoGridPointIsBetter) {
     const int steps = 200;
     for (int i = 0; i <= steps; ++i)
       for (int j = 0; i + j <= steps; ++j) {
-        const Eigen::Vector3d g(double(i) / steps, double(j) / steps, double(steps - i - j) / steps);
+        const Eigen::Vector3d g(double(i) / steps, double(j) / steps,
+                                double(steps - i - j) / steps);
         EXPECT_LE(objective(u), objective(g) + 1e-12) << "seed " << seed;
       }
   }
@@ -65,13 +68,15 @@ TEST(FitSkinWeights, HeldOutErrorOnTheSmplFixtureIsWellBelowTruncation) {
   Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   ASSERT_TRUE(model.ok()) << model.message();
   const Errors e = heldOut(*model, 4);
-  EXPECT_LE(e.fitted.mean_m, 0.7 * e.truncated.mean_m) << e.fitted.mean_m << " vs " << e.truncated.mean_m;
+  EXPECT_LE(e.fitted.mean_m, 0.7 * e.truncated.mean_m)
+      << e.fitted.mean_m << " vs " << e.truncated.mean_m;
   EXPECT_LE(e.fitted.max_m, e.truncated.max_m) << e.fitted.max_m << " vs " << e.truncated.max_m;
 }
 
 TEST(FitSkinWeights, HeldOutMeanErrorOfTheBuiltinBodyIsBelowTruncation) {
   const Errors e = heldOut(demoBody(), 4);
-  EXPECT_LE(e.fitted.mean_m, 0.95 * e.truncated.mean_m) << e.fitted.mean_m << " vs " << e.truncated.mean_m;
+  EXPECT_LE(e.fitted.mean_m, 0.95 * e.truncated.mean_m)
+      << e.fitted.mean_m << " vs " << e.truncated.mean_m;
 }
 
 TEST(FitSkinWeights, RowsAreConvexCombinationsAndThreadIndependent) {

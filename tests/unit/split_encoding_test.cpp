@@ -30,7 +30,8 @@ TEST(SplitEncoding, ExactWithZeroRestWeightsAndUnitRange) {
   Result<Asset> asset = buildAsset(model, o);
   ASSERT_TRUE(asset.ok()) << asset.message();
   const int joints = model.numJoints() - 1;
-  ASSERT_EQ(asset->mesh.morph_targets.size(), size_t(15 * joints));  // 3 diagonal + 2 x 6 off-diagonal
+  ASSERT_EQ(asset->mesh.morph_targets.size(),
+            size_t(15 * joints));  // 3 diagonal + 2 x 6 off-diagonal
   ASSERT_EQ(asset->metadata.correctives.size(), asset->mesh.morph_targets.size());
   EXPECT_EQ(asset->metadata.corrective_encoding, "split");
   EXPECT_EQ(asset->mesh.morph_targets[0].name, "pose_" + model.joint_names[1] + "_00");
@@ -46,7 +47,8 @@ TEST(SplitEncoding, ExactWithZeroRestWeightsAndUnitRange) {
   }
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(model.numPoseFeatures());
   for (const CorrectiveLayout& c : asset->metadata.correctives) EXPECT_EQ(weightOf(c, rest), 0.0);
-  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), 8, 3, 3.0)) {  // large angles: f spans its range
+  for (const Eigen::VectorXd& pose :
+       samplePoses(model.numJoints(), 8, 3, 3.0)) {  // large angles: f spans its range
     const Eigen::VectorXd f = poseFeatures(rotationsFromAxisAngle(pose));
     Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(model.numVertices(), 3);
     for (size_t t = 0; t < asset->mesh.morph_targets.size(); ++t) {
@@ -90,7 +92,8 @@ Eigen::MatrixXd basisOffset(const Asset& a, const Eigen::VectorXd& f) {
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(a.mesh.positions.rows(), 3);
   const Eigen::VectorXd cf = b.projection * f;
   for (size_t k = 0; k < b.targets.size(); ++k)
-    sum += (b.scale[k] * cf[Eigen::Index(k)] + b.offset[k]) * a.mesh.morph_targets[index.at(b.targets[k])].deltas.cast<double>();
+    sum += (b.scale[k] * cf[Eigen::Index(k)] + b.offset[k]) *
+           a.mesh.morph_targets[index.at(b.targets[k])].deltas.cast<double>();
   return sum;
 }
 
@@ -104,9 +107,12 @@ TEST(QuantizeMorphs, CorrectiveBasisTargetsAreQuantizedAndFolded) {
   for (bool b : q) EXPECT_TRUE(b);  // before: no basis target was quantized
   Asset folded = *asset;
   foldMorphScales(&folded);
-  for (const MorphTarget& t : folded.mesh.morph_targets) EXPECT_FLOAT_EQ(t.deltas.cwiseAbs().maxCoeff(), 1.0f);
-  for (size_t k = 0; k < 6; ++k) EXPECT_NE(folded.metadata.corrective_basis.scale[k], asset->metadata.corrective_basis.scale[k]);
-  const Eigen::VectorXd f = poseFeatures(rotationsFromAxisAngle(samplePoses(demoBody().numJoints(), 1, 5)[0]));
+  for (const MorphTarget& t : folded.mesh.morph_targets)
+    EXPECT_FLOAT_EQ(t.deltas.cwiseAbs().maxCoeff(), 1.0f);
+  for (size_t k = 0; k < 6; ++k)
+    EXPECT_NE(folded.metadata.corrective_basis.scale[k], asset->metadata.corrective_basis.scale[k]);
+  const Eigen::VectorXd f =
+      poseFeatures(rotationsFromAxisAngle(samplePoses(demoBody().numJoints(), 1, 5)[0]));
   EXPECT_LT((basisOffset(folded, f) - basisOffset(*asset, f)).cwiseAbs().maxCoeff(), 1e-6);
 }
 

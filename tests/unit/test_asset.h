@@ -106,10 +106,18 @@ inline Asset makeAsset(const AssetSpec& spec) {
   for (int f = 0; f < v_count - 2; ++f) m.triangles.row(f) << f, f + 1, f + 2;
   fillSkin(m, rng, v_count, spec.joints, spec.influences);
   for (int t = 0; t < spec.morph_targets; ++t)
-    m.morph_targets.push_back({"pose_joint_1_0" + std::to_string(t), randomMatrix(rng, v_count, 3, -0.1f, 0.1f)});
-  a.metadata = {"smpl",          "synthetic", "0.1.0",
-                {0.5, -1.25},    {},          {{0, "pose_joint_1_00", 1.0, 0.0}},
-                spec.influences, "meters",    "+Y",         {}};
+    m.morph_targets.push_back(
+        {"pose_joint_1_0" + std::to_string(t), randomMatrix(rng, v_count, 3, -0.1f, 0.1f)});
+  a.metadata = {"smpl",
+                "synthetic",
+                "0.1.0",
+                {0.5, -1.25},
+                {},
+                {{0, "pose_joint_1_00", 1.0, 0.0}},
+                spec.influences,
+                "meters",
+                "+Y",
+                {}};
   if (spec.frames > 0) fillAnimation(a, rng, spec.frames);
   return a;
 }

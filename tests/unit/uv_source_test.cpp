@@ -71,19 +71,23 @@ TEST(UvSource, NumpyPairErrors) {
   const BodyModel m = release();
   Result<UvLayout> lone = loadUvNumpyPair(kReleased + "betas_rows_differ.npy", m);
   ASSERT_FALSE(lone.ok());
-  EXPECT_NE(lone.message().find("must be a pair named <stem>_uv.npy"), std::string::npos) << lone.message();
+  EXPECT_NE(lone.message().find("must be a pair named <stem>_uv.npy"), std::string::npos)
+      << lone.message();
   Result<UvLayout> orphan = loadUvNumpyPair(kReleased + "lonely_uv.npy", m);
   ASSERT_FALSE(orphan.ok());
-  EXPECT_NE(orphan.message().find("lonely_uv.npy: its partner lonely_ft.npy does not exist"), std::string::npos)
+  EXPECT_NE(orphan.message().find("lonely_uv.npy: its partner lonely_ft.npy does not exist"),
+            std::string::npos)
       << orphan.message();
   Result<UvLayout> absent = loadUvNumpyPair(kReleased + "nothing_ft.npy", m);
   ASSERT_FALSE(absent.ok());
-  EXPECT_NE(absent.message().find("nothing_ft.npy: cannot open"), std::string::npos) << absent.message();
+  EXPECT_NE(absent.message().find("nothing_ft.npy: cannot open"), std::string::npos)
+      << absent.message();
   BodyModel fewer = m;  // ft rows must match the model's faces
   fewer.faces = m.faces.topRows(10);
   Result<UvLayout> rows = loadUvNumpyPair(kReleased + "smplx_pair_uv.npy", fewer);
   ASSERT_FALSE(rows.ok());
-  EXPECT_NE(rows.message().find("smplx_pair_ft.npy: UV faces (one row per model face) has shape ("), std::string::npos)
+  EXPECT_NE(rows.message().find("smplx_pair_ft.npy: UV faces (one row per model face) has shape ("),
+            std::string::npos)
       << rows.message();
 }
 

@@ -28,7 +28,8 @@ Asset goodAsset() {
   const size_t joints = a->skeleton.names.size();
   clip.rotations.assign(joints, std::vector<Eigen::Quaterniond>(2, Eigen::Quaterniond::Identity()));
   clip.root_translation = {Eigen::Vector3d(0, 0.9, 0), Eigen::Vector3d(0.1, 0.9, 0)};
-  clip.morph_weights = Eigen::MatrixXf::Zero(2, static_cast<Eigen::Index>(a->mesh.morph_targets.size()));
+  clip.morph_weights =
+      Eigen::MatrixXf::Zero(2, static_cast<Eigen::Index>(a->mesh.morph_targets.size()));
   a->animations.push_back(clip);
   return *a;
 }
@@ -76,13 +77,20 @@ TEST(ValidateAsset, EverySerialisedArrayIsChecked) {
               "animation walk frame 1 root translation exceeds the float32 range (1e+300)");
   expectError([](Asset* x) { x->animations[0].morph_weights(1, 0) = static_cast<float>(kInf); },
               "animation walk morph weights of frame 1 is not finite (inf)");
-  expectError([](Asset* x) { x->animations[0].fps = kNan; }, "animation walk fps is not finite (nan)");
-  expectError([](Asset* x) { x->metadata.betas = {0.0, kNan}; }, "metadata betas 1 is not finite (nan)");
-  expectError([](Asset* x) { x->metadata.expression = {kInf}; }, "metadata expression 0 is not finite (inf)");
+  expectError([](Asset* x) { x->animations[0].fps = kNan; },
+              "animation walk fps is not finite (nan)");
+  expectError(
+      [](Asset* x) {
+        x->metadata.betas = {0.0, kNan};
+      },
+      "metadata betas 1 is not finite (nan)");
+  expectError([](Asset* x) { x->metadata.expression = {kInf}; },
+              "metadata expression 0 is not finite (inf)");
   expectError([](Asset* x) { x->mesh.morph_targets[0].rest_weight = static_cast<float>(kNan); },
               "morph target " + a.mesh.morph_targets[0].name + " rest weight is not finite (nan)");
   expectError([](Asset* x) { x->metadata.correctives[0].offset = kNan; },
-              "metadata corrective " + a.metadata.correctives[0].target + " scale/offset is not finite (nan)");
+              "metadata corrective " + a.metadata.correctives[0].target +
+                  " scale/offset is not finite (nan)");
 }
 
 TEST(ValidateAsset, MetadataDoublesMayExceedFloat) {

@@ -27,7 +27,8 @@ Motion motionWith(const Eigen::Matrix3d& r, size_t frame = 3, size_t joint = 5) 
 
 TEST(ValidateInputs, CoefficientsMustBeFiniteAndBounded) {
   EXPECT_TRUE(checkCoefficients({0.5, -3, 1000, -1000}, "b.npy", "'betas'"));
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN(),
+               inf = std::numeric_limits<double>::infinity();
   for (double bad : {nan, inf, -inf, 1e300, 1000.5}) {
     Status st = checkCoefficients({0, bad}, "b.npy", "'betas'");
     ASSERT_FALSE(st) << bad;
@@ -42,7 +43,9 @@ TEST(ValidateInputs, FloatRangeAndIndices) {
   a.data[1] = 1e39;
   Status st = checkFloatRange(a, "m.npz", "posedirs");
   ASSERT_FALSE(st);
-  EXPECT_EQ(st.message(), "m.npz: 'posedirs' element 1 is 1e+39, beyond the float32 range the output is written in");
+  EXPECT_EQ(
+      st.message(),
+      "m.npz: 'posedirs' element 1 is 1e+39, beyond the float32 range the output is written in");
   Array f;
   f.data = {0, 1, 2, 4294967295.0};
   EXPECT_FALSE(checkIndices(f, "m.npz", "f"));
@@ -67,30 +70,36 @@ TEST(ValidateInputs, ModelWithFloatFaceIndexOrHugeValueIsRefused) {
   huge["shapedirs"].data[7] = 1e300;
   m = buildModel(huge, "model.npz");
   ASSERT_FALSE(m.ok());
-  EXPECT_NE(m.message().find("'shapedirs' element 7 is 1e+300, beyond the float32 range"), std::string::npos)
+  EXPECT_NE(m.message().find("'shapedirs' element 7 is 1e+300, beyond the float32 range"),
+            std::string::npos)
       << m.message();
 }
 
 TEST(ValidateInputs, FrameRates) {
   EXPECT_TRUE(checkFrameRate(120, "w.npz", "'mocap_framerate'"));
   EXPECT_TRUE(checkFrameRate(1, "w.npz", "'fps'"));
-  for (double bad : {0.001, 0.0, -30.0, 10001.0, std::nan("")}) EXPECT_FALSE(checkFrameRate(bad, "w.npz", "'fps'")) << bad;
+  for (double bad : {0.001, 0.0, -30.0, 10001.0, std::nan("")})
+    EXPECT_FALSE(checkFrameRate(bad, "w.npz", "'fps'")) << bad;
 }
 
 TEST(ValidateInputs, ZeroScaledAndReflectedMatricesAreRefusedWithFrameAndJoint) {
-  for (const Eigen::Matrix3d& bad : {Eigen::Matrix3d(Eigen::Matrix3d::Zero()), Eigen::Matrix3d(2 * Eigen::Matrix3d::Identity()),
-                                     Eigen::Matrix3d(Eigen::Vector3d(1, 1, -1).asDiagonal()),
-                                     Eigen::Matrix3d(1.01 * Eigen::Matrix3d::Identity())}) {
+  for (const Eigen::Matrix3d& bad :
+       {Eigen::Matrix3d(Eigen::Matrix3d::Zero()), Eigen::Matrix3d(2 * Eigen::Matrix3d::Identity()),
+        Eigen::Matrix3d(Eigen::Vector3d(1, 1, -1).asDiagonal()),
+        Eigen::Matrix3d(1.01 * Eigen::Matrix3d::Identity())}) {
     Motion m = motionWith(bad);
     Status st = checkMotionValues(&m, "walk.npz");
     ASSERT_FALSE(st) << bad;
-    EXPECT_EQ(st.message().rfind("walk.npz: 'poses' frame 3 joint 5 (right_knee) is not a rotation matrix", 0), 0u)
+    EXPECT_EQ(st.message().rfind(
+                  "walk.npz: 'poses' frame 3 joint 5 (right_knee) is not a rotation matrix", 0),
+              0u)
         << st.message();
   }
 }
 
 TEST(ValidateInputs, NearRotationIsReorthonormalised) {
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   Eigen::Matrix3d noisy = r;
   noisy(0, 1) += 2e-4;  // ||R^T R - I|| about 3e-4: float storage noise, within 1e-3
   Motion m = motionWith(noisy);
@@ -107,7 +116,8 @@ TEST(ValidateInputs, TranslationsBetasAndFpsOfAMotion) {
   m.translation[2].y() = 2e4;
   Status st = checkMotionValues(&m, "walk.npz");
   ASSERT_FALSE(st);
-  EXPECT_EQ(st.message(), "walk.npz: 'trans' frame 2 is 20000 m; expected finite values within 10000 m");
+  EXPECT_EQ(st.message(),
+            "walk.npz: 'trans' frame 2 is 20000 m; expected finite values within 10000 m");
   m = motionWith(Eigen::Matrix3d::Identity());
   m.betas = {0.1, 1e300};
   st = checkMotionValues(&m, "walk.npz");

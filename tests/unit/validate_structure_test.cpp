@@ -34,30 +34,37 @@ const std::vector<Rule>& rules() {
   static const std::vector<Rule> r = {
       {"no joints", [](Asset& a) { a.skeleton.names.clear(); }, "skeleton has no joints"},
       {"parents count", [](Asset& a) { a.skeleton.parents.pop_back(); }, "names but 9 parents"},
-      {"root not first", [](Asset& a) { a.skeleton.parents[0] = 1; }, "joint 0 ('pelvis') has parent 1"},
-      {"second root", [](Asset& a) { a.skeleton.parents[3] = -1; }, "joint 3 ('joint_3') has parent -1"},
-      {"forward parent", [](Asset& a) { a.skeleton.parents[3] = 5; }, "has parent 5; expected 0..2"},
+      {"root not first", [](Asset& a) { a.skeleton.parents[0] = 1; },
+       "joint 0 ('pelvis') has parent 1"},
+      {"second root", [](Asset& a) { a.skeleton.parents[3] = -1; },
+       "joint 3 ('joint_3') has parent -1"},
+      {"forward parent", [](Asset& a) { a.skeleton.parents[3] = 5; },
+       "has parent 5; expected 0..2"},
       {"rest_local shape", [](Asset& a) { a.skeleton.rest_local.conservativeResize(9, 3); },
        "skeleton rest_local has shape (9,3)"},
-      {"no vertices",
-       [](Asset& a) {
-         a.mesh.positions.resize(0, 3);
-       },
-       "mesh has no vertices"},
-      {"missing normals", [](Asset& a) { a.mesh.normals.resize(0, 3); }, "mesh normals has shape (0,3)"},
-      {"uv rows", [](Asset& a) { a.mesh.uvs.conservativeResize(5, 2); }, "mesh uvs has shape (5,2)"},
-      {"no triangles", [](Asset& a) { a.mesh.triangles.resize(0, 3); }, "mesh triangles have shape (0,3)"},
-      {"triangle index", [](Asset& a) { a.mesh.triangles(4, 2) = 12; }, "triangle index out of range"},
+      {"no vertices", [](Asset& a) { a.mesh.positions.resize(0, 3); }, "mesh has no vertices"},
+      {"missing normals", [](Asset& a) { a.mesh.normals.resize(0, 3); },
+       "mesh normals has shape (0,3)"},
+      {"uv rows", [](Asset& a) { a.mesh.uvs.conservativeResize(5, 2); },
+       "mesh uvs has shape (5,2)"},
+      {"no triangles", [](Asset& a) { a.mesh.triangles.resize(0, 3); },
+       "mesh triangles have shape (0,3)"},
+      {"triangle index", [](Asset& a) { a.mesh.triangles(4, 2) = 12; },
+       "triangle index out of range"},
       {"no influences",
        [](Asset& a) {
          a.mesh.joints.resize(12, 0);
          a.mesh.weights.resize(12, 0);
        },
        "no skin influences"},
-      {"weights shape", [](Asset& a) { a.mesh.weights.conservativeResize(12, 3); }, "mesh skin weights has shape"},
-      {"joint index", [](Asset& a) { a.mesh.joints(2, 1) = 10; }, "vertex 2 uses joint 10; expected 0..9"},
-      {"negative weight", [](Asset& a) { a.mesh.weights(5, 0) = -0.25f; }, "vertex 5 has skin weight"},
-      {"zero weights", [](Asset& a) { a.mesh.weights.row(4).setZero(); }, "vertex 4 has no positive skin weight"},
+      {"weights shape", [](Asset& a) { a.mesh.weights.conservativeResize(12, 3); },
+       "mesh skin weights has shape"},
+      {"joint index", [](Asset& a) { a.mesh.joints(2, 1) = 10; },
+       "vertex 2 uses joint 10; expected 0..9"},
+      {"negative weight", [](Asset& a) { a.mesh.weights(5, 0) = -0.25f; },
+       "vertex 5 has skin weight"},
+      {"zero weights", [](Asset& a) { a.mesh.weights.row(4).setZero(); },
+       "vertex 4 has no positive skin weight"},
       {"morph target shape", [](Asset& a) { a.mesh.morph_targets[1].deltas.resize(3, 3); },
        "morph target 'pose_joint_1_01' has shape (3,3)"},
       {"quantized above 1",
@@ -79,18 +86,22 @@ const std::vector<Rule>& rules() {
       {"negative time", [](Asset& a) { a.animations[0].times[0] = -0.5; }, "key time of frame 0"},
       {"equal times", [](Asset& a) { a.animations[0].times[2] = a.animations[0].times[1]; },
        "key time of frame 2"},
-      {"decreasing times", [](Asset& a) { a.animations[0].times[3] = 0.01; }, "strictly increasing"},
+      {"decreasing times", [](Asset& a) { a.animations[0].times[3] = 0.01; },
+       "strictly increasing"},
       {"times equal in float",
-       [](Asset& a) { a.animations[0].times[2] = a.animations[0].times[1] + 1e-12; }, "strictly increasing"},
+       [](Asset& a) { a.animations[0].times[2] = a.animations[0].times[1] + 1e-12; },
+       "strictly increasing"},
       {"rotation tracks", [](Asset& a) { a.animations[0].rotations.pop_back(); },
        "9 rotation tracks; expected 10"},
       {"rotation keys", [](Asset& a) { a.animations[0].rotations[6].pop_back(); },
        "joint 6 has 3 rotation keys; expected 4"},
-      {"zero rotation", [](Asset& a) { a.animations[0].rotations[2][1] = Eigen::Quaterniond(0, 0, 0, 0); },
+      {"zero rotation",
+       [](Asset& a) { a.animations[0].rotations[2][1] = Eigen::Quaterniond(0, 0, 0, 0); },
        "joint 2 has a zero or non-finite rotation"},
       {"root translations", [](Asset& a) { a.animations[0].root_translation.pop_back(); },
        "3 root translations; expected 4"},
-      {"morph weights shape", [](Asset& a) { a.animations[0].morph_weights.conservativeResize(4, 1); },
+      {"morph weights shape",
+       [](Asset& a) { a.animations[0].morph_weights.conservativeResize(4, 1); },
        "morph weights has shape (4,1); expected (4,2)"},
   };
   return r;
@@ -139,12 +150,13 @@ TEST(ValidateStructure, ClipWithoutMorphTargetsIsAccepted) {
   tinygltf::Model m;
   tinygltf::TinyGLTF loader;
   std::string err, warn;
-  ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(glb->data()),
-                                          unsigned(glb->size())))
+  ASSERT_TRUE(loader.LoadBinaryFromMemory(
+      &m, &err, &warn, reinterpret_cast<const unsigned char*>(glb->data()), unsigned(glb->size())))
       << err;
   ASSERT_EQ(m.animations.size(), 1u);
   EXPECT_EQ(m.animations[0].channels.size(), 11u);  // 10 rotations + the root translation
-  for (const tinygltf::AnimationChannel& c : m.animations[0].channels) EXPECT_NE(c.target_path, "weights");
+  for (const tinygltf::AnimationChannel& c : m.animations[0].channels)
+    EXPECT_NE(c.target_path, "weights");
 }
 
 }  // namespace

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "core/math/forward.h"
 #include "core/load/model_loader.h"
+#include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
@@ -92,7 +92,8 @@ void writePose(std::FILE* out, const smpl::BodyModel& model, const Eigen::Vector
   std::fprintf(out, ",\"bind_rest_world\":");
   writeQuaternions(out, engineRotations(world, bind));
   Eigen::VectorXd weights = basis.projection * features;
-  for (Eigen::Index k = 0; k < weights.size(); ++k) weights(k) = basis.scale[k] * weights(k) + basis.offset[k];
+  for (Eigen::Index k = 0; k < weights.size(); ++k)
+    weights(k) = basis.scale[k] * weights(k) + basis.offset[k];
   std::fprintf(out, ",\"basis_weights\":");
   writeNumbers(out, weights.data(), weights.size());
   std::fprintf(out, "}");

@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
-#include "tools/bench/synthetic_model.h"
 #include "core/demo/demo_body.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/pipeline.h"
 #include "plugins/writer.h"
+#include "tools/bench/synthetic_model.h"
 
 namespace smpl {
 namespace {
@@ -43,17 +43,19 @@ void report(const char* title, const BodyModel& model) {
     std::printf("  %s\n", fit.message().c_str());
     return;
   }
-  std::printf("  fit (K = P, Gram eigen-decomposition + QR): %.2f s; numerical rank %d\n", secondsSince(start),
-              static_cast<int>(fit->basis.cols()));
+  std::printf("  fit (K = P, Gram eigen-decomposition + QR): %.2f s; numerical rank %d\n",
+              secondsSince(start), static_cast<int>(fit->basis.cols()));
   start = std::chrono::steady_clock::now();
   const std::vector<BasisError> rows = basisErrorReport(model, {8, 16, 32, 64, 128, p}, 32, 1);
   std::printf("  error table: %.2f s\n", secondsSince(start));
-  std::printf("  %5s %14s %14s %12s %12s\n", "K", "max error mm", "mean error mm", "GLB bytes", "FBX bytes");
+  std::printf("  %5s %14s %14s %12s %12s\n", "K", "max error mm", "mean error mm", "GLB bytes",
+              "FBX bytes");
   std::printf("  %5s %14s %14s %12zu %12zu\n", "all", "0", "0", exportBytes(model, 0, "x.glb"),
               exportBytes(model, 0, "x.fbx"));
   for (const BasisError& e : rows)
-    std::printf("  %5d %14.4f %14.5f %12zu %12zu\n", e.components, 1e3 * e.max_error, 1e3 * e.mean_error,
-                exportBytes(model, e.components, "x.glb"), exportBytes(model, e.components, "x.fbx"));
+    std::printf("  %5d %14.4f %14.5f %12zu %12zu\n", e.components, 1e3 * e.max_error,
+                1e3 * e.mean_error, exportBytes(model, e.components, "x.glb"),
+                exportBytes(model, e.components, "x.fbx"));
 }
 
 }  // namespace
@@ -67,8 +69,10 @@ int main(int argc, char** argv) {
       "--corrective-basis K adds (32 poses, seed 1), the GLB/FBX sizes and the fit time per K.\n";
   if (argc == 2 && (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")))
     return std::printf("%s", usage), 0;
-  if (argc > 1) return std::fprintf(stderr, "smpl-basis-report: unknown argument '%s'\n%s", argv[1], usage), 1;
-  std::printf("smpl-basis-report: error the corrective basis adds (32 poses, seed 1), and export sizes\n");
+  if (argc > 1)
+    return std::fprintf(stderr, "smpl-basis-report: unknown argument '%s'\n%s", argv[1], usage), 1;
+  std::printf(
+      "smpl-basis-report: error the corrective basis adds (32 poses, seed 1), and export sizes\n");
   report("builtin", demoBody());
   report("synthetic SMPL", syntheticModel(ModelKind::Smpl, 6890, 10, 0, 1));
   return 0;

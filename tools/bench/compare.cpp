@@ -37,9 +37,12 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-const char* const kStandins[] = {"standin_smpl_py2.pkl", "standin_smpl_stored.npz", "standin_smpl_deflated.npz"};
+const char* const kStandins[] = {"standin_smpl_py2.pkl", "standin_smpl_stored.npz",
+                                 "standin_smpl_deflated.npz"};
 
-double seconds(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 double clockSeconds(clockid_t clock) {
   timespec ts{};
@@ -111,14 +114,19 @@ bool ensureStandins(const std::string& dir) {
   if (present) return true;
   std::printf("making the full-size stand-in in %s ...\n", dir.c_str());
   std::string out;
-  const int rc = run("/usr/bin/python3 " + quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/make_standin.py") + " " +
-                         quote(dir), &out);
-  if (rc != 0) std::fprintf(stderr, "smpl-bench: make_standin.py failed (%d): %s\n", rc, out.c_str());
+  const int rc = run("/usr/bin/python3 " +
+                         quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/make_standin.py") +
+                         " " + quote(dir),
+                     &out);
+  if (rc != 0)
+    std::fprintf(stderr, "smpl-bench: make_standin.py failed (%d): %s\n", rc, out.c_str());
   return rc == 0;
 }
 
-void row(const char* what, const std::string& ours, const std::string& peer, const std::string& ratio) {
-  std::printf("| %-44s | %-16s | %-26s | %-12s |\n", what, ours.c_str(), peer.c_str(), ratio.c_str());
+void row(const char* what, const std::string& ours, const std::string& peer,
+         const std::string& ratio) {
+  std::printf("| %-44s | %-16s | %-26s | %-12s |\n", what, ours.c_str(), peer.c_str(),
+              ratio.c_str());
 }
 
 std::string fmt(const char* format, double v) {
@@ -128,13 +136,15 @@ std::string fmt(const char* format, double v) {
 }
 
 void compareLoad(const std::string& dir) {
-  const char* names[] = {"load .pkl (py2 chumpy, latin-1 payloads)", "load .npz (stored)", "load .npz (deflated)"};
+  const char* names[] = {"load .pkl (py2 chumpy, latin-1 payloads)", "load .npz (stored)",
+                         "load .npz (deflated)"};
   for (int i = 0; i < 3; ++i) {
     const std::string path = (fs::path(dir) / kStandins[i]).string();
     const double mb = fs::file_size(path) / 1e6;
     (void)loadModel(path);  // warm: the file is in the page cache
     const Timing t = medianSeconds(5, [&] { (void)loadModel(path); });
-    row(names[i], fmt("%.0f", mb / t.wall) + fmt(" / %.0f MB/s", mb / t.cpu), fmt("%.1f MB file", mb), "");
+    row(names[i], fmt("%.0f", mb / t.wall) + fmt(" / %.0f MB/s", mb / t.cpu),
+        fmt("%.1f MB file", mb), "");
   }
 }
 
@@ -150,15 +160,22 @@ CliTimes compareCli(const std::string& dir) {
     const std::string out = (fs::path(dir) / (std::string("cli.") + ext)).string();
     std::string log;
     bool ok = true;
-    const Timing s = medianSeconds(3, [&] {
-      ok = ok && run(quote(SMPL_EXPORT_BIN) + " --model " + quote(model) + " --out " + quote(out), &log) == 0;
-    }, /*children=*/true);
+    const Timing s = medianSeconds(
+        3,
+        [&] {
+          ok = ok &&
+               run(quote(SMPL_EXPORT_BIN) + " --model " + quote(model) + " --out " + quote(out),
+                   &log) == 0;
+        },
+        /*children=*/true);
     if (!ok) std::fprintf(stderr, "smpl-bench: smpl-export failed: %s\n", log.c_str());
     (std::string(ext) == "glb" ? t.glb : t.fbx) = ok ? s : Timing();
     if (std::string(ext) == "glb") t.glb_path = out;
   }
-  row("whole-process CLI export, .pkl -> .glb", fmt("%.2f", t.glb.wall) + fmt(" / %.2f s", t.glb.cpu), "", "");
-  row("whole-process CLI export, .pkl -> .fbx", fmt("%.2f", t.fbx.wall) + fmt(" / %.2f s", t.fbx.cpu), "",
+  row("whole-process CLI export, .pkl -> .glb",
+      fmt("%.2f", t.glb.wall) + fmt(" / %.2f s", t.glb.cpu), "", "");
+  row("whole-process CLI export, .pkl -> .fbx",
+      fmt("%.2f", t.fbx.wall) + fmt(" / %.2f s", t.fbx.cpu), "",
       fmt("%.2f", t.fbx.wall / t.glb.wall) + fmt(" / %.2fx GLB", t.fbx.cpu / t.glb.cpu));
   return t;
 }
@@ -172,14 +189,17 @@ void compareWrite(const BodyModel& model) {
     const Writer* w = writerForPath(std::string("x") + ext);
     t[i++] = medianSeconds(5, [&] { (void)w->serialize(*asset, WriterOptions()); });
   }
-  row("in-process write GLB", fmt("%.0f", 1e3 * t[0].wall) + fmt(" / %.0f ms", 1e3 * t[0].cpu), "", "");
-  row("in-process write FBX (deflate on all cores)", fmt("%.0f", 1e3 * t[1].wall) + fmt(" / %.0f ms", 1e3 * t[1].cpu), "",
+  row("in-process write GLB", fmt("%.0f", 1e3 * t[0].wall) + fmt(" / %.0f ms", 1e3 * t[0].cpu), "",
+      "");
+  row("in-process write FBX (deflate on all cores)",
+      fmt("%.0f", 1e3 * t[1].wall) + fmt(" / %.0f ms", 1e3 * t[1].cpu), "",
       fmt("%.1f", t[1].wall / t[0].wall) + fmt(" / %.1fx GLB", t[1].cpu / t[0].cpu));
 }
 
 void compareForward(const BodyModel& model, const CompareOptions& o, const std::string& npz) {
   std::vector<Rotations> frames;
-  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), o.frames, 5)) frames.push_back(rotationsFromAxisAngle(pose));
+  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), o.frames, 5))
+    frames.push_back(rotationsFromAxisAngle(pose));
   Result<ShapedBody> body = shapeBody(model, Eigen::VectorXd());
   BatchInput in{&*body, &frames, nullptr, 1, o.batch};
   std::vector<double> cpu;
@@ -190,15 +210,19 @@ void compareForward(const BodyModel& model, const CompareOptions& o, const std::
   }
   const double ours = 1e3 * *std::min_element(cpu.begin(), cpu.end()) / o.frames;
   if (o.smplx.empty())
-    return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: absent (--smplx PATH)", "-");
+    return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours),
+               "smplx: absent (--smplx PATH)", "-");
   std::string out;
-  const int rc = run("OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/python3 " +
-                         quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/smplx_forward_time.py") + " " +
-                         quote(o.smplx) + " " + quote(npz) + " " + std::to_string(o.frames) + " " +
-                         std::to_string(o.batch), &out);
+  const int rc =
+      run("OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 /usr/bin/python3 " +
+              quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/smplx_forward_time.py") + " " +
+              quote(o.smplx) + " " + quote(npz) + " " + std::to_string(o.frames) + " " +
+              std::to_string(o.batch),
+          &out);
   const double peer = field(out, "SMPLX_FORWARD");
   if (rc != 0 || peer <= 0)
-    return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: failed to run", "-"),
+    return row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: failed to run",
+               "-"),
            (void)std::fprintf(stderr, "smpl-bench: smplx run failed: %s\n", out.c_str());
   row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), fmt("smplx/torch %.3f ms", peer),
       fmt("%.1fx", peer / ours));
@@ -210,9 +234,11 @@ void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::str
     row("Blender glTF exporter", "", "Blender: absent", "-");
     return row("Blender FBX exporter", "", "Blender: absent", "-");
   }
-  const int rc = run(quote(o.blender) + " -b --factory-startup --python-exit-code 1 --python " +
-                         quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/blender_export_time.py") + " -- " +
-                         quote(cli.glb_path) + " " + quote(dir), &out);
+  const int rc =
+      run(quote(o.blender) + " -b --factory-startup --python-exit-code 1 --python " +
+              quote(std::string(SMPL_SOURCE_DIR) + "/tools/bench/blender_export_time.py") + " -- " +
+              quote(cli.glb_path) + " " + quote(dir),
+          &out);
   const Timing gltf{field(out, "BLENDER_EXPORT gltf"), field(out, "BLENDER_EXPORT gltf", 1)},
       fbx{field(out, "BLENDER_EXPORT fbx"), field(out, "BLENDER_EXPORT fbx", 1)};
   if (rc != 0 || gltf.wall <= 0 || fbx.wall <= 0) {
@@ -220,10 +246,12 @@ void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::str
     row("Blender glTF exporter", "", "Blender: failed to run", "-");
     return row("Blender FBX exporter", "", "Blender: failed to run", "-");
   }
-  row("Blender glTF exporter vs whole-process CLI", fmt("%.2f", cli.glb.wall) + fmt(" / %.2f s", cli.glb.cpu),
+  row("Blender glTF exporter vs whole-process CLI",
+      fmt("%.2f", cli.glb.wall) + fmt(" / %.2f s", cli.glb.cpu),
       fmt("Blender 3.4 %.2f", gltf.wall) + fmt(" / %.2f s", gltf.cpu),
       fmt("%.1f", gltf.wall / cli.glb.wall) + fmt(" / %.1fx", gltf.cpu / cli.glb.cpu));
-  row("Blender FBX exporter vs whole-process CLI", fmt("%.2f", cli.fbx.wall) + fmt(" / %.2f s", cli.fbx.cpu),
+  row("Blender FBX exporter vs whole-process CLI",
+      fmt("%.2f", cli.fbx.wall) + fmt(" / %.2f s", cli.fbx.cpu),
       fmt("Blender 3.4 %.2f", fbx.wall) + fmt(" / %.2f s", fbx.cpu),
       fmt("%.1f", fbx.wall / cli.fbx.wall) + fmt(" / %.1fx", fbx.cpu / cli.fbx.cpu));
 }
@@ -231,16 +259,19 @@ void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::str
 }  // namespace
 
 int runCompare(const CompareOptions& o) {
-  const std::string dir = o.standin.empty() ? (fs::temp_directory_path() / "smpl-bench-standin").string() : o.standin;
+  const std::string dir =
+      o.standin.empty() ? (fs::temp_directory_path() / "smpl-bench-standin").string() : o.standin;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (!ensureStandins(dir)) return 1;
   const std::string npz = (fs::path(dir) / kStandins[1]).string();
   Result<BodyModel> model = loadModel(npz);
   if (!model) return std::fprintf(stderr, "smpl-bench: %s\n", model.message().c_str()), 1;
-  std::printf("Side by side: full-size SMPL stand-in (%lld vertices, %d pose features), %d forward frames.\n"
-              "Times are wall / CPU (user + system, all threads); ratios are peer / smpl-export.\n\n",
-              static_cast<long long>(model->numVertices()), model->numPoseFeatures(), o.frames);
+  std::printf(
+      "Side by side: full-size SMPL stand-in (%lld vertices, %d pose features), %d forward "
+      "frames.\n"
+      "Times are wall / CPU (user + system, all threads); ratios are peer / smpl-export.\n\n",
+      static_cast<long long>(model->numVertices()), model->numPoseFeatures(), o.frames);
   row("measure", "smpl-export", "peer", "ratio");
   std::printf("|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(18, '-').c_str(),
               std::string(28, '-').c_str(), std::string(14, '-').c_str());

@@ -10,8 +10,8 @@ struct CompareOptions {
   std::string smplx;    // checkout of github.com/vchoutas/smplx; empty: row says "absent"
   std::string standin;  // folder for the full-size stand-in files (made on first use)
   std::string blender = "blender";
-  int frames = 1024;    // forward-pass frames (both sides)
-  int batch = 64;       // frames per batched call (both sides)
+  int frames = 1024;  // forward-pass frames (both sides)
+  int batch = 64;     // frames per batched call (both sides)
 };
 
 // Prints the table to stdout; returns a process exit code (0, or 1 when the

@@ -30,24 +30,27 @@ bool reportRow(const BodyModel& model, int m) {
   o.max_influences = m;
   const Result<ShapedBody> body = shapeBody(model, Eigen::VectorXd());
   if (!body) return std::printf("  %s\n", body.message().c_str()), false;
-  Result<SkinError> t = measureSkinError(model, o, denseWeights(pruneWeights(model.weights, m), model.numJoints()),
-                                         kHeldOutPoses);
+  Result<SkinError> t = measureSkinError(
+      model, o, denseWeights(pruneWeights(model.weights, m), model.numJoints()), kHeldOutPoses);
   const auto start = std::chrono::steady_clock::now();
   o.skin_weights = SkinWeightMethod::Optimized;
   const SparseSkin fit = exportSkin(model, *body, o);
   const double seconds = secondsSince(start);
-  Result<SkinError> f = measureSkinError(model, o, denseWeights(fit, model.numJoints()), kHeldOutPoses);
+  Result<SkinError> f =
+      measureSkinError(model, o, denseWeights(fit, model.numJoints()), kHeldOutPoses);
   if (!t || !f) return std::printf("  %s\n", (t ? f.message() : t.message()).c_str()), false;
   const double gain = t->mean_m > 0 ? 100.0 * (1.0 - f->mean_m / t->mean_m) : 0.0;
-  std::printf("| %d | %.4f | %.4f | %.4f | %.4f | %.0f%% | %.0f |\n", m, t->mean_m * 1e3, t->max_m * 1e3,
-              f->mean_m * 1e3, f->max_m * 1e3, gain, seconds * 1e3);
+  std::printf("| %d | %.4f | %.4f | %.4f | %.4f | %.0f%% | %.0f |\n", m, t->mean_m * 1e3,
+              t->max_m * 1e3, f->mean_m * 1e3, f->max_m * 1e3, gain, seconds * 1e3);
   return true;
 }
 
 bool report(const std::string& title, const BodyModel& model) {
-  std::printf("\n%s: %d vertices, %d joints (held-out: %d poses)\n\n", title.c_str(), model.numVertices(),
-              model.numJoints(), kHeldOutPoses);
-  std::printf("| M | truncated mean mm | truncated max mm | optimized mean mm | optimized max mm | mean gain | fit ms |\n");
+  std::printf("\n%s: %d vertices, %d joints (held-out: %d poses)\n\n", title.c_str(),
+              model.numVertices(), model.numJoints(), kHeldOutPoses);
+  std::printf(
+      "| M | truncated mean mm | truncated max mm | optimized mean mm | optimized max mm | mean "
+      "gain | fit ms |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   bool ok = true;
   for (int m : {1, 2, 4, 8})

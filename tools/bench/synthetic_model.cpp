@@ -36,7 +36,9 @@ BodyModel syntheticModel(ModelKind kind, int n, int num_betas, int num_expressio
   Eigen::MatrixXd joints(k, 3);
   std::vector<Eigen::VectorXd> steps = samplePoses(k, 1, seed, 1.0);
   joints.row(0) << 0, 0.9, 0;
-  for (int j = 1; j < k; ++j) joints.row(j) = joints.row(m.parents[j]) + 0.15 * steps[0].segment<3>(3 * j).normalized().transpose();
+  for (int j = 1; j < k; ++j)
+    joints.row(j) =
+        joints.row(m.parents[j]) + 0.15 * steps[0].segment<3>(3 * j).normalized().transpose();
   std::vector<Eigen::VectorXd> r = samplePoses(n, 4, seed + 1, 1.0);  // 12n uniforms
   m.v_template.resize(n, 3);
   for (int i = 0; i < n; ++i) {
@@ -45,7 +47,8 @@ BodyModel syntheticModel(ModelKind kind, int n, int num_betas, int num_expressio
   }
   m.weights = Eigen::MatrixXd::Zero(n, k);
   for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < k; ++j) m.weights(i, j) = std::exp(-(m.v_template.row(i) - joints.row(j)).squaredNorm() / 0.01);
+    for (int j = 0; j < k; ++j)
+      m.weights(i, j) = std::exp(-(m.v_template.row(i) - joints.row(j)).squaredNorm() / 0.01);
     m.weights.row(i) /= m.weights.row(i).sum();
   }
   Eigen::MatrixXd dense_regressor = Eigen::MatrixXd::Zero(k, n);
@@ -63,11 +66,14 @@ BodyModel syntheticModel(ModelKind kind, int n, int num_betas, int num_expressio
     const int j = col / 9 + 1, parent = m.parents[j];
     for (int i = 0; i < n; ++i) {
       const double local = 0.02 * (m.weights(i, j) + m.weights(i, parent)) + 2e-5;
-      for (int c = 0; c < 3; ++c) m.posedirs(3 * i + c, col) = local * pr[0][(static_cast<int64_t>(col) * n + i) * 3 + c];
+      for (int c = 0; c < 3; ++c)
+        m.posedirs(3 * i + c, col) = local * pr[0][(static_cast<int64_t>(col) * n + i) * 3 + c];
     }
   }
-  std::vector<Eigen::VectorXd> sr = samplePoses(n * (num_betas + num_expressions), 1, seed + 3, 1.0);
-  Eigen::MatrixXd dirs = 0.01 * Eigen::Map<Eigen::MatrixXd>(sr[0].data(), 3 * n, num_betas + num_expressions);
+  std::vector<Eigen::VectorXd> sr =
+      samplePoses(n * (num_betas + num_expressions), 1, seed + 3, 1.0);
+  Eigen::MatrixXd dirs =
+      0.01 * Eigen::Map<Eigen::MatrixXd>(sr[0].data(), 3 * n, num_betas + num_expressions);
   m.shapedirs = dirs.leftCols(num_betas);
   m.exprdirs = dirs.rightCols(num_expressions);
   return m;

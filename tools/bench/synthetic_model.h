@@ -10,6 +10,7 @@
 
 namespace smpl {
 
-BodyModel syntheticModel(ModelKind kind, int num_vertices, int num_betas, int num_expressions, uint64_t seed);
+BodyModel syntheticModel(ModelKind kind, int num_vertices, int num_betas, int num_expressions,
+                         uint64_t seed);
 
 }  // namespace smpl

@@ -28,8 +28,8 @@
 #include <vector>
 
 #include "core/demo/demo_body.h"
-#include "core/math/forward.h"
 #include "core/load/model_loader.h"
+#include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
 #include "exporter/export_skin.h"
@@ -59,7 +59,8 @@ struct Output {
     data.insert(data.end(), values, values + count);
   }
   // Eigen matrix as C order (rows of the printed matrix).
-  void addMatrix(const std::string& name, const std::vector<int64_t>& shape, const Eigen::MatrixXd& m) {
+  void addMatrix(const std::string& name, const std::vector<int64_t>& shape,
+                 const Eigen::MatrixXd& m) {
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> row = m;
     add(name, shape, row.data());
   }
@@ -83,18 +84,27 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
     const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
     bool needs = a != "--dump-model";
     if (needs && !v) return *error = a + ": missing value", false;
-    if (a == "--model") o->model = v;
-    else if (a == "--out") o->out = v;
-    else if (a == "--betas") { if (!parseList(v, &o->betas)) return *error = "--betas: bad list", false; }
-    else if (a == "--max-influences") o->max_influences = std::strcmp(v, "all") ? std::atoi(v) : smpl::kAllInfluences;
+    if (a == "--model")
+      o->model = v;
+    else if (a == "--out")
+      o->out = v;
+    else if (a == "--betas") {
+      if (!parseList(v, &o->betas)) return *error = "--betas: bad list", false;
+    } else if (a == "--max-influences")
+      o->max_influences = std::strcmp(v, "all") ? std::atoi(v) : smpl::kAllInfluences;
     else if (a == "--skin-weights") {
-      if (std::strcmp(v, "truncated") && std::strcmp(v, "optimized")) return *error = "--skin-weights: bad value", false;
-      o->skin_weights = std::strcmp(v, "truncated") ? smpl::SkinWeightMethod::Optimized : smpl::SkinWeightMethod::Truncated;
-    }
-    else if (a == "--poses") o->poses = std::atoi(v);
-    else if (a == "--seed") o->seed = std::strtoull(v, nullptr, 10);
-    else if (a == "--dump-model") o->dump_model = true;
-    else return *error = "unknown option " + a, false;
+      if (std::strcmp(v, "truncated") && std::strcmp(v, "optimized"))
+        return *error = "--skin-weights: bad value", false;
+      o->skin_weights = std::strcmp(v, "truncated") ? smpl::SkinWeightMethod::Optimized
+                                                    : smpl::SkinWeightMethod::Truncated;
+    } else if (a == "--poses")
+      o->poses = std::atoi(v);
+    else if (a == "--seed")
+      o->seed = std::strtoull(v, nullptr, 10);
+    else if (a == "--dump-model")
+      o->dump_model = true;
+    else
+      return *error = "unknown option " + a, false;
     if (needs) ++i;
   }
   if (o->model.empty() || o->out.empty()) return *error = "--model and --out are required", false;
@@ -108,15 +118,19 @@ std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 bool writeFiles(const Options& o, const smpl::BodyModel& model, const Output& out) {
   std::ofstream bin(o.out + ".bin", std::ios::binary);
   // x86/ARM are little-endian, which the header promises; raw doubles are exact.
-  bin.write(reinterpret_cast<const char*>(out.data.data()), static_cast<std::streamsize>(out.data.size() * 8));
+  bin.write(reinterpret_cast<const char*>(out.data.data()),
+            static_cast<std::streamsize>(out.data.size() * 8));
   std::ofstream json(o.out + ".json");
   json << "{\"model_kind\":" << quoted(smpl::modelKindName(model.kind)) << ",\"joint_names\":[";
-  for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << quoted(model.joint_names[k]);
+  for (int k = 0; k < model.numJoints(); ++k)
+    json << (k ? "," : "") << quoted(model.joint_names[k]);
   json << "],\"parents\":[";
   for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << model.parents[k];
-  json << "],\"max_influences\":" << (o.max_influences == smpl::kAllInfluences ? model.numJoints() : o.max_influences) << ",\"skin_weights\":"
-       << quoted(smpl::skinWeightMethodName(o.skin_weights)) << ",\"num_vertices\":" << model.numVertices()
-       << ",\"num_joints\":" << model.numJoints() << ",\"arrays\":{" << out.arrays.str() << "}}\n";
+  json << "],\"max_influences\":"
+       << (o.max_influences == smpl::kAllInfluences ? model.numJoints() : o.max_influences)
+       << ",\"skin_weights\":" << quoted(smpl::skinWeightMethodName(o.skin_weights))
+       << ",\"num_vertices\":" << model.numVertices() << ",\"num_joints\":" << model.numJoints()
+       << ",\"arrays\":{" << out.arrays.str() << "}}\n";
   return bin.good() && json.good();
 }
 
@@ -129,8 +143,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "smpl-reference: %s\n", error.c_str());
     return 2;
   }
-  smpl::Result<smpl::BodyModel> model = o.model == "builtin" ? smpl::Result<smpl::BodyModel>(smpl::demoBody())
-                                                             : smpl::loadModel(o.model);
+  smpl::Result<smpl::BodyModel> model = o.model == "builtin"
+                                            ? smpl::Result<smpl::BodyModel>(smpl::demoBody())
+                                            : smpl::loadModel(o.model);
   if (!model) {
     std::fprintf(stderr, "smpl-reference: %s\n", model.message().c_str());
     return 3;
@@ -139,19 +154,22 @@ int main(int argc, char** argv) {
   smpl::ExportOptions export_options;
   export_options.max_influences = o.max_influences;
   export_options.skin_weights = o.skin_weights;
-  const Eigen::VectorXd betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(), Eigen::Index(o.betas.size()));
+  const Eigen::VectorXd betas =
+      Eigen::Map<const Eigen::VectorXd>(o.betas.data(), Eigen::Index(o.betas.size()));
   smpl::Result<smpl::ShapedBody> body = smpl::shapeBody(*model, betas);
   if (!body) {
     std::fprintf(stderr, "smpl-reference: %s\n", body.message().c_str());
     return 3;
   }
-  const Eigen::MatrixXd pruned = smpl::denseWeights(smpl::exportSkin(*model, *body, export_options), k);
+  const Eigen::MatrixXd pruned =
+      smpl::denseWeights(smpl::exportSkin(*model, *body, export_options), k);
   const std::vector<Eigen::VectorXd> poses = smpl::samplePoses(k, p, o.seed, 0.6);
   Eigen::MatrixXd pose_rows(p, 3 * k), features(p, 9 * (k - 1)), joints(p, 3 * k);
   Eigen::MatrixXd v_pruned(p, 3 * n), v_full(p, 3 * n), v_shaped, rest_joints;
   for (int i = 0; i < p; ++i) {
     smpl::ForwardInput in;
-    in.betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(), static_cast<Eigen::Index>(o.betas.size()));
+    in.betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(),
+                                                 static_cast<Eigen::Index>(o.betas.size()));
     in.rotations = smpl::rotationsFromAxisAngle(poses[i]);
     in.weights = &pruned;
     smpl::Result<smpl::ForwardResult> a = smpl::forward(*model, in);

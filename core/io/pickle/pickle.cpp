@@ -17,19 +17,22 @@ constexpr int kMaxDepth = 32;
 Result<bool> convert(Heap& heap, Ref r, Array* out, int depth);
 
 Result<bool> copyArray(Heap& heap, const Array& a, Array* out) {
-  PK_TRY(heap.charge(a.data.size() * sizeof(double) + a.strings.size() * sizeof(std::string), "array copy"));
+  PK_TRY(heap.charge(a.data.size() * sizeof(double) + a.strings.size() * sizeof(std::string),
+                     "array copy"));
   *out = a;
   return true;
 }
 
 // ---- nested lists of numbers ------------------------------------------------
 
-bool isNumber(const PyObj& o) { return o.kind == Kind::Int || o.kind == Kind::Bool || o.kind == Kind::Float; }
+bool isNumber(const PyObj& o) {
+  return o.kind == Kind::Int || o.kind == Kind::Bool || o.kind == Kind::Float;
+}
 bool isSequence(const PyObj& o) { return o.kind == Kind::List || o.kind == Kind::Tuple; }
 
 // Walk a rectangular nest of lists; false if ragged or not all numbers.
-bool flattenNumbers(const Heap& heap, Ref r, const std::vector<int64_t>& shape, size_t level, Array* out,
-                    bool* any_float, bool* all_bool) {
+bool flattenNumbers(const Heap& heap, Ref r, const std::vector<int64_t>& shape, size_t level,
+                    Array* out, bool* any_float, bool* all_bool) {
   const PyObj& o = heap.at(r);
   if (level == shape.size()) {
     if (!isNumber(o)) return false;
@@ -114,20 +117,34 @@ Result<bool> convert(Heap& heap, Ref r, Array* out, int depth) {
         return sparseToDense(heap, r, out);
       }
       return false;
-    case Kind::List: case Kind::Tuple: return listToArray(heap, r, out);
-    case Kind::Str: case Kind::Bytes: {
+    case Kind::List:
+    case Kind::Tuple:
+      return listToArray(heap, r, out);
+    case Kind::Str:
+    case Kind::Bytes: {
       const std::string_view text = o.bytes();
       PK_TRY(heap.charge(text.size(), "string"));
       a.strings.emplace_back(text);
       size_t chars = 0;  // numpy's <Un counts code points, not UTF-8 bytes
       for (char c : text) chars += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-      a.dtype = o.kind == Kind::Str ? "<U" + std::to_string(chars) : "|S" + std::to_string(text.size());
+      a.dtype =
+          o.kind == Kind::Str ? "<U" + std::to_string(chars) : "|S" + std::to_string(text.size());
       break;
     }
-    case Kind::Int: a.data.push_back(static_cast<double>(o.i)); a.dtype = "<i8"; break;
-    case Kind::Bool: a.data.push_back(static_cast<double>(o.i)); a.dtype = "|b1"; break;
-    case Kind::Float: a.data.push_back(o.f); a.dtype = "<f8"; break;
-    default: return false;
+    case Kind::Int:
+      a.data.push_back(static_cast<double>(o.i));
+      a.dtype = "<i8";
+      break;
+    case Kind::Bool:
+      a.data.push_back(static_cast<double>(o.i));
+      a.dtype = "|b1";
+      break;
+    case Kind::Float:
+      a.data.push_back(o.f);
+      a.dtype = "<f8";
+      break;
+    default:
+      return false;
   }
   *out = std::move(a);
   return true;
@@ -146,7 +163,8 @@ Result<ArrayDict> parsePickle(const uint8_t* data, size_t size, const std::strin
   Result<Ref> root = runPickle(heap, data, size, limits);
   if (!root) return root.error();
   if (heap.at(*root).kind != Kind::Dict) {
-    return heap.fail("pickle top level is " + typeName(heap, *root) + ", expected a dict of model arrays");
+    return heap.fail("pickle top level is " + typeName(heap, *root) +
+                     ", expected a dict of model arrays");
   }
   ArrayDict result;
   std::vector<Ref> items = heap.at(*root).items;

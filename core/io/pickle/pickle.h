@@ -23,8 +23,8 @@
 namespace smpl {
 
 struct PickleLimits {
-  uint64_t max_memo = 1u << 20;        // memo entries
-  uint64_t max_stack_depth = 1u << 16; // nesting
+  uint64_t max_memo = 1u << 20;         // memo entries
+  uint64_t max_stack_depth = 1u << 16;  // nesting
   uint64_t max_total_bytes = 4ull << 30;
 };
 

@@ -13,13 +13,13 @@
 #include <vector>
 
 #include "core/array.h"
-#include "core/memory_budget.h"
 #include "core/io/pickle/pickle.h"
+#include "core/memory_budget.h"
 #include "core/result.h"
 
-#define PK_TRY(expr)                   \
-  do {                                 \
-    ::smpl::Status pk_status_ = (expr); \
+#define PK_TRY(expr)                                 \
+  do {                                               \
+    ::smpl::Status pk_status_ = (expr);              \
     if (!pk_status_.ok()) return pk_status_.error(); \
   } while (0)
 
@@ -29,7 +29,16 @@ namespace pickle {
 using Ref = uint32_t;
 
 enum class Kind : uint8_t {
-  None, Bool, Int, Float, Str, Bytes, List, Tuple, Dict, Set,
+  None,
+  Bool,
+  Int,
+  Float,
+  Str,
+  Bytes,
+  List,
+  Tuple,
+  Dict,
+  Set,
   Global,    // an allowed class or function (see GlobalId)
   NdArray,   // numpy array or scalar; `array` set once its data is known
   Dtype,     // numpy.dtype
@@ -38,9 +47,24 @@ enum class Kind : uint8_t {
 
 // The only globals a pickle may name. Each is rebuilt by our own code.
 enum class GlobalId : uint8_t {
-  Reconstruct, NdArrayClass, DtypeClass, Scalar, FromBuffer, CodecsEncode,
-  Reconstructor, NewObj, Set, FrozenSet, ByteArray, Bytes, Object, OrderedDict,
-  Ch, Csc, Csr, Coo,
+  Reconstruct,
+  NdArrayClass,
+  DtypeClass,
+  Scalar,
+  FromBuffer,
+  CodecsEncode,
+  Reconstructor,
+  NewObj,
+  Set,
+  FrozenSet,
+  ByteArray,
+  Bytes,
+  Object,
+  OrderedDict,
+  Ch,
+  Csc,
+  Csr,
+  Coo,
 };
 
 struct DtypeInfo {
@@ -60,12 +84,14 @@ struct PyObj {
   // Read Str/Bytes contents through bytes(), never `text` directly.
   const char* view = nullptr;
   size_t view_size = 0;
-  std::string_view bytes() const { return view ? std::string_view(view, view_size) : std::string_view(text); }
-  std::vector<Ref> items;              // List/Tuple/Set; Dict as key,value,key,value; Instance ctor args
-  Ref state = 0;                       // Instance: BUILD state (0 = none; 0 is always the None object)
-  DtypeInfo dtype;                     // Dtype
-  std::unique_ptr<Array> array;        // NdArray
-  bool object_array = false;           // NdArray of dtype 'O': elements in `items`, shape in `object_shape`
+  std::string_view bytes() const {
+    return view ? std::string_view(view, view_size) : std::string_view(text);
+  }
+  std::vector<Ref> items;        // List/Tuple/Set; Dict as key,value,key,value; Instance ctor args
+  Ref state = 0;                 // Instance: BUILD state (0 = none; 0 is always the None object)
+  DtypeInfo dtype;               // Dtype
+  std::unique_ptr<Array> array;  // NdArray
+  bool object_array = false;  // NdArray of dtype 'O': elements in `items`, shape in `object_shape`
   std::vector<int64_t> object_shape;
 };
 
@@ -99,7 +125,8 @@ bool stringValue(const Heap& heap, Ref r, std::string* out);
 bool dictGet(const Heap& heap, Ref dict, const std::string& key, Ref* out);
 
 // Resolve "module" + "name" to an allowed global, or refuse it by name.
-Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module, const std::string& name);
+Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module,
+                               const std::string& name);
 
 // REDUCE: call an allowed global with a tuple of arguments.
 Result<Ref> callGlobal(Heap& heap, Ref callable, Ref args);

@@ -15,13 +15,14 @@ std::string descrOf(const DtypeInfo& d) {
   return std::string(1, d.endian) + d.kind + std::to_string(n);
 }
 
-Result<Array> decodeArray(Heap& heap, const DtypeInfo& d, const std::vector<int64_t>& shape, bool fortran,
-                          const uint8_t* data, size_t size) {
+Result<Array> decodeArray(Heap& heap, const DtypeInfo& d, const std::vector<int64_t>& shape,
+                          bool fortran, const uint8_t* data, size_t size) {
   const std::string descr = descrOf(d);
   Result<NumpyDtype> t = parseNumpyDescr(descr, heap.context());
   if (!t) return t.error();
   // A 'U' item size that is not a whole number of UTF-32 characters.
-  if (static_cast<int64_t>(t->itemsize) != d.itemsize) return heap.fail("unsupported dtype '" + descr + "'");
+  if (static_cast<int64_t>(t->itemsize) != d.itemsize)
+    return heap.fail("unsupported dtype '" + descr + "'");
   Result<size_t> bytes = numpyByteCount(*t, shape, heap.context());
   if (!bytes) return bytes.error();
   // On a size mismatch decodeNumpyArray reports it before allocating anything.

@@ -73,17 +73,19 @@ Result<Array> parseObjectNpy(const uint8_t* data, size_t size, const std::string
   if (!root) return root.error();
   const PyObj& o = heap.at(*root);
   if (o.kind != Kind::NdArray || !o.object_array)
-    return heap.fail("object .npy data is a " + typeName(heap, *root) + ", expected an object ndarray");
+    return heap.fail("object .npy data is a " + typeName(heap, *root) +
+                     ", expected an object ndarray");
   if (o.object_shape != h->shape)
-    return heap.fail("object array shape " + shapeString(o.object_shape) + " disagrees with the header's " +
-                     shapeString(h->shape));
+    return heap.fail("object array shape " + shapeString(o.object_shape) +
+                     " disagrees with the header's " + shapeString(h->shape));
   if (o.object_shape.empty()) {  // 0-d: one Python value
     const Ref value = o.items.at(0);
     if (heap.at(value).kind == Kind::Dict) return dictToArray(heap, value);
     Array a;
     Result<bool> got = toArray(heap, value, &a);
     if (!got) return got.error();
-    if (!*got) return heap.fail("object array holds a " + typeName(heap, value) + "; expected data");
+    if (!*got)
+      return heap.fail("object array holds a " + typeName(heap, value) + "; expected data");
     return a;
   }
   return elementsToArray(heap, o);

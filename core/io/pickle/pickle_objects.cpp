@@ -12,16 +12,18 @@ namespace pickle {
 
 // ---- heap ------------------------------------------------------------------
 
-Heap::Heap(const std::string& context, uint64_t byte_limit) : context_(context), limit_(byte_limit) {
+Heap::Heap(const std::string& context, uint64_t byte_limit)
+    : context_(context), limit_(byte_limit) {
   objs_.emplace_back();  // Ref 0: None
 }
 
 Status Heap::charge(uint64_t bytes, const char* what) {
   if (bytes > limit_ || used_ > limit_ - bytes) {
-    return fail(std::string(what) + " of " + std::to_string(bytes) + " bytes exceeds the limit of " +
-                std::to_string(limit_) + " bytes for one pickle");
+    return fail(std::string(what) + " of " + std::to_string(bytes) +
+                " bytes exceeds the limit of " + std::to_string(limit_) + " bytes for one pickle");
   }
-  if (Status st = budget_.add(bytes, context_, std::string("unpickling (") + what + ")"); !st) return st;
+  if (Status st = budget_.add(bytes, context_, std::string("unpickling (") + what + ")"); !st)
+    return st;
   used_ += bytes;
   return Status::success();
 }
@@ -36,19 +38,33 @@ Result<Ref> Heap::add(PyObj obj) {
 std::string typeName(const Heap& heap, Ref r) {
   const PyObj& o = heap.at(r);
   switch (o.kind) {
-    case Kind::None: return "None";
-    case Kind::Bool: return "bool";
-    case Kind::Int: return "int";
-    case Kind::Float: return "float";
-    case Kind::Str: return "str";
-    case Kind::Bytes: return "bytes";
-    case Kind::List: return "list";
-    case Kind::Tuple: return "tuple";
-    case Kind::Dict: return "dict";
-    case Kind::Set: return "set";
-    case Kind::NdArray: return "numpy.ndarray";
-    case Kind::Dtype: return "numpy.dtype";
-    case Kind::Global: case Kind::Instance: return o.text;
+    case Kind::None:
+      return "None";
+    case Kind::Bool:
+      return "bool";
+    case Kind::Int:
+      return "int";
+    case Kind::Float:
+      return "float";
+    case Kind::Str:
+      return "str";
+    case Kind::Bytes:
+      return "bytes";
+    case Kind::List:
+      return "list";
+    case Kind::Tuple:
+      return "tuple";
+    case Kind::Dict:
+      return "dict";
+    case Kind::Set:
+      return "set";
+    case Kind::NdArray:
+      return "numpy.ndarray";
+    case Kind::Dtype:
+      return "numpy.dtype";
+    case Kind::Global:
+    case Kind::Instance:
+      return o.text;
   }
   return "object";
 }
@@ -88,7 +104,8 @@ bool inPackage(const std::string& module, const std::string& package) {
 
 }  // namespace
 
-Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module, const std::string& name) {
+Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module,
+                               const std::string& name) {
   static const struct {
     const char* module;
     const char* name;
@@ -159,7 +176,8 @@ Result<Ref> encodeLatin1(Heap& heap, Ref text, Ref encoding) {
   if (heap.at(text).kind != Kind::Str || !stringValue(heap, encoding, &enc)) {
     return heap.fail("_codecs.encode needs (str, encoding)");
   }
-  std::transform(enc.begin(), enc.end(), enc.begin(), [](char c) { return c == '_' ? '-' : std::tolower(c); });
+  std::transform(enc.begin(), enc.end(), enc.begin(),
+                 [](char c) { return c == '_' ? '-' : std::tolower(c); });
   if (enc != "latin1" && enc != "latin-1" && enc != "iso-8859-1" && enc != "iso8859-1") {
     return heap.fail("_codecs.encode with encoding '" + enc.substr(0, 40) + "' is not supported");
   }
@@ -188,7 +206,8 @@ Result<Ref> fromIterable(Heap& heap, Kind kind, const std::vector<Ref>& args, co
   if (args.empty()) return makeObj(heap, kind);
   const PyObj& src = heap.at(args[0]);
   bool iterable = src.kind == Kind::List || src.kind == Kind::Tuple || src.kind == Kind::Set;
-  if (args.size() != 1 || !iterable) return heap.fail(std::string(name) + "() with these arguments is not supported");
+  if (args.size() != 1 || !iterable)
+    return heap.fail(std::string(name) + "() with these arguments is not supported");
   std::vector<Ref> items = src.items;
   if (kind != Kind::Dict) return makeObj(heap, kind, std::move(items));
   std::vector<Ref> pairs;
@@ -215,17 +234,27 @@ Result<Ref> makeByteArray(Heap& heap, const std::vector<Ref>& args) {
 
 Result<Ref> newObject(Heap& heap, Ref cls, Ref args) {
   const PyObj& c = heap.at(cls);
-  if (c.kind != Kind::Global) return heap.fail("NEWOBJ on a " + typeName(heap, cls) + " (not a class)");
+  if (c.kind != Kind::Global)
+    return heap.fail("NEWOBJ on a " + typeName(heap, cls) + " (not a class)");
   if (heap.at(args).kind != Kind::Tuple) return heap.fail("NEWOBJ arguments are not a tuple");
   GlobalId id = c.global;
   std::string name = c.text;
   switch (id) {
-    case GlobalId::Ch: case GlobalId::Csc: case GlobalId::Csr: case GlobalId::Coo: case GlobalId::Object:
+    case GlobalId::Ch:
+    case GlobalId::Csc:
+    case GlobalId::Csr:
+    case GlobalId::Coo:
+    case GlobalId::Object:
       return makeInstance(heap, id, name, heap.at(args).items);
-    case GlobalId::OrderedDict: return makeObj(heap, Kind::Dict);
-    case GlobalId::Set: case GlobalId::FrozenSet: return makeObj(heap, Kind::Set);
-    case GlobalId::ByteArray: return makeObj(heap, Kind::Bytes);
-    default: return heap.fail("cannot create a '" + name + "' object");
+    case GlobalId::OrderedDict:
+      return makeObj(heap, Kind::Dict);
+    case GlobalId::Set:
+    case GlobalId::FrozenSet:
+      return makeObj(heap, Kind::Set);
+    case GlobalId::ByteArray:
+      return makeObj(heap, Kind::Bytes);
+    default:
+      return heap.fail("cannot create a '" + name + "' object");
   }
 }
 
@@ -243,7 +272,8 @@ Result<Ref> reconstructArray(Heap& heap, const std::vector<Ref>& args) {
 // then sets the byte order (and the item size of string dtypes).
 Result<Ref> makeDtype(Heap& heap, const std::vector<Ref>& args) {
   std::string name;
-  if (args.empty() || !stringValue(heap, args[0], &name)) return heap.fail("numpy.dtype needs a type name");
+  if (args.empty() || !stringValue(heap, args[0], &name))
+    return heap.fail("numpy.dtype needs a type name");
   DtypeInfo d;
   size_t k = 0;
   if (!name.empty() && std::strchr("<>|=", name[0])) d.endian = name[k++];
@@ -260,7 +290,8 @@ Result<Ref> makeDtype(Heap& heap, const std::vector<Ref>& args) {
   }
   d.itemsize = d.kind == 'U' ? 4 * n : n;
   if (name[0] != '<' && name[0] != '>') {
-    bool one_byte = d.itemsize == 1 || d.kind == 'S' || d.kind == 'b' || d.kind == 'O' || d.kind == 'V';
+    bool one_byte =
+        d.itemsize == 1 || d.kind == 'S' || d.kind == 'b' || d.kind == 'O' || d.kind == 'V';
     d.endian = one_byte ? '|' : '<';
   }
   if (d.endian == '=') d.endian = '<';
@@ -292,19 +323,21 @@ Result<Ref> arrayObject(Heap& heap, Result<Array> array) {
 
 // numpy.core.multiarray.scalar(dtype, payload): a numpy scalar, kept as a 0-d array.
 Result<Ref> makeScalar(Heap& heap, const std::vector<Ref>& args) {
-  if (args.size() != 2 || heap.at(args[0]).kind != Kind::Dtype) return heap.fail("scalar() needs (dtype, data)");
+  if (args.size() != 2 || heap.at(args[0]).kind != Kind::Dtype)
+    return heap.fail("scalar() needs (dtype, data)");
   DtypeInfo d = heap.at(args[0]).dtype;
   if (d.kind == 'O') return heap.fail("object scalars are not supported");
   if (heap.at(args[1]).kind != Kind::Bytes) return heap.fail("scalar() data is not bytes");
   const std::string_view raw = heap.at(args[1]).bytes();
-  return arrayObject(heap, decodeArray(heap, d, {}, false, reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
+  return arrayObject(heap, decodeArray(heap, d, {}, false,
+                                       reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
 }
 
 // numpy.core.numeric._frombuffer(buffer, dtype, shape, order): protocol 5 arrays.
 Result<Ref> fromBuffer(Heap& heap, const std::vector<Ref>& args) {
   std::string order;
-  if (args.size() != 4 || heap.at(args[0]).kind != Kind::Bytes || heap.at(args[1]).kind != Kind::Dtype ||
-      !stringValue(heap, args[3], &order)) {
+  if (args.size() != 4 || heap.at(args[0]).kind != Kind::Bytes ||
+      heap.at(args[1]).kind != Kind::Dtype || !stringValue(heap, args[3], &order)) {
     return heap.fail("_frombuffer needs (buffer, dtype, shape, order)");
   }
   Result<std::vector<int64_t>> shape = shapeOf(heap, args[2]);
@@ -319,16 +352,21 @@ Result<Ref> fromBuffer(Heap& heap, const std::vector<Ref>& args) {
 
 Result<Ref> callGlobal(Heap& heap, Ref callable, Ref args_ref) {
   const PyObj& c = heap.at(callable);
-  if (c.kind != Kind::Global) return heap.fail("REDUCE on a " + typeName(heap, callable) + " (not callable)");
+  if (c.kind != Kind::Global)
+    return heap.fail("REDUCE on a " + typeName(heap, callable) + " (not callable)");
   if (heap.at(args_ref).kind != Kind::Tuple) return heap.fail("REDUCE arguments are not a tuple");
   GlobalId id = c.global;
   std::string name = c.text;
   std::vector<Ref> args = heap.at(args_ref).items;
   switch (id) {
-    case GlobalId::Reconstruct: return reconstructArray(heap, args);
-    case GlobalId::DtypeClass: return makeDtype(heap, args);
-    case GlobalId::Scalar: return makeScalar(heap, args);
-    case GlobalId::FromBuffer: return fromBuffer(heap, args);
+    case GlobalId::Reconstruct:
+      return reconstructArray(heap, args);
+    case GlobalId::DtypeClass:
+      return makeDtype(heap, args);
+    case GlobalId::Scalar:
+      return makeScalar(heap, args);
+    case GlobalId::FromBuffer:
+      return fromBuffer(heap, args);
     case GlobalId::CodecsEncode:
       if (args.size() != 2) return heap.fail("_codecs.encode needs (str, encoding)");
       return encodeLatin1(heap, args[0], args[1]);
@@ -344,16 +382,24 @@ Result<Ref> callGlobal(Heap& heap, Ref callable, Ref args_ref) {
       if (!rest) return rest;
       return newObject(heap, args[0], *rest);
     }
-    case GlobalId::Set: return fromIterable(heap, Kind::Set, args, "set");
-    case GlobalId::FrozenSet: return fromIterable(heap, Kind::Set, args, "frozenset");
-    case GlobalId::OrderedDict: return fromIterable(heap, Kind::Dict, args, "OrderedDict");
-    case GlobalId::ByteArray: return makeByteArray(heap, args);
+    case GlobalId::Set:
+      return fromIterable(heap, Kind::Set, args, "set");
+    case GlobalId::FrozenSet:
+      return fromIterable(heap, Kind::Set, args, "frozenset");
+    case GlobalId::OrderedDict:
+      return fromIterable(heap, Kind::Dict, args, "OrderedDict");
+    case GlobalId::ByteArray:
+      return makeByteArray(heap, args);
     case GlobalId::Bytes:
       if (!args.empty()) return heap.fail("bytes() with arguments is not supported");
       return makeObj(heap, Kind::Bytes);
-    case GlobalId::Ch: case GlobalId::Csc: case GlobalId::Csr: case GlobalId::Coo:
+    case GlobalId::Ch:
+    case GlobalId::Csc:
+    case GlobalId::Csr:
+    case GlobalId::Coo:
       return makeInstance(heap, id, name, std::move(args));
-    default: return heap.fail("calling '" + name + "' is not supported");
+    default:
+      return heap.fail("calling '" + name + "' is not supported");
   }
 }
 
@@ -369,11 +415,12 @@ Status setObjectArrayState(Heap& heap, Ref obj, Ref shape_ref, const DtypeInfo& 
   Result<std::vector<int64_t>> shape = shapeOf(heap, shape_ref);
   if (!shape) return shape.error();
   uint64_t count = 1;  // saturates at 2^40 (more elements than any list can hold)
-  for (int64_t n : *shape) count = std::min<uint64_t>(count * std::min<uint64_t>(n, 1ull << 40), 1ull << 40);
+  for (int64_t n : *shape)
+    count = std::min<uint64_t>(count * std::min<uint64_t>(n, 1ull << 40), 1ull << 40);
   std::vector<Ref> items = heap.at(raw_ref).items;
   if (count != items.size())
-    return heap.fail("object array of shape " + shapeString(*shape) + " holds " + std::to_string(items.size()) +
-                     " elements");
+    return heap.fail("object array of shape " + shapeString(*shape) + " holds " +
+                     std::to_string(items.size()) + " elements");
   PyObj& o = heap.at(obj);
   o.object_array = true;
   o.object_shape = std::move(*shape);
@@ -389,29 +436,34 @@ Status setArrayState(Heap& heap, Ref obj, Ref state) {
     return heap.fail("ndarray state is not a (version, shape, dtype, fortran, data) tuple");
   }
   size_t o = t.items.size() - 4;
-  Ref shape_ref = t.items[o], dtype_ref = t.items[o + 1], fortran_ref = t.items[o + 2], raw_ref = t.items[o + 3];
+  Ref shape_ref = t.items[o], dtype_ref = t.items[o + 1], fortran_ref = t.items[o + 2],
+      raw_ref = t.items[o + 3];
   if (heap.at(dtype_ref).kind != Kind::Dtype) return heap.fail("ndarray state has no dtype");
   DtypeInfo d = heap.at(dtype_ref).dtype;
   const PyObj& raw = heap.at(raw_ref);
-  if (d.kind == 'O' || raw.kind == Kind::List) return setObjectArrayState(heap, obj, shape_ref, d, raw_ref);
-  if (raw.kind != Kind::Bytes) return heap.fail("ndarray data is a " + typeName(heap, raw_ref) + ", expected bytes");
+  if (d.kind == 'O' || raw.kind == Kind::List)
+    return setObjectArrayState(heap, obj, shape_ref, d, raw_ref);
+  if (raw.kind != Kind::Bytes)
+    return heap.fail("ndarray data is a " + typeName(heap, raw_ref) + ", expected bytes");
   Result<std::vector<int64_t>> shape = shapeOf(heap, shape_ref);
   if (!shape) return shape.error();
   const PyObj& fortran = heap.at(fortran_ref);
   bool is_fortran = (fortran.kind == Kind::Bool || fortran.kind == Kind::Int) && fortran.i != 0;
-  Result<Array> array = decodeArray(heap, d, *shape, is_fortran,
-                                    reinterpret_cast<const uint8_t*>(raw.bytes().data()), raw.bytes().size());
+  Result<Array> array =
+      decodeArray(heap, d, *shape, is_fortran, reinterpret_cast<const uint8_t*>(raw.bytes().data()),
+                  raw.bytes().size());
   if (!array) return array.error();
   heap.at(obj).array = std::make_unique<Array>(std::move(*array));
   return Status::success();
 }
 
-// dtype.__setstate__((version, endian, subarray, names, fields, elsize, alignment, flags[, metadata])).
+// dtype.__setstate__((version, endian, subarray, names, fields, elsize, alignment, flags[,
+// metadata])).
 Status setDtypeState(Heap& heap, Ref obj, Ref state) {
   const PyObj& t = heap.at(state);
   std::string endian;
-  if (t.kind != Kind::Tuple || t.items.size() < 2 || !stringValue(heap, t.items[1], &endian) || endian.size() != 1 ||
-      !std::strchr("<>|=", endian[0])) {
+  if (t.kind != Kind::Tuple || t.items.size() < 2 || !stringValue(heap, t.items[1], &endian) ||
+      endian.size() != 1 || !std::strchr("<>|=", endian[0])) {
     return heap.fail("numpy dtype state is not supported");
   }
   if ((t.items.size() > 2 && heap.at(t.items[2]).kind != Kind::None) ||
@@ -435,7 +487,8 @@ Status buildObject(Heap& heap, Ref obj, Ref state) {
     case Kind::NdArray:
       if (o.array || o.object_array) return heap.fail("BUILD on an ndarray that already has data");
       return setArrayState(heap, obj, state);
-    case Kind::Dtype: return setDtypeState(heap, obj, state);
+    case Kind::Dtype:
+      return setDtypeState(heap, obj, state);
     case Kind::Instance: {
       // (dict_state, slot_state) from objects with __slots__: keep the dict.
       const PyObj& s = heap.at(state);
@@ -446,7 +499,8 @@ Status buildObject(Heap& heap, Ref obj, Ref state) {
       heap.at(obj).state = state;
       return Status::success();
     }
-    default: return heap.fail("BUILD on a " + typeName(heap, obj) + " is not supported");
+    default:
+      return heap.fail("BUILD on a " + typeName(heap, obj) + " is not supported");
   }
 }
 

@@ -44,7 +44,9 @@ std::string numberText(double v) {
 }
 
 // A stored index: integral and in [0, limit).
-bool validIndex(double v, int64_t limit) { return v >= 0 && v < static_cast<double>(limit) && v == std::floor(v); }
+bool validIndex(double v, int64_t limit) {
+  return v >= 0 && v < static_cast<double>(limit) && v == std::floor(v);
+}
 
 Result<SparseParts> sparseParts(Heap& heap, Ref state, GlobalId format, const std::string& name) {
   SparseParts p;
@@ -53,8 +55,8 @@ Result<SparseParts> sparseParts(Heap& heap, Ref state, GlobalId format, const st
     p.indices = arrayEntry(heap, state, "row");
     p.indptr = arrayEntry(heap, state, "col");
     Ref coords;
-    if (!p.indices && dictGet(heap, state, "coords", &coords) && heap.at(coords).kind == Kind::Tuple &&
-        heap.at(coords).items.size() == 2) {
+    if (!p.indices && dictGet(heap, state, "coords", &coords) &&
+        heap.at(coords).kind == Kind::Tuple && heap.at(coords).items.size() == 2) {
       const PyObj& r = heap.at(heap.at(coords).items[0]);
       const PyObj& c = heap.at(heap.at(coords).items[1]);
       if (r.kind == Kind::NdArray && c.kind == Kind::NdArray) {
@@ -80,7 +82,8 @@ Result<SparseParts> sparseParts(Heap& heap, Ref state, GlobalId format, const st
 }
 
 // csc: indptr over columns, indices are rows; csr: the transpose.
-Status fillCompressed(Heap& heap, const SparseParts& p, bool csc, const std::string& name, Array* out) {
+Status fillCompressed(Heap& heap, const SparseParts& p, bool csc, const std::string& name,
+                      Array* out) {
   int64_t major = csc ? p.cols : p.rows, minor = csc ? p.rows : p.cols;
   const std::vector<double>& ptr = p.indptr->data;
   const std::vector<double>& idx = p.indices->data;
@@ -95,8 +98,8 @@ Status fillCompressed(Heap& heap, const SparseParts& p, bool csc, const std::str
     }
   }
   if (ptr[major] > static_cast<double>(idx.size())) {
-    return heap.fail(name + " indptr ends at " + std::to_string(static_cast<int64_t>(ptr[major])) + " but has " +
-                     std::to_string(idx.size()) + " indices");
+    return heap.fail(name + " indptr ends at " + std::to_string(static_cast<int64_t>(ptr[major])) +
+                     " but has " + std::to_string(idx.size()) + " indices");
   }
   for (int64_t j = 0; j < major; ++j) {
     for (int64_t k = static_cast<int64_t>(ptr[j]); k < static_cast<int64_t>(ptr[j + 1]); ++k) {
@@ -120,7 +123,8 @@ Status fillCoo(Heap& heap, const SparseParts& p, const std::string& name, Array*
     if (!validIndex(rows[k], p.rows) || !validIndex(cols[k], p.cols)) {
       return heap.fail(name + " entry " + std::to_string(k) + " is out of range");
     }
-    out->data[static_cast<int64_t>(rows[k]) * p.cols + static_cast<int64_t>(cols[k])] += p.data->data[k];
+    out->data[static_cast<int64_t>(rows[k]) * p.cols + static_cast<int64_t>(cols[k])] +=
+        p.data->data[k];
   }
   return Status::success();
 }
@@ -135,15 +139,17 @@ Result<bool> sparseToDense(Heap& heap, Ref r, Array* out) {
   if (!parts) return parts.error();
   const SparseParts& p = *parts;
   if (p.cols != 0 && p.rows > (int64_t(1) << 50) / p.cols) {
-    return heap.fail(name + " shape (" + std::to_string(p.rows) + "," + std::to_string(p.cols) + ") is too large");
+    return heap.fail(name + " shape (" + std::to_string(p.rows) + "," + std::to_string(p.cols) +
+                     ") is too large");
   }
   PK_TRY(heap.charge(static_cast<uint64_t>(p.rows * p.cols) * sizeof(double), "dense matrix"));
   Array a;
   a.shape = {p.rows, p.cols};
   a.dtype = p.data->dtype;
   a.data.assign(static_cast<size_t>(p.rows * p.cols), 0.0);
-  Status filled = format == GlobalId::Coo ? fillCoo(heap, p, name, &a)
-                                          : fillCompressed(heap, p, format == GlobalId::Csc, name, &a);
+  Status filled = format == GlobalId::Coo
+                      ? fillCoo(heap, p, name, &a)
+                      : fillCompressed(heap, p, format == GlobalId::Csc, name, &a);
   if (!filled) return filled.error();
   *out = std::move(a);
   return true;

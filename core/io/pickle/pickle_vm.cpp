@@ -241,7 +241,8 @@ Status Vm::step(uint8_t op) {
   if (!handled) {
     char hex[8];
     std::snprintf(hex, sizeof(hex), "0x%02x", op);
-    return fail(std::string("unknown pickle opcode ") + hex + " at byte " + std::to_string(op_pos_));
+    return fail(std::string("unknown pickle opcode ") + hex + " at byte " +
+                std::to_string(op_pos_));
   }
   return Status::success();
 }
@@ -325,15 +326,34 @@ Status Vm::textString(const std::string& line) {
     }
     char e = s[++k];
     switch (e) {
-      case 'n': out.push_back('\n'); break;
-      case 't': out.push_back('\t'); break;
-      case 'r': out.push_back('\r'); break;
-      case 'a': out.push_back('\a'); break;
-      case 'b': out.push_back('\b'); break;
-      case 'f': out.push_back('\f'); break;
-      case 'v': out.push_back('\v'); break;
-      case '\\': case '\'': case '"': out.push_back(e); break;
-      case '\n': break;
+      case 'n':
+        out.push_back('\n');
+        break;
+      case 't':
+        out.push_back('\t');
+        break;
+      case 'r':
+        out.push_back('\r');
+        break;
+      case 'a':
+        out.push_back('\a');
+        break;
+      case 'b':
+        out.push_back('\b');
+        break;
+      case 'f':
+        out.push_back('\f');
+        break;
+      case 'v':
+        out.push_back('\v');
+        break;
+      case '\\':
+      case '\'':
+      case '"':
+        out.push_back(e);
+        break;
+      case '\n':
+        break;
       case 'x': {
         int hi = k + 1 < end ? hexDigit(s[k + 1]) : -1;
         int lo = k + 2 < end ? hexDigit(s[k + 2]) : -1;
@@ -368,7 +388,8 @@ Status Vm::textUnicode(const std::string& line) {
   for (size_t k = 0; k < line.size(); ++k) {
     unsigned char c = static_cast<unsigned char>(line[k]);
     size_t digits = 0;
-    if (c == '\\' && k + 1 < line.size()) digits = line[k + 1] == 'u' ? 4 : line[k + 1] == 'U' ? 8 : 0;
+    if (c == '\\' && k + 1 < line.size())
+      digits = line[k + 1] == 'u' ? 4 : line[k + 1] == 'U' ? 8 : 0;
     if (!digits) {
       appendUtf8(&out, c);
       continue;
@@ -379,10 +400,12 @@ Status Vm::textUnicode(const std::string& line) {
     uint32_t cp = 0;
     for (size_t d = 0; d < digits; ++d) {
       int h = hexDigit(line[k + 2 + d]);
-      if (h < 0) return fail("UNICODE opcode at byte " + std::to_string(op_pos_) + " has a bad escape");
+      if (h < 0)
+        return fail("UNICODE opcode at byte " + std::to_string(op_pos_) + " has a bad escape");
       cp = cp * 16 + h;
     }
-    if (cp > 0x10FFFF) return fail("UNICODE opcode at byte " + std::to_string(op_pos_) + " has a bad code point");
+    if (cp > 0x10FFFF)
+      return fail("UNICODE opcode at byte " + std::to_string(op_pos_) + " has a bad code point");
     appendUtf8(&out, cp);
     k += 1 + digits;
   }
@@ -429,25 +452,31 @@ Status Vm::stepBinary(uint8_t op, bool* handled) {
     case '.': {  // STOP
       Result<Ref> r = pop();
       if (!r) return r.error();
-      if (!marks_.empty()) return fail("unbalanced MARK at STOP (byte " + std::to_string(op_pos_) + ")");
+      if (!marks_.empty())
+        return fail("unbalanced MARK at STOP (byte " + std::to_string(op_pos_) + ")");
       result_ = *r;
       stopped_ = true;
       return Status::success();
     }
-    case 'N': return push(0);
-    case 0x88: return pushInt(1, Kind::Bool);
-    case 0x89: return pushInt(0, Kind::Bool);
+    case 'N':
+      return push(0);
+    case 0x88:
+      return pushInt(1, Kind::Bool);
+    case 0x89:
+      return pushInt(0, Kind::Bool);
     case 'J': {
       Result<uint64_t> v = readUint(4);
       if (!v) return v.error();
       return pushInt(static_cast<int32_t>(static_cast<uint32_t>(*v)));
     }
-    case 'K': case 'M': {
+    case 'K':
+    case 'M': {
       Result<uint64_t> v = readUint(op == 'K' ? 1 : 2);
       if (!v) return v.error();
       return pushInt(static_cast<int64_t>(*v));
     }
-    case 0x8a: case 0x8b: {  // LONG1, LONG4
+    case 0x8a:
+    case 0x8b: {  // LONG1, LONG4
       Result<uint64_t> n = readUint(op == 0x8a ? 1 : 4);
       if (!n) return n.error();
       return longBinary(*n);
@@ -461,7 +490,8 @@ Status Vm::stepBinary(uint8_t op, bool* handled) {
       std::memcpy(&v, &bits, 8);
       return pushFloat(v);
     }
-    default: return stepPayload(op, handled);
+    default:
+      return stepPayload(op, handled);
   }
 }
 
@@ -471,19 +501,58 @@ Status Vm::stepPayload(uint8_t op, bool* handled) {
   Kind kind = Kind::Bytes;
   const char* name = "";
   switch (op) {
-    case 'U': len_bytes = 1; name = "SHORT_BINSTRING"; break;
-    case 'T': len_bytes = 4; name = "BINSTRING"; break;
-    case 'C': len_bytes = 1; name = "SHORT_BINBYTES"; break;
-    case 'B': len_bytes = 4; name = "BINBYTES"; break;
-    case 0x8e: len_bytes = 8; name = "BINBYTES8"; break;
-    case 0x96: len_bytes = 8; name = "BYTEARRAY8"; break;
-    case 0x8c: len_bytes = 1; kind = Kind::Str; name = "SHORT_BINUNICODE"; break;
-    case 'X': len_bytes = 4; kind = Kind::Str; name = "BINUNICODE"; break;
-    case 0x8d: len_bytes = 8; kind = Kind::Str; name = "BINUNICODE8"; break;
-    case 0x97: case 0x98: return fail("out-of-band pickle buffers are not supported");
-    case 'P': case 'Q': return fail("persistent IDs are not supported (not model data)");
-    case 0x82: case 0x83: case 0x84: return fail("pickle extension codes are not supported");
-    default: *handled = false; return Status::success();
+    case 'U':
+      len_bytes = 1;
+      name = "SHORT_BINSTRING";
+      break;
+    case 'T':
+      len_bytes = 4;
+      name = "BINSTRING";
+      break;
+    case 'C':
+      len_bytes = 1;
+      name = "SHORT_BINBYTES";
+      break;
+    case 'B':
+      len_bytes = 4;
+      name = "BINBYTES";
+      break;
+    case 0x8e:
+      len_bytes = 8;
+      name = "BINBYTES8";
+      break;
+    case 0x96:
+      len_bytes = 8;
+      name = "BYTEARRAY8";
+      break;
+    case 0x8c:
+      len_bytes = 1;
+      kind = Kind::Str;
+      name = "SHORT_BINUNICODE";
+      break;
+    case 'X':
+      len_bytes = 4;
+      kind = Kind::Str;
+      name = "BINUNICODE";
+      break;
+    case 0x8d:
+      len_bytes = 8;
+      kind = Kind::Str;
+      name = "BINUNICODE8";
+      break;
+    case 0x97:
+    case 0x98:
+      return fail("out-of-band pickle buffers are not supported");
+    case 'P':
+    case 'Q':
+      return fail("persistent IDs are not supported (not model data)");
+    case 0x82:
+    case 0x83:
+    case 0x84:
+      return fail("pickle extension codes are not supported");
+    default:
+      *handled = false;
+      return Status::success();
   }
   Result<uint64_t> n = readUint(len_bytes);
   if (!n) return n.error();
@@ -509,17 +578,23 @@ Status Vm::stepText(uint8_t op, bool* handled) {
   Result<std::string> line = readLine();
   if (!line) return line.error();
   switch (op) {
-    case 'I': return textInt(*line, false);
-    case 'L': return textInt(*line, true);
-    case 'F': return textFloat(*line);
-    case 'S': return textString(*line);
-    default: return textUnicode(*line);
+    case 'I':
+      return textInt(*line, false);
+    case 'L':
+      return textInt(*line, true);
+    case 'F':
+      return textFloat(*line);
+    case 'S':
+      return textString(*line);
+    default:
+      return textUnicode(*line);
   }
 }
 
 Status Vm::appendItems(Ref target, const std::vector<Ref>& items) {
   PyObj& t = heap_.at(target);
-  if (t.kind != Kind::List) return fail("APPEND to a " + typeName(heap_, target) + " is not supported");
+  if (t.kind != Kind::List)
+    return fail("APPEND to a " + typeName(heap_, target) + " is not supported");
   PK_TRY(heap_.charge(items.size() * sizeof(Ref), "list"));
   t.items.insert(t.items.end(), items.begin(), items.end());
   return Status::success();
@@ -527,8 +602,10 @@ Status Vm::appendItems(Ref target, const std::vector<Ref>& items) {
 
 Status Vm::setItems(Ref target, const std::vector<Ref>& items) {
   PyObj& t = heap_.at(target);
-  if (t.kind != Kind::Dict) return fail("SETITEM on a " + typeName(heap_, target) + " is not supported");
-  if (items.size() % 2) return fail("SETITEMS with an odd number of items at byte " + std::to_string(op_pos_));
+  if (t.kind != Kind::Dict)
+    return fail("SETITEM on a " + typeName(heap_, target) + " is not supported");
+  if (items.size() % 2)
+    return fail("SETITEMS with an odd number of items at byte " + std::to_string(op_pos_));
   PK_TRY(heap_.charge(items.size() * sizeof(Ref), "dict"));
   t.items.insert(t.items.end(), items.begin(), items.end());
   return Status::success();
@@ -561,11 +638,17 @@ Status Vm::stepContainers(uint8_t op, bool* handled) {
       if (!r) return r.error();
       return push(*r);
     }
-    case ']': return pushContainer(Kind::List, {});
-    case ')': return pushContainer(Kind::Tuple, {});
-    case '}': return pushContainer(Kind::Dict, {});
-    case 0x8f: return pushContainer(Kind::Set, {});
-    case 0x85: case 0x86: case 0x87: {
+    case ']':
+      return pushContainer(Kind::List, {});
+    case ')':
+      return pushContainer(Kind::Tuple, {});
+    case '}':
+      return pushContainer(Kind::Dict, {});
+    case 0x8f:
+      return pushContainer(Kind::Set, {});
+    case 0x85:
+    case 0x86:
+    case 0x87: {
       std::vector<Ref> items(op - 0x84);
       for (size_t k = items.size(); k-- > 0;) {
         Result<Ref> r = pop();
@@ -574,7 +657,8 @@ Status Vm::stepContainers(uint8_t op, bool* handled) {
       }
       return pushContainer(Kind::Tuple, std::move(items));
     }
-    default: break;
+    default:
+      break;
   }
   if (op == 'a' || op == 's') {
     std::vector<Ref> items(op == 'a' ? 1 : 2);
@@ -594,21 +678,27 @@ Status Vm::stepContainers(uint8_t op, bool* handled) {
   Result<std::vector<Ref>> items = popMark();
   if (!items) return items.error();
   switch (op) {
-    case 'l': return pushContainer(Kind::List, std::move(*items));
-    case 't': return pushContainer(Kind::Tuple, std::move(*items));
-    case 0x91: return pushContainer(Kind::Set, std::move(*items));
+    case 'l':
+      return pushContainer(Kind::List, std::move(*items));
+    case 't':
+      return pushContainer(Kind::Tuple, std::move(*items));
+    case 0x91:
+      return pushContainer(Kind::Set, std::move(*items));
     case 'd': {
-      if (items->size() % 2) return fail("DICT with an odd number of items at byte " + std::to_string(op_pos_));
+      if (items->size() % 2)
+        return fail("DICT with an odd number of items at byte " + std::to_string(op_pos_));
       return pushContainer(Kind::Dict, std::move(*items));
     }
-    default: break;
+    default:
+      break;
   }
   Result<Ref> t = top();
   if (!t) return t.error();
   if (op == 'e') return appendItems(*t, *items);
   if (op == 'u') return setItems(*t, *items);
   PyObj& set = heap_.at(*t);  // ADDITEMS
-  if (set.kind != Kind::Set) return fail("ADDITEMS to a " + typeName(heap_, *t) + " is not supported");
+  if (set.kind != Kind::Set)
+    return fail("ADDITEMS to a " + typeName(heap_, *t) + " is not supported");
   PK_TRY(heap_.charge(items->size() * sizeof(Ref), "set"));
   set.items.insert(set.items.end(), items->begin(), items->end());
   return Status::success();
@@ -617,7 +707,8 @@ Status Vm::stepContainers(uint8_t op, bool* handled) {
 Status Vm::stepMemo(uint8_t op, bool* handled) {
   *handled = true;
   switch (op) {
-    case 'p': case 'g': {
+    case 'p':
+    case 'g': {
       Result<std::string> line = readLine();
       if (!line) return line.error();
       int64_t v = 0;
@@ -629,13 +720,19 @@ Status Vm::stepMemo(uint8_t op, bool* handled) {
       }
       return op == 'p' ? memoPut(static_cast<uint64_t>(v)) : memoGet(static_cast<uint64_t>(v));
     }
-    case 'q': case 'r': case 'h': case 'j': {
+    case 'q':
+    case 'r':
+    case 'h':
+    case 'j': {
       Result<uint64_t> v = readUint(op == 'q' || op == 'h' ? 1 : 4);
       if (!v) return v.error();
       return op == 'q' || op == 'r' ? memoPut(*v) : memoGet(*v);
     }
-    case 0x94: return memoPut(memo_.size());
-    default: *handled = false; return Status::success();
+    case 0x94:
+      return memoPut(memo_.size());
+    default:
+      *handled = false;
+      return Status::success();
   }
 }
 
@@ -652,7 +749,8 @@ Status Vm::global(const std::string& module, const std::string& name) {
 Status Vm::stepObjects(uint8_t op, bool* handled) {
   *handled = true;
   switch (op) {
-    case 'c': case 'i': {  // GLOBAL, INST: "module\nname\n"
+    case 'c':
+    case 'i': {  // GLOBAL, INST: "module\nname\n"
       Result<std::string> module = readLine();
       if (!module) return module.error();
       Result<std::string> name = readLine();
@@ -691,7 +789,8 @@ Status Vm::stepObjects(uint8_t op, bool* handled) {
       if (!obj) return obj.error();
       return push(*obj);
     }
-    default: break;
+    default:
+      break;
   }
   if (op != 'R' && op != 'b' && op != 0x81 && op != 0x92) {
     *handled = false;
