@@ -17,24 +17,10 @@ import unittest
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from reference_poses import load_reference, world_rotations
+
 ARGS = None
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def load_reference(prefix):
-    with open(prefix + ".json") as f:
-        header = json.load(f)
-    data = np.fromfile(prefix + ".bin", dtype="<f8")
-    return header, {n: data[a["offset"]:a["offset"] + int(np.prod(a["shape"]))].reshape(a["shape"])
-                    for n, a in header["arrays"].items()}
-
-
-def world_rotations(poses, parents):
-    local = Rotation.from_rotvec(poses).as_matrix()
-    world = np.empty_like(local)
-    for k, p in enumerate(parents):
-        world[k] = local[k] if p < 0 else world[p] @ local[k]
-    return world
 
 
 def maya_matrix(rotation, translation):

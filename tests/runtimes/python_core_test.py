@@ -16,35 +16,16 @@ Debian's numpy/scipy and no Blender or Maya:
 """
 import argparse
 import importlib.util
-import json
 import sys
 import unittest
 
 import numpy as np
 from scipy.spatial.transform import Rotation
 
+from reference_poses import load_reference, world_rotations
+
 ARGS = None
 core = None
-
-
-def load_reference(prefix):
-    with open(prefix + ".json") as f:
-        header = json.load(f)
-    data = np.fromfile(prefix + ".bin", dtype="<f8")
-    arrays = {}
-    for name, a in header["arrays"].items():
-        count = int(np.prod(a["shape"]))
-        arrays[name] = data[a["offset"]:a["offset"] + count].reshape(a["shape"])
-    return header, arrays
-
-
-def world_rotations(poses, parents):
-    """G_k rotations (model axes) from axis-angle poses (K,3), independently of core."""
-    local = Rotation.from_rotvec(poses).as_matrix()
-    world = np.empty_like(local)
-    for k, p in enumerate(parents):
-        world[k] = local[k] if p < 0 else world[p] @ local[k]
-    return world
 
 
 def skin(v_posed, world, rest_joints, posed_joints, weights):
