@@ -18,6 +18,7 @@
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"
+#include "exporter/pruning_error.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -194,6 +195,7 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   if (Status st = writeOutputs(job.out, *files, buffer_path, sidecarJson(*asset, *producer)); !st)
     return fail(ErrorKind::Write, "saving", job.out, st.message());
   report.options = options;
+  report.skin = skinOfAsset(asset->mesh, model.numVertices());
   report.bytes = files->bytes.size() + files->buffer.size();
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.vertices = static_cast<int>(asset->mesh.positions.rows());

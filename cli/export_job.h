@@ -8,6 +8,7 @@
 #include "cli/exit_code.h"
 #include "cli/settings.h"
 #include "core/body_model.h"
+#include "core/math/skin_weights.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -26,6 +27,7 @@ struct ExportReport {
   int frames = 0;                  // total animation frames written
   std::vector<std::string> notes;  // e.g. motion joints dropped by the mapping
   ExportOptions options;           // as used (betas may come from the motion)
+  SparseSkin skin;  // the skin written, per model vertex (exporter/pruning_error.h skinOfAsset)
 };
 
 // "Error <verb> <path>: <reason>", without repeating the path when the reason

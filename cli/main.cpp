@@ -111,7 +111,8 @@ int run(int argc, char** argv, Stage* stage) {
       runExport(loaded, s, ExportJob{s.out, s.motions, isatty(2) != 0 && !s.quiet, ""});
   if (!result) return report(result.message(), exitCodeFor(result.kind()));
   if (!s.quiet) {
-    Result<PruningError> err = measurePruningError(loaded, result->options, s.error_poses);
+    Result<PruningError> err =
+        measurePruningError(loaded, result->options, s.error_poses, &result->skin);
     if (!err) return report("Error measuring " + s.out + ": " + err.message(), kExitExport);
     printSummary(s.out, *result, *err);
     std::printf("model: %s\n", printable(pick->path).c_str());

@@ -1,6 +1,7 @@
 #include "exporter/pruning_error.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
@@ -19,31 +20,59 @@ ForwardInput shapeInput(const ExportOptions& options) {
   return input;
 }
 
-}  // namespace
-
-Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& options,
-                                   const Eigen::MatrixXd& weights, int poses) {
+// The errors of several weight matrices on the same held-out poses: the
+// unpruned model is posed once per pose for all of them.
+Result<std::vector<SkinError>> measureSkinErrors(const BodyModel& model,
+                                                 const ExportOptions& options,
+                                                 const std::vector<const Eigen::MatrixXd*>& weights,
+                                                 int poses) {
   ForwardInput input = shapeInput(options);
-  SkinError err;
-  double sum = 0.0;
+  std::vector<SkinError> errs(weights.size());
+  std::vector<double> sums(weights.size(), 0.0);
   for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), poses, /*seed=*/20261124)) {
     input.rotations = rotationsFromAxisAngle(pose);
     input.weights = nullptr;
     Result<ForwardResult> full = forward(model, input);
     if (!full) return full.error();
-    input.weights = &weights;
-    Result<ForwardResult> cut = forward(model, input);
-    if (!cut) return cut.error();
-    Eigen::VectorXd dist = (full->vertices - cut->vertices).rowwise().norm();
-    sum += dist.sum();
-    err.max_m = std::max(err.max_m, dist.maxCoeff());
+    for (size_t i = 0; i < weights.size(); ++i) {
+      input.weights = weights[i];
+      Result<ForwardResult> cut = forward(model, input);
+      if (!cut) return cut.error();
+      Eigen::VectorXd dist = (full->vertices - cut->vertices).rowwise().norm();
+      sums[i] += dist.sum();
+      errs[i].max_m = std::max(errs[i].max_m, dist.maxCoeff());
+    }
   }
-  err.mean_m = poses > 0 ? sum / (static_cast<double>(poses) * model.numVertices()) : 0.0;
-  return err;
+  for (size_t i = 0; i < weights.size(); ++i)
+    errs[i].mean_m = poses > 0 ? sums[i] / (static_cast<double>(poses) * model.numVertices()) : 0.0;
+  return errs;
+}
+
+}  // namespace
+
+Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& options,
+                                   const Eigen::MatrixXd& weights, int poses) {
+  Result<std::vector<SkinError>> errs = measureSkinErrors(model, options, {&weights}, poses);
+  if (!errs) return errs.error();
+  return errs->front();
+}
+
+SparseSkin skinOfAsset(const SkinnedMesh& mesh, int num_vertices) {
+  SparseSkin skin;
+  skin.joints = Eigen::MatrixXi::Zero(num_vertices, mesh.joints.cols());
+  skin.weights = Eigen::MatrixXd::Zero(num_vertices, mesh.weights.cols());
+  for (Eigen::Index v = 0; v < mesh.joints.rows(); ++v) {
+    const Eigen::Index source =
+        mesh.source_vertex.empty() ? v : Eigen::Index(mesh.source_vertex[size_t(v)]);
+    if (source < 0 || source >= num_vertices) continue;
+    skin.joints.row(source) = mesh.joints.row(v);
+    skin.weights.row(source) = mesh.weights.row(v).cast<double>();
+  }
+  return skin;
 }
 
 Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options,
-                                         int poses) {
+                                         int poses, const SparseSkin* exported_skin) {
   ForwardInput shape = shapeInput(options);
   Result<ShapedBody> body = shapeBody(model, shape.betas, shape.expression);
   if (!body) return body.error();
@@ -52,18 +81,20 @@ Result<PruningError> measurePruningError(const BodyModel& model, const ExportOpt
   err.poses = poses;
   const Eigen::MatrixXd truncated =
       denseWeights(pruneWeights(model.weights, err.influences), model.numJoints());
-  Result<SkinError> t = measureSkinError(model, options, truncated, poses);
-  if (!t) return t.error();
-  err.truncated = *t;
   if (options.skin_weights == SkinWeightMethod::Truncated) {
-    err.mean_m = t->mean_m, err.max_m = t->max_m;
+    Result<std::vector<SkinError>> t = measureSkinErrors(model, options, {&truncated}, poses);
+    if (!t) return t.error();
+    err.truncated = t->front();
+    err.mean_m = err.truncated.mean_m, err.max_m = err.truncated.max_m;
     return err;
   }
-  const Eigen::MatrixXd exported =
-      denseWeights(exportSkin(model, *body, options), model.numJoints());
-  Result<SkinError> e = measureSkinError(model, options, exported, poses);
+  const Eigen::MatrixXd exported = denseWeights(
+      exported_skin ? *exported_skin : exportSkin(model, *body, options), model.numJoints());
+  Result<std::vector<SkinError>> e =
+      measureSkinErrors(model, options, {&truncated, &exported}, poses);
   if (!e) return e.error();
-  err.mean_m = e->mean_m, err.max_m = e->max_m;
+  err.truncated = (*e)[0];
+  err.mean_m = (*e)[1].mean_m, err.max_m = (*e)[1].max_m;
   return err;
 }
 

@@ -7,7 +7,9 @@
 #pragma once
 
 #include "core/body_model.h"
+#include "core/math/skin_weights.h"
 #include "core/result.h"
+#include "exporter/asset.h"
 #include "exporter/pipeline.h"
 
 namespace smpl {
@@ -26,8 +28,14 @@ struct PruningError {
 };
 
 // Held-out error of `options`' skin (and of truncation) over `poses` poses.
+// `exported`: the skin the export wrote (model vertices, see skinOfAsset), so
+// the weights are not fitted a second time; null: computed here (exportSkin).
 Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options,
-                                         int poses);
+                                         int poses, const SparseSkin* exported = nullptr);
+
+// The skin an asset carries, per model vertex (N x M; asset vertices split at
+// UV seams share their model vertex's weights): float weights widened.
+SparseSkin skinOfAsset(const SkinnedMesh& mesh, int num_vertices);
 
 // Held-out error of one N x K dense weight matrix over `poses` poses (seed 20261124).
 Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& options,
