@@ -117,11 +117,16 @@ Result<ZipEntry> NpzArchive::memberBytes(const std::string& key) const {
   return extractZipMember(storage_->data, storage_->size, *m, context_);
 }
 
+Result<ZipBytes> NpzArchive::memberView(const std::string& key) const {
+  const ZipMember* m = find(key);
+  if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
+  return viewZipMember(storage_->data, storage_->size, *m, context_);
+}
+
 Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
-  Result<ZipEntry> e = memberBytes(key);
+  Result<ZipBytes> e = memberView(key);
   if (!e) return e.error();
-  return parseNpyHeader(e->data.data(), e->data.size(),
-                        context_ + "/" + printable(find(key)->name));
+  return parseNpyHeader(e->data, e->size, context_ + "/" + printable(find(key)->name));
 }
 
 Result<bool> NpzArchive::isObjectArray(const std::string& key) const {
@@ -185,15 +190,15 @@ Result<Array> NpzArchive::get(const std::string& key) const {
       !st)
     return st.error();
   if (Status st = checkDecodedSize(key); !st) return st.error();
-  Result<ZipEntry> e = memberBytes(key);
+  Result<ZipBytes> e = memberView(key);
   if (!e) return e.error();
   const std::string mctx = context_ + "/" + printable(find(key)->name);
-  Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
+  Result<NpyHeaderInfo> h = parseNpyHeader(e->data, e->size, mctx);
   if (!h) return h.error();
   if (isObjectDescr(h->descr))
     return makeError(context_ + ": '" + printable(key) + "' is an object array ('" +
                      printable(h->descr) + "'); expected numbers or text");
-  return parseNpy(e->data.data(), e->data.size(), mctx);
+  return parseNpy(e->data, e->size, mctx);
 }
 
 Result<ArrayDict> NpzArchive::read(const std::vector<std::string>& keys) const {
@@ -212,13 +217,13 @@ Result<ArrayDict> NpzArchive::readAllNumeric() const {
   for (size_t i = 0; i < keys_.size(); ++i) {
     const std::string& key = keys_[i];
     if (Status st = checkDecodedSize(key); !st) return st.error();
-    Result<ZipEntry> e = memberBytes(key);
+    Result<ZipBytes> e = memberView(key);
     if (!e) return e.error();
     const std::string mctx = context_ + "/" + printable(members_[i].name);
-    Result<NpyHeaderInfo> h = parseNpyHeader(e->data.data(), e->data.size(), mctx);
+    Result<NpyHeaderInfo> h = parseNpyHeader(e->data, e->size, mctx);
     if (!h) return h.error();
     if (isObjectDescr(h->descr)) continue;
-    Result<Array> a = parseNpy(e->data.data(), e->data.size(), mctx);
+    Result<Array> a = parseNpy(e->data, e->size, mctx);
     if (!a) return a.error();
     arrays.emplace(key, std::move(*a));
   }

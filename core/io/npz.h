@@ -41,6 +41,9 @@ class NpzArchive {
   // The member's raw .npy bytes (inflated, CRC-checked; `data`), charged to
   // the memory budget while the entry lives.
   Result<ZipEntry> memberBytes(const std::string& key) const;
+  // The same bytes as memberBytes, viewed in place for a stored member (valid
+  // while this archive lives), inflated once for a deflated one.
+  Result<ZipBytes> memberView(const std::string& key) const;
   // Header of the member (dtype, shape) without decoding its data.
   Result<NpyHeaderInfo> header(const std::string& key) const;
   // True if the member is an object array ('|O'): from its first bytes only

@@ -4,10 +4,11 @@
 
 #include <cmath>
 #include <cstring>
+#include <iterator>
 #include <limits>
-#include <type_traits>
 #include <utility>
 
+#include "core/io/huge_pages.h"
 #include "core/io/printable.h"
 #include "core/io/utf8.h"
 
@@ -142,18 +143,50 @@ class SourceOrder {
   size_t src_ = 0;
 };
 
-// Numbers of a native-order dtype, loaded as T (memcpy: any alignment);
-// C-order float64 is one memcpy.
+// Reads consecutive native-order T values from unaligned bytes as doubles: a
+// random-access iterator, so vector::assign sizes the vector once and
+// converts straight into it (no zero fill before the copy).
 template <class T>
-void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order, double* out) {
-  if (c_order && sizeof(T) == sizeof(double) && std::is_same<T, double>::value) {
-    std::memcpy(out, p, count * sizeof(double));
+struct NativeReader {
+  using iterator_category = std::random_access_iterator_tag;
+  using value_type = double;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const double*;
+  using reference = double;
+  const uint8_t* p;
+  double operator*() const {
+    T v;
+    std::memcpy(&v, p, sizeof(T));
+    return static_cast<double>(v);
+  }
+  NativeReader& operator++() { return p += sizeof(T), *this; }
+  NativeReader operator++(int) { return NativeReader{(p += sizeof(T)) - sizeof(T)}; }
+  NativeReader& operator--() { return p -= sizeof(T), *this; }
+  NativeReader& operator+=(difference_type d) { return p += d * difference_type(sizeof(T)), *this; }
+  difference_type operator-(const NativeReader& o) const {
+    return (p - o.p) / static_cast<difference_type>(sizeof(T));
+  }
+  bool operator==(const NativeReader& o) const { return p == o.p; }
+  bool operator!=(const NativeReader& o) const { return p != o.p; }
+};
+
+// Numbers of a native-order dtype, loaded as T (memcpy: any alignment).
+// C order: one converting pass into a vector sized once; Fortran order: each
+// element read from its source position.
+template <class T>
+void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order,
+               std::vector<double>* out) {
+  if (c_order) {
+    out->reserve(count);  // allocated, not yet touched: advise before the first write
+    adviseHugePages(out->data(), count * sizeof(double));
+    out->assign(NativeReader<T>{p}, NativeReader<T>{p + count * sizeof(T)});
     return;
   }
+  out->resize(count);
   for (size_t i = 0; i < count; ++i) {
     T v;
-    std::memcpy(&v, p + (c_order ? i : order.next()) * sizeof(T), sizeof(T));
-    out[i] = static_cast<double>(v);
+    std::memcpy(&v, p + order.next() * sizeof(T), sizeof(T));
+    (*out)[i] = static_cast<double>(v);
   }
 }
 
@@ -161,7 +194,7 @@ void loadTyped(const uint8_t* p, size_t count, SourceOrder& order, bool c_order,
 // switch of loadNumber; false for the others (half floats, bools, 1- and
 // 2-byte integers, the other byte order), which take loadNumber.
 bool loadNative(const uint8_t* p, size_t count, const NumpyDtype& t, SourceOrder& order,
-                bool c_order, double* out) {
+                bool c_order, std::vector<double>* out) {
   if (count == 0 || (t.big_endian && t.itemsize > 1) || hostIsBigEndian()) return false;
   const char k = t.kind;
   const size_t n = t.itemsize;
@@ -200,9 +233,9 @@ Status fillElements(const uint8_t* p, size_t count, const NumpyDtype& t, bool fo
       a.strings.push_back(std::move(*s));
     }
   } else {
-    a.data.resize(count);
     const bool c_order = !fortran || a.shape.size() <= 1;
-    if (loadNative(p, count, t, order, c_order, a.data.data())) return Status();
+    if (loadNative(p, count, t, order, c_order, &a.data)) return Status();
+    a.data.resize(count);
     for (size_t i = 0; i < count; ++i) a.data[i] = loadNumber(p + order.next() * t.itemsize, t);
   }
   return Status();

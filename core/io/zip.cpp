@@ -16,6 +16,7 @@
 #include <memory>
 #include <utility>
 
+#include "core/io/huge_pages.h"
 #include "core/io/printable.h"
 
 namespace smpl {
@@ -208,20 +209,20 @@ Result<size_t> locateData(const uint8_t* data, const CentralEntry& c, uint64_t d
 
 // One inflate() step into `out` (or, once `out` is full, into a spill byte
 // whose use proves the entry is larger than declared).
-Status inflateStep(z_stream& zs, std::vector<uint8_t>& out, uint64_t& out_pos,
+Status inflateStep(z_stream& zs, uint8_t* out, size_t out_size, uint64_t& out_pos,
                    const std::string& ectx, bool& done) {
   uint8_t spill = 0;
-  const bool full = out_pos == out.size();
+  const bool full = out_pos == out_size;
   const uInt room =
-      full ? 1 : static_cast<uInt>(std::min<uint64_t>(out.size() - out_pos, kZlibChunk));
-  zs.next_out = full ? &spill : out.data() + out_pos;
+      full ? 1 : static_cast<uInt>(std::min<uint64_t>(out_size - out_pos, kZlibChunk));
+  zs.next_out = full ? &spill : out + out_pos;
   zs.avail_out = room;
   const uInt in_before = zs.avail_in;
   const int ret = inflate(&zs, Z_NO_FLUSH);
   const uInt produced = room - zs.avail_out;
   if (full && produced > 0)
     return makeError(ectx + ": deflate data inflates to more than the declared " +
-                     std::to_string(out.size()) + " bytes");
+                     std::to_string(out_size) + " bytes");
   out_pos += produced;
   done = ret == Z_STREAM_END;
   if (ret != Z_OK && ret != Z_STREAM_END && ret != Z_BUF_ERROR)
@@ -232,7 +233,7 @@ Status inflateStep(z_stream& zs, std::vector<uint8_t>& out, uint64_t& out_pos,
   return Status();
 }
 
-Status inflateInto(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
+Status inflateInto(const uint8_t* in, uint64_t csize, uint8_t* out, size_t out_size,
                    const std::string& ectx) {
   z_stream zs{};
   if (inflateInit2(&zs, -15) != Z_OK) return makeError(ectx + ": cannot initialise zlib");
@@ -249,59 +250,90 @@ Status inflateInto(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
       zs.avail_in = static_cast<uInt>(std::min(csize - in_pos, kZlibChunk));
       in_pos += zs.avail_in;
     }
-    st = inflateStep(zs, out, out_pos, ectx, done);
+    st = inflateStep(zs, out, out_size, out_pos, ectx, done);
   }
   inflateEnd(&zs);
-  if (st && out_pos != out.size())
+  if (st && out_pos != out_size)
     st = makeError(ectx + ": deflate data inflates to " + std::to_string(out_pos) +
-                   " bytes; declared " + std::to_string(out.size()));
+                   " bytes; declared " + std::to_string(out_size));
   return st;
 }
 
 // libdeflate's CRC-32 (carry-less multiply where the CPU has it): ~10x zlib's.
-uint32_t crc32Of(const std::vector<uint8_t>& bytes) {
-  return libdeflate_crc32(0, bytes.data(), bytes.size());
-}
+uint32_t crc32Of(const uint8_t* bytes, size_t size) { return libdeflate_crc32(0, bytes, size); }
 
 // Whole-member inflate in one libdeflate call (the declared size is known, so
 // the output buffer is exact); on any failure zlib's streaming inflate above
 // runs again on the same bytes, only to name the problem exactly (corrupt,
 // truncated, larger or smaller than declared).
-Status inflateMember(const uint8_t* in, uint64_t csize, std::vector<uint8_t>& out,
+Status inflateMember(const uint8_t* in, uint64_t csize, uint8_t* out, size_t out_size,
                      const std::string& ectx) {
   struct Free {
     void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
   };
   static thread_local std::unique_ptr<libdeflate_decompressor, Free> d(
       libdeflate_alloc_decompressor());
-  if (d && libdeflate_deflate_decompress(d.get(), in, static_cast<size_t>(csize), out.data(),
-                                         out.size(), nullptr) == LIBDEFLATE_SUCCESS)
+  if (d && libdeflate_deflate_decompress(d.get(), in, static_cast<size_t>(csize), out, out_size,
+                                         nullptr) == LIBDEFLATE_SUCCESS)
     return Status();
-  Status st = inflateInto(in, csize, out, ectx);
+  Status st = inflateInto(in, csize, out, out_size, ectx);
   if (st)
     return makeError(ectx +
                      ": corrupt deflate data (refused by libdeflate)");  // zlib alone accepts it
   return st;
 }
 
-Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
-                              const std::string& ctx) {
+// The member's bytes: a view of the archive for a stored member (no copy),
+// else inflated into `owned` (default-initialised: no zero fill). CRC-checked.
+Result<ZipBytes> extractBytes(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
+                              const std::string& ctx, bool view_stored) {
   const std::string ectx = ctx + "/" + printable(c.name);
   Result<size_t> start = locateData(data, c, data_end, ectx);
   if (!start) return start.error();
-  ZipEntry e;
-  e.name = c.name;
-  if (Status st = e.charge.add(c.usize, ectx, "inflating the member"); !st) return st.error();
-  if (c.method == 0) {
-    e.data.assign(data + *start, data + *start + c.csize);
+  ZipBytes b;
+  if (c.method == 0 && view_stored) {
+    b.data = data + *start;
+    b.size = static_cast<size_t>(c.csize);
   } else {
-    e.data.resize(c.usize);  // bounded by the limits and the deflate ratio
-    if (Status st = inflateMember(data + *start, c.csize, e.data, ectx); !st) return st.error();
+    if (Status st = b.charge.add(c.usize, ectx, "inflating the member"); !st) return st.error();
+    b.owned.reset(new uint8_t[c.usize]);  // bounded by the limits and the deflate ratio
+    adviseHugePages(b.owned.get(), static_cast<size_t>(c.usize));
+    b.data = b.owned.get();
+    b.size = static_cast<size_t>(c.usize);
+    if (c.method == 0 && b.size > 0)
+      std::memcpy(b.owned.get(), data + *start, b.size);
+    else if (c.method != 0)
+      if (Status st = inflateMember(data + *start, c.csize, b.owned.get(), b.size, ectx); !st)
+        return st.error();
   }
-  const uint32_t crc = crc32Of(e.data);
+  const uint32_t crc = crc32Of(b.data, b.size);
   if (crc != c.crc)
     return makeError(ectx + ": CRC mismatch: expected " + hex32(c.crc) + ", found " + hex32(crc));
+  return b;
+}
+
+Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
+                              const std::string& ctx) {
+  Result<ZipBytes> b = extractBytes(data, c, data_end, ctx, /*view_stored=*/false);
+  if (!b) return b.error();
+  ZipEntry e;
+  e.name = c.name;
+  e.data.assign(b->data, b->data + b->size);
+  e.charge = std::move(b->charge);
   return e;
+}
+
+// The checks every extraction of a listed member makes first.
+Status checkExtractable(const uint8_t* data, size_t size, const ZipMember& member,
+                        const std::string& ectx, const ZipLimits& limits) {
+  if (data == nullptr || member.data_end > size)
+    return makeError(ectx + ": member lies outside the archive");
+  if (Status st = checkSupported(member, ectx); !st) return st;
+  if (member.usize > limits.max_total_uncompressed)
+    return makeError(ectx + ": declared uncompressed size " + std::to_string(member.usize) +
+                     " exceeds the limit of " + std::to_string(limits.max_total_uncompressed) +
+                     " bytes");
+  return Status();
 }
 
 }  // namespace
@@ -316,15 +348,20 @@ Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const s
 
 Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
                                   const std::string& context, const ZipLimits& limits) {
-  const std::string ectx = context + "/" + printable(member.name);
-  if (data == nullptr || member.data_end > size)
-    return makeError(ectx + ": member lies outside the archive");
-  if (Status st = checkSupported(member, ectx); !st) return st.error();
-  if (member.usize > limits.max_total_uncompressed)
-    return makeError(ectx + ": declared uncompressed size " + std::to_string(member.usize) +
-                     " exceeds the limit of " + std::to_string(limits.max_total_uncompressed) +
-                     " bytes");
+  if (Status st =
+          checkExtractable(data, size, member, context + "/" + printable(member.name), limits);
+      !st)
+    return st.error();
   return extractEntry(data, member, member.data_end, context);  // charged to the memory budget
+}
+
+Result<ZipBytes> viewZipMember(const uint8_t* data, size_t size, const ZipMember& member,
+                               const std::string& context, const ZipLimits& limits) {
+  if (Status st =
+          checkExtractable(data, size, member, context + "/" + printable(member.name), limits);
+      !st)
+    return st.error();
+  return extractBytes(data, member, member.data_end, context, /*view_stored=*/true);
 }
 
 Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,16 @@ struct ZipEntry {
   std::string name;
   std::vector<uint8_t> data;  // uncompressed bytes, CRC-checked
   MemoryCharge charge;        // `data` held against the memory budget
+};
+
+// One member's uncompressed bytes without a needless copy: `data` points into
+// the archive for a stored member (valid while the archive's bytes live) or
+// into `owned` for an inflated one (charged to the memory budget).
+struct ZipBytes {
+  const uint8_t* data = nullptr;
+  size_t size = 0;
+  std::unique_ptr<uint8_t[]> owned;
+  MemoryCharge charge;  // `owned` held against the memory budget
 };
 
 struct ZipLimits {
@@ -45,6 +56,12 @@ Result<std::vector<ZipMember>> listZip(const uint8_t* data, size_t size, const s
 Result<ZipEntry> extractZipMember(const uint8_t* data, size_t size, const ZipMember& member,
                                   const std::string& context,
                                   const ZipLimits& limits = ZipLimits());
+
+// As extractZipMember (same checks, CRC included), but a stored member is
+// returned as a view of `data` instead of a copy, and an inflated one in a
+// buffer that is not zero-filled first (the bulk model load path).
+Result<ZipBytes> viewZipMember(const uint8_t* data, size_t size, const ZipMember& member,
+                               const std::string& context, const ZipLimits& limits = ZipLimits());
 
 // The first min(max_bytes, size) uncompressed bytes of a listed member,
 // without CRC check (for peeking at a header before deciding to extract).

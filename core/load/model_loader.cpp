@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "core/io/file_io.h"
+#include "core/io/huge_pages.h"
 #include "core/io/mapped_file.h"
 #include "core/io/pickle/pickle.h"
 #include "core/joint_names.h"
@@ -15,8 +16,6 @@
 
 namespace smpl {
 namespace {
-
-using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // Shapes in errors use the numbers we expect where known, -1 where free.
 std::string expectedString(const std::vector<int64_t>& shape) {
@@ -65,17 +64,20 @@ struct Arrays {
   }
 };
 
-// (rows*cols) C-order values -> matrix, transposed in 64 x 64 tiles (posedirs
-// (3N x 207): a plain element-by-element transpose misses the cache on every read).
+// (rows*cols) C-order values -> matrix. posedirs (3N x 207): a strip of 8
+// source rows (13 KB) stays in L1 while each destination column gets its 8
+// contiguous values, so both sides stream; huge pages for the big ones.
 Eigen::MatrixXd toMatrix(const Array& a, Eigen::Index rows, Eigen::Index cols) {
-  constexpr Eigen::Index kTile = 64;
+  constexpr Eigen::Index kStrip = 8;
   Eigen::MatrixXd m(rows, cols);
-  const Eigen::Map<const RowMajor> src(a.data.data(), rows, cols);
-  for (Eigen::Index r = 0; r < rows; r += kTile)
-    for (Eigen::Index c = 0; c < cols; c += kTile) {
-      const Eigen::Index h = std::min(kTile, rows - r), w = std::min(kTile, cols - c);
-      m.block(r, c, h, w) = src.block(r, c, h, w);
-    }
+  adviseHugePages(m.data(), static_cast<size_t>(m.size()) * sizeof(double));
+  const double* src = a.data.data();
+  double* dst = m.data();
+  for (Eigen::Index r0 = 0; r0 < rows; r0 += kStrip) {
+    const Eigen::Index h = std::min(kStrip, rows - r0);
+    for (Eigen::Index c = 0; c < cols; ++c)
+      for (Eigen::Index r = r0; r < r0 + h; ++r) dst[c * rows + r] = src[r * cols + c];
+  }
   return m;
 }
 

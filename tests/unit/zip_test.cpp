@@ -267,5 +267,58 @@ TEST(Zip, Zip64RecordOffsetOutOfRange) {
   expectError(full, "bad zip64 end of central directory record offset");
 }
 
+// viewZipMember (the model loader's path): a stored member is the archive's
+// own bytes (no copy), a deflated one is inflated; both CRC-checked and
+// bounded like extractZipMember.
+Result<ZipBytes> view(const std::string& bytes, size_t index,
+                      const ZipLimits& limits = ZipLimits()) {
+  const auto* data = reinterpret_cast<const uint8_t*>(bytes.data());
+  Result<std::vector<ZipMember>> members = listZip(data, bytes.size(), "model.npz");
+  if (!members) return members.error();
+  return viewZipMember(data, bytes.size(), (*members)[index], "model.npz", limits);
+}
+
+TEST(Zip, ViewedMembersAreTheArchiveBytesOrInflated) {
+  Built b = buildZip(kTwo);
+  Result<ZipBytes> stored = view(b.bytes, 0);
+  ASSERT_TRUE(stored.ok()) << stored.message();
+  EXPECT_EQ(stored->data, reinterpret_cast<const uint8_t*>(b.bytes.data()) + b.data[0]);
+  EXPECT_EQ(stored->owned, nullptr);
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(stored->data), stored->size), kTwo[0].data);
+  Result<ZipBytes> inflated = view(b.bytes, 1);
+  ASSERT_TRUE(inflated.ok()) << inflated.message();
+  EXPECT_EQ(inflated->data, inflated->owned.get());
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(inflated->data), inflated->size),
+            kTwo[1].data);
+}
+
+TEST(Zip, ViewedMembersAreCrcCheckedAndBounded) {
+  Built b = buildZip(kTwo);
+  b.bytes[b.data[0]] ^= 1;
+  Result<ZipBytes> stored = view(b.bytes, 0);
+  ASSERT_FALSE(stored.ok());
+  EXPECT_NE(stored.message().find("model.npz/a.npy: CRC mismatch: expected 0x"), std::string::npos)
+      << stored.message();
+  Built d = buildZip(kTwo);
+  put32(d.bytes, d.central[1] + 16, 0x12345678);
+  Result<ZipBytes> inflated = view(d.bytes, 1);
+  ASSERT_FALSE(inflated.ok());
+  EXPECT_NE(inflated.message().find("model.npz/b.npy: CRC mismatch: expected 0x12345678"),
+            std::string::npos)
+      << inflated.message();
+  ZipLimits small;
+  small.max_total_uncompressed = 100;
+  Result<ZipBytes> big = view(buildZip(kTwo).bytes, 1, small);
+  ASSERT_FALSE(big.ok());
+  EXPECT_NE(big.message().find("exceeds the limit of 100 bytes"), std::string::npos)
+      << big.message();
+  Built cut = buildZip(kTwo);
+  cut.bytes[cut.data[1]] = '\xff';  // block type 3 is reserved
+  Result<ZipBytes> corrupt = view(cut.bytes, 1);
+  ASSERT_FALSE(corrupt.ok());
+  EXPECT_NE(corrupt.message().find("model.npz/b.npy: corrupt deflate data"), std::string::npos)
+      << corrupt.message();
+}
+
 }  // namespace
 }  // namespace smpl

@@ -4,6 +4,7 @@
 // or deeply nested graphs end in "not array-like" instead of a stack overflow.
 #include <cmath>
 
+#include "core/io/huge_pages.h"
 #include "core/io/pickle/pickle_internal.h"
 #include "core/io/printable.h"
 
@@ -19,7 +20,18 @@ Result<bool> convert(Heap& heap, Ref r, Array* out, int depth);
 Result<bool> copyArray(Heap& heap, const Array& a, Array* out) {
   PK_TRY(heap.charge(a.data.size() * sizeof(double) + a.strings.size() * sizeof(std::string),
                      "array copy"));
-  *out = a;
+  // The heap keeps its array (the memo may hand it to several keys): a copy,
+  // into a buffer advised onto huge pages before its first write.
+  Array copy;
+  copy.shape = a.shape;
+  copy.dtype = a.dtype;
+  copy.strings = a.strings;
+  copy.keys = a.keys;
+  copy.charge = a.charge;
+  copy.data.reserve(a.data.size());
+  adviseHugePages(copy.data.data(), a.data.size() * sizeof(double));
+  copy.data.assign(a.data.begin(), a.data.end());
+  *out = std::move(copy);
   return true;
 }
 
