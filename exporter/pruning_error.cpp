@@ -1,9 +1,11 @@
 #include "exporter/pruning_error.h"
 
 #include <algorithm>
+#include <thread>
 #include <vector>
 
 #include "core/math/forward.h"
+#include "core/math/forward_batch.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
 #include "exporter/export_skin.h"
@@ -20,31 +22,45 @@ ForwardInput shapeInput(const ExportOptions& options) {
   return input;
 }
 
-// The errors of several weight matrices on the same held-out poses: the
-// unpruned model is posed once per pose for all of them.
+// The errors of several weight matrices on the same held-out poses, all
+// poses at once through the batched forward pass (forwardBatchSkins: the
+// corrective GEMM in float, once for the unpruned model and every weight
+// set; < 1e-6 m from forward(), far below the millimetres measured here).
 Result<std::vector<SkinError>> measureSkinErrors(const BodyModel& model,
                                                  const ExportOptions& options,
                                                  const std::vector<const Eigen::MatrixXd*>& weights,
                                                  int poses) {
-  ForwardInput input = shapeInput(options);
-  std::vector<SkinError> errs(weights.size());
-  std::vector<double> sums(weights.size(), 0.0);
-  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), poses, /*seed=*/20261124)) {
-    input.rotations = rotationsFromAxisAngle(pose);
-    input.weights = nullptr;
-    Result<ForwardResult> full = forward(model, input);
-    if (!full) return full.error();
-    for (size_t i = 0; i < weights.size(); ++i) {
-      input.weights = weights[i];
-      Result<ForwardResult> cut = forward(model, input);
-      if (!cut) return cut.error();
-      Eigen::VectorXd dist = (full->vertices - cut->vertices).rowwise().norm();
-      sums[i] += dist.sum();
-      errs[i].max_m = std::max(errs[i].max_m, dist.maxCoeff());
-    }
+  const ForwardInput shape = shapeInput(options);
+  Result<ShapedBody> body = shapeBody(model, shape.betas, shape.expression);
+  if (!body) return body.error();
+  std::vector<Rotations> frames;
+  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), poses, /*seed=*/20261124))
+    frames.push_back(rotationsFromAxisAngle(pose));
+  std::vector<const Eigen::MatrixXd*> skins = {nullptr};  // the model's own weights first
+  for (const Eigen::MatrixXd* w : weights) {
+    if (w->rows() != model.numVertices() || w->cols() != model.numJoints())
+      return makeError("skin weights override has the wrong shape");
+    skins.push_back(w);
   }
-  for (size_t i = 0; i < weights.size(); ++i)
-    errs[i].mean_m = poses > 0 ? sums[i] / (static_cast<double>(poses) * model.numVertices()) : 0.0;
+  BatchInput in;
+  in.body = &*body;
+  in.frames = &frames;
+  in.block = 16;  // two blocks for the default 32 poses: both cores
+  in.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const std::vector<Eigen::MatrixXd> posed = forwardBatchSkins(model, in, skins);
+  std::vector<SkinError> errs(weights.size());
+  const Eigen::Index n = model.numVertices();
+  for (size_t i = 0; i < weights.size(); ++i) {
+    double sum = 0.0;
+    for (Eigen::Index t = 0; t < posed[0].cols(); ++t)
+      for (Eigen::Index v = 0; v < n; ++v) {
+        const double d =
+            (posed[0].col(t).segment<3>(3 * v) - posed[i + 1].col(t).segment<3>(3 * v)).norm();
+        sum += d;
+        errs[i].max_m = std::max(errs[i].max_m, d);
+      }
+    errs[i].mean_m = poses > 0 ? sum / (static_cast<double>(poses) * n) : 0.0;
+  }
   return errs;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <thread>
+#include <utility>
 
 #include "core/math/forward_batch_kernels.h"
 
@@ -36,9 +37,11 @@ Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, c
 
 using Transforms = Eigen::Matrix<float, Eigen::Dynamic, 12, Eigen::RowMajor>;
 
+// One block of frames: the corrective GEMM once, then the skinning of every
+// frame with each weight set into its output.
 void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs, const BatchInput& in,
-              const Eigen::MatrixXf& weights, bool simd, int first, int count,
-              Eigen::MatrixXd* out) {
+              const std::vector<Eigen::MatrixXf>& weights, bool simd, int first, int count,
+              std::vector<Eigen::MatrixXd>* out) {
   const int n = static_cast<int>(model.numVertices()), p = model.numPoseFeatures();
   Eigen::MatrixXf features(p, count);
   for (int t = 0; t < count; ++t)
@@ -48,17 +51,23 @@ void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs, con
   for (int t = 0; t < count; ++t) {
     const Transforms a =
         restRelative(model, (*in.frames)[first + t], in.body->joints).cast<float>();
-    batch::skinFrame(weights.data(), n, model.numJoints(), a.data(), in.body->v_shaped.data(),
-                     v_posed.col(t).data(), out->col(first + t).data(), simd);
+    for (size_t s = 0; s < weights.size(); ++s)
+      batch::skinFrame(weights[s].data(), n, model.numJoints(), a.data(), in.body->v_shaped.data(),
+                       v_posed.col(t).data(), (*out)[s].col(first + t).data(), simd);
   }
 }
 
 }  // namespace
 
-Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
+std::vector<Eigen::MatrixXd> forwardBatchSkins(const BodyModel& model, const BatchInput& in,
+                                               const std::vector<const Eigen::MatrixXd*>& skins) {
   const int frames = static_cast<int>(in.frames->size());
-  Eigen::MatrixXd out(3 * model.numVertices(), frames);
-  const Eigen::MatrixXf weights = (in.weights ? *in.weights : model.weights).cast<float>();
+  std::vector<Eigen::MatrixXf> weights;
+  std::vector<Eigen::MatrixXd> out;
+  for (const Eigen::MatrixXd* w : skins) {
+    weights.push_back((w ? *w : model.weights).cast<float>());
+    out.emplace_back(3 * model.numVertices(), frames);
+  }
   const batch::PackedPosedirs posedirs =
       batch::packPosedirs(model.posedirs.data(), static_cast<int>(model.posedirs.rows()),
                           static_cast<int>(model.posedirs.cols()));
@@ -76,6 +85,10 @@ Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
   work(0, workers);
   for (std::thread& t : pool) t.join();
   return out;
+}
+
+Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
+  return std::move(forwardBatchSkins(model, in, {in.weights}).front());
 }
 
 }  // namespace smpl

@@ -28,4 +28,11 @@ struct BatchInput {
 // Returns 3N x T: column t holds frame t's vertices (x0 y0 z0 x1 ...).
 Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& input);
 
+// The same frames skinned with several weight matrices (each N x K; null =
+// the model's; input.weights is ignored): one 3N x T result per matrix, in
+// order. The pose correctives are computed once per block for all of them,
+// so comparing S skins costs one corrective GEMM, not S (pruning_error).
+std::vector<Eigen::MatrixXd> forwardBatchSkins(const BodyModel& model, const BatchInput& input,
+                                               const std::vector<const Eigen::MatrixXd*>& skins);
+
 }  // namespace smpl
