@@ -266,6 +266,16 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        return s->writer_options.fbx_version = *c == 0 ? 7400 : 7500, Status();
      }},
+    {"--fbx-compress-level", nullptr, "N", Applies::Fbx, nullptr,
+     "array compression, as the FBX SDK's EXP_FBX_COMPRESS_LEVEL: 0 = stored uncompressed "
+     "(fastest to write and read, largest), 1..12 = deflate level (default 1)",
+     [](V v, S* s) {
+       Status st = intInto(v, "--fbx-compress-level", &s->writer_options.fbx_compress_level);
+       if (st &&
+           (s->writer_options.fbx_compress_level < 0 || s->writer_options.fbx_compress_level > 12))
+         return Status(usageError("--fbx-compress-level: expected 0..12, got '" + v + "'"));
+       return st;
+     }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` "
@@ -337,11 +347,14 @@ const std::vector<OptionSpec> kOptions = {
     {"--force", nullptr, nullptr, Applies::Batch, nullptr,
      "rebuild every output, even when up to date",
      [](V, S* s) { return s->force = true, Status(); }},
-    {"--threads", nullptr, "N", Applies::Batch, nullptr, "batch workers (default: all cores)",
+    {"--threads", nullptr, "N", Applies::Any, nullptr,
+     "worker threads: batch files converted at once, and the FBX arrays of one file compressed "
+     "at once (default: all cores; the output does not depend on it)",
      [](V v, S* s) {
        Status st = intInto(v, "--threads", &s->threads);
        if (st && (s->threads < 1 || s->threads > 1024))
          return Status(usageError("--threads: expected 1..1024, got '" + v + "'"));
+       s->writer_options.threads = s->threads;
        return st;
      }},
     {"--shard", nullptr, "I/N", Applies::Batch, nullptr,

@@ -17,6 +17,10 @@ struct WriterOptions {
   std::string buffer_uri;
   std::string fbx_units = "m";  // FBX: "m" or "cm"
   int fbx_version = 7400;       // FBX: 7400 or 7500
+  // FBX: arrays' compression, --fbx-compress-level (the FBX SDK's
+  // EXP_FBX_COMPRESS_LEVEL): 0 stored uncompressed, 1..12 libdeflate level.
+  int fbx_compress_level = 1;
+  int threads = 0;  // FBX: compression workers (--threads; 0 = all cores); same bytes for any
   // glTF compact encodings (each optional; see README "Size"):
   double morph_epsilon =
       0.0;  // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors

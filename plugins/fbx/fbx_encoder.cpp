@@ -71,7 +71,7 @@ FbxProperty encodeArray(char type, const std::vector<T>& values) {
 }
 
 // count + raw -> count, encoding 1, compressed length, zlib stream (raw
-// storage if compression fails, which it only does when out of memory).
+// storage, encoding 0, without a compressor: level 0, or out of memory).
 // libdeflate compresses the whole buffer in one call, several times faster
 // than zlib's compress2 at the same level; the stream is a standard zlib one.
 std::string deflatePayload(libdeflate_compressor* compressor, const std::string& pending) {
@@ -102,21 +102,25 @@ void collectDeflates(const FbxNode& n, std::vector<const FbxProperty*>* pending)
   for (const FbxNode& child : n.children) collectDeflates(child, pending);
 }
 
-// Compress every deferred array on all cores; the result is independent of
-// the thread count (each array is compressed on its own).
-std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector<FbxNode>& top) {
+// Compress every deferred array on `threads` workers (0: all cores); the
+// result is independent of the thread count (each array is compressed on
+// its own, by its own call). Level 0 stores them raw.
+std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector<FbxNode>& top,
+                                                               const FbxEncodeOptions& options) {
   std::vector<const FbxProperty*> pending;
   for (const FbxNode& n : top) collectDeflates(n, &pending);
   std::vector<std::string> done(pending.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
-    libdeflate_compressor* compressor = libdeflate_alloc_compressor(kFbxZlibLevel);
+    libdeflate_compressor* compressor =
+        options.compress_level > 0 ? libdeflate_alloc_compressor(options.compress_level) : nullptr;
     for (size_t i; (i = next++) < pending.size();)
       done[i] = deflatePayload(compressor, pending[i]->payload);
     if (compressor) libdeflate_free_compressor(compressor);
   };
-  const size_t threads =
-      std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), pending.size());
+  const size_t wanted = options.threads > 0 ? size_t(options.threads)
+                                            : std::max(1u, std::thread::hardware_concurrency());
+  const size_t threads = std::min<size_t>(wanted, pending.size());
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
@@ -255,11 +259,15 @@ FbxNode& FbxNode::addBoolArray(const std::vector<uint8_t>& v) {
   return *this;
 }
 
-Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version) {
+Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
+                              const FbxEncodeOptions& options) {
   if (version < 7000 || version >= 8000)
     return makeError("FBX: unsupported version " + std::to_string(version) +
                      "; expected 7400 or 7500");
-  const std::unordered_map<const FbxProperty*, std::string> deflated = deflateAll(top);
+  if (options.compress_level < 0 || options.compress_level > kFbxMaxZlibLevel)
+    return makeError("FBX: compression level " + std::to_string(options.compress_level) +
+                     "; expected 0 (stored) to 12");
+  const std::unordered_map<const FbxProperty*, std::string> deflated = deflateAll(top, options);
   Encoder enc;
   enc.deflated = &deflated;
   enc.wide = version >= 7500;

@@ -13,9 +13,11 @@
 //
 // Property payloads are encoded when added, so a node owns its bytes and the
 // encoder only lays them out. Arrays larger than 128 bytes are zlib
-// compressed at a fixed level (deterministic for a given zlib); that
-// compression is deferred to encodeFbx(), which runs it on all cores (it is
-// most of the time of a file with hundreds of blend shapes).
+// compressed (libdeflate, level FbxEncodeOptions::compress_level; level 0
+// stores them raw, array encoding 0); that compression is deferred to
+// encodeFbx(), which runs it on FbxEncodeOptions::threads workers (it is most
+// of the time of a file with hundreds of blend shapes). Each array is
+// compressed on its own, so the bytes do not depend on the thread count.
 //
 //   FbxNode root;
 //   FbxNode& n = root.add("Vertices");
@@ -65,12 +67,21 @@ struct FbxNode {
 
 // Arrays whose raw size exceeds this many bytes are deflated.
 constexpr size_t kFbxCompressThreshold = 128;
-// Compression level (libdeflate) for arrays: fast, and fixed so output is stable.
+// Default compression level (libdeflate) for arrays: fast. Same level, same bytes.
 constexpr int kFbxZlibLevel = 1;
+constexpr int kFbxMaxZlibLevel = 12;  // libdeflate's highest
+
+struct FbxEncodeOptions {
+  // 0: arrays stored uncompressed (encoding 0, what the FBX SDK writes for
+  // EXP_FBX_COMPRESS_LEVEL 0); 1..12: libdeflate level (encoding 1, zlib).
+  int compress_level = kFbxZlibLevel;
+  int threads = 0;  // compression workers; 0 = all cores. Never changes the bytes.
+};
 
 // Serialises top-level nodes as a complete binary FBX file. version is 7400
 // (32-bit record headers) or 7500 (64-bit). Fails on names longer than 255
-// bytes or, for 7400, files beyond 4 GiB.
-Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version);
+// bytes, for 7400 on files beyond 4 GiB, and on a level outside 0..12.
+Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
+                              const FbxEncodeOptions& options = FbxEncodeOptions());
 
 }  // namespace smpl

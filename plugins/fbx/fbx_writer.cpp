@@ -13,7 +13,10 @@ class FbxWriter : public Writer {
   Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
     Result<std::vector<FbxNode>> scene = buildFbxScene(asset, options);
     if (!scene) return scene.error();
-    return encodeFbx(*scene, static_cast<uint32_t>(options.fbx_version));
+    FbxEncodeOptions encode;
+    encode.compress_level = options.fbx_compress_level;
+    encode.threads = options.threads;
+    return encodeFbx(*scene, static_cast<uint32_t>(options.fbx_version), encode);
   }
 };
 

@@ -107,6 +107,34 @@ TEST(FbxAssimp, MorphTargetsByName) {
   }
 }
 
+// --fbx-compress-level 0: every array stored raw (encoding 0) reads back as
+// the asset, like the deflated default.
+TEST(FbxAssimp, UncompressedArraysReadBack) {
+  Asset a = fbx_test::testAsset();
+  WriterOptions o;
+  o.fbx_compress_level = 0;
+  Imported in;
+  importAsset(a, o, in);
+  const aiMesh* mesh = in.scene->mMeshes[0];
+  ASSERT_EQ(mesh->mNumVertices, unsigned(a.mesh.triangles.size()));
+  ASSERT_EQ(mesh->mNumAnimMeshes, a.mesh.morph_targets.size());
+  ASSERT_EQ(mesh->mNumBones, unsigned(a.skeleton.names.size()));
+  for (unsigned i = 0; i < mesh->mNumVertices; ++i) {
+    const int v = a.mesh.triangles(i / 3, i % 3);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(mesh->mVertices[i][c], a.mesh.positions(v, c), 1e-6);
+      for (unsigned t = 0; t < mesh->mNumAnimMeshes; ++t)
+        EXPECT_NEAR(mesh->mAnimMeshes[t]->mVertices[i][c] - mesh->mVertices[i][c],
+                    a.mesh.morph_targets[t].deltas(v, c), 1e-6);
+    }
+  }
+  double weight_sum = 0.0;
+  for (unsigned b = 0; b < mesh->mNumBones; ++b)
+    for (unsigned w = 0; w < mesh->mBones[b]->mNumWeights; ++w)
+      weight_sum += mesh->mBones[b]->mWeights[w].mWeight;
+  EXPECT_NEAR(weight_sum, double(mesh->mNumVertices), 1e-4);  // each corner's weights sum to 1
+}
+
 TEST(FbxAssimp, AnimationChannelsPerJoint) {
   Asset a = fbx_test::testAsset();
   Imported in;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -123,6 +124,93 @@ TEST(FbxEncoder, LargeArraysAreZlibCompressed) {
             Z_OK);
   EXPECT_EQ(size, sizeof(double) * 100);
   EXPECT_EQ(back, values);
+}
+
+// The single-array file of LargeArraysAreZlibCompressed at `level`: the
+// property's payload (count, encoding, byte length, data).
+std::string arrayPayload(const std::vector<double>& values, int level) {
+  std::vector<FbxNode> top(1, FbxNode("N"));
+  top[0].addDoubleArray(values);
+  FbxEncodeOptions o;
+  o.compress_level = level;
+  Result<std::string> file = encodeFbx(top, 7400, o);
+  EXPECT_TRUE(file.ok()) << file.message();
+  if (!file) return "";
+  const size_t at = 27 + 12 + 1 + 1;
+  EXPECT_EQ((*file)[at], 'd');
+  uint32_t payload_length;
+  std::memcpy(&payload_length, file->data() + at + 1 + 8, 4);
+  return file->substr(at + 1, 12 + payload_length);
+}
+
+TEST(FbxEncoder, LevelZeroStoresArraysUncompressed) {
+  std::vector<double> values(100);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = 0.5 * double(i);
+  const std::string p = arrayPayload(values, 0);
+  uint32_t count, encoding, length;
+  std::memcpy(&count, p.data(), 4);
+  std::memcpy(&encoding, p.data() + 4, 4);
+  std::memcpy(&length, p.data() + 8, 4);
+  EXPECT_EQ(count, 100u);
+  EXPECT_EQ(encoding, 0u);  // FBX array encoding 0: the raw little-endian values
+  ASSERT_EQ(length, sizeof(double) * 100);
+  ASSERT_EQ(p.size(), 12 + length);
+  std::vector<double> back(100);
+  std::memcpy(back.data(), p.data() + 12, length);
+  EXPECT_EQ(back, values);
+}
+
+TEST(FbxEncoder, EveryLevelInflatesToTheSameValuesAndBadLevelsAreRefused) {
+  std::vector<double> values(4000);
+  for (size_t i = 0; i < values.size(); ++i) values[i] = std::sin(0.01 * double(i)) * (i % 7);
+  for (int level : {1, 6, 12}) {
+    const std::string p = arrayPayload(values, level);
+    uint32_t encoding, length;
+    std::memcpy(&encoding, p.data() + 4, 4);
+    std::memcpy(&length, p.data() + 8, 4);
+    EXPECT_EQ(encoding, 1u) << level;
+    std::vector<double> back(values.size());
+    uLongf size = sizeof(double) * values.size();
+    ASSERT_EQ(uncompress(reinterpret_cast<Bytef*>(back.data()), &size,
+                         reinterpret_cast<const Bytef*>(p.data() + 12), length),
+              Z_OK)
+        << level;
+    EXPECT_EQ(back, values) << level;
+  }
+  std::vector<FbxNode> top(1, FbxNode("N"));
+  for (int bad : {-1, 13}) {
+    FbxEncodeOptions o;
+    o.compress_level = bad;
+    Result<std::string> out = encodeFbx(top, 7400, o);
+    ASSERT_FALSE(out.ok()) << bad;
+    EXPECT_NE(out.message().find("compression level"), std::string::npos) << out.message();
+  }
+}
+
+// Arrays are compressed on several threads; which thread takes which array
+// must never show in the bytes (every level, including stored).
+TEST(FbxEncoder, BytesDoNotDependOnTheThreadCount) {
+  std::vector<FbxNode> top(1, FbxNode("Objects"));
+  for (int a = 0; a < 40; ++a) {
+    std::vector<float> values(500 + 37 * a);
+    for (size_t i = 0; i < values.size(); ++i)
+      values[i] = float(std::sin(0.003 * double(i * (a + 1))));
+    top[0].add("Shape" + std::to_string(a)).addFloatArray(values);
+  }
+  for (int level : {0, 1, 6}) {
+    FbxEncodeOptions one;
+    one.compress_level = level;
+    one.threads = 1;
+    Result<std::string> reference = encodeFbx(top, 7400, one);
+    ASSERT_TRUE(reference.ok()) << reference.message();
+    for (int threads : {2, 3, 8, 0}) {
+      FbxEncodeOptions o = one;
+      o.threads = threads;
+      Result<std::string> out = encodeFbx(top, 7400, o);
+      ASSERT_TRUE(out.ok()) << out.message();
+      EXPECT_TRUE(*out == *reference) << "level " << level << ", " << threads << " threads";
+    }
+  }
 }
 
 TEST(FbxEncoder, RejectsBadNamesAndVersions) {

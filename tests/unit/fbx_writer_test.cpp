@@ -550,6 +550,11 @@ TEST(FbxWriter, WritesBlenderRoundTripInputs) {
     std::ifstream check(path, std::ios::binary | std::ios::ate);
     EXPECT_EQ(size_t(check.tellg()), bytes->size());
   }
+  WriterOptions stored;  // --fbx-compress-level 0: arrays uncompressed, same expectations as "m"
+  stored.fbx_compress_level = 0;
+  Result<std::string> raw = fbxWriter().serialize(a, stored);
+  ASSERT_TRUE(raw.ok());
+  std::ofstream(dir + "/synthetic_stored.fbx", std::ios::binary) << *raw;
   std::ofstream(dir + "/synthetic.expect.json") << blenderExpectations(a).dump(1);
 }
 

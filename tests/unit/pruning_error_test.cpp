@@ -50,8 +50,8 @@ void checkModel(const BodyModel& model, const std::vector<double>& betas) {
   o.betas = betas;
   o.max_influences = 3;
   o.skin_weights = SkinWeightMethod::Optimized;
-  Result<ShapedBody> body = shapeBody(
-      model, Eigen::Map<const Eigen::VectorXd>(betas.data(), Eigen::Index(betas.size())));
+  Result<ShapedBody> body =
+      shapeBody(model, Eigen::Map<const Eigen::VectorXd>(betas.data(), Eigen::Index(betas.size())));
   ASSERT_TRUE(body.ok()) << body.message();
   const SparseSkin fitted = exportSkin(model, *body, o);
   Result<PruningError> e = measurePruningError(model, o, poses, &fitted);

@@ -4,7 +4,8 @@
 //    warm (read once first), median of 5, MB of file per wall second;
 //  - whole-process CLI export: smpl-export --model <stand-in .pkl> --out
 //    x.glb / x.fbx, process start to exit, median of 3;
-//  - in-process write: GLB and FBX serialisation of the same asset, median of 5;
+//  - in-process write: GLB and FBX (--fbx-compress-level 1, 0, 6) serialisation
+//    of the same asset, median of 5, with the file sizes;
 //  - forward pass: forwardBatch on 1 thread vs smplx.SMPL (the authors'
 //    PyTorch code, tools/bench/smplx_forward_time.py) on 1 thread, same model,
 //    same frame count and batch size, CPU time per frame (robust to other load);
@@ -149,51 +150,74 @@ void compareLoad(const std::string& dir) {
 }
 
 struct CliTimes {
-  Timing glb, fbx;
+  Timing glb, fbx, glb_truncated;  // default options; --skin-weights truncated (no weight fit)
   std::string glb_path;
 };
 
 CliTimes compareCli(const std::string& dir) {
   CliTimes t;
   const std::string model = (fs::path(dir) / kStandins[0]).string();
-  for (const char* ext : {"glb", "fbx"}) {
-    const std::string out = (fs::path(dir) / (std::string("cli.") + ext)).string();
+  struct Run {
+    const char* ext;
+    const char* extra;
+    Timing* timing;
+  };
+  for (const Run& r : {Run{"glb", "", &t.glb}, Run{"fbx", "", &t.fbx},
+                       Run{"glb", " --skin-weights truncated", &t.glb_truncated}}) {
+    const std::string stem = *r.extra ? "cli_truncated." : "cli.";
+    const std::string out = (fs::path(dir) / (stem + r.ext)).string();
     std::string log;
     bool ok = true;
     const Timing s = medianSeconds(
         3,
         [&] {
-          ok = ok &&
-               run(quote(SMPL_EXPORT_BIN) + " --model " + quote(model) + " --out " + quote(out),
-                   &log) == 0;
+          ok = ok && run(quote(SMPL_EXPORT_BIN) + " --model " + quote(model) + " --out " +
+                             quote(out) + r.extra,
+                         &log) == 0;
         },
         /*children=*/true);
     if (!ok) std::fprintf(stderr, "smpl-bench: smpl-export failed: %s\n", log.c_str());
-    (std::string(ext) == "glb" ? t.glb : t.fbx) = ok ? s : Timing();
-    if (std::string(ext) == "glb") t.glb_path = out;
+    *r.timing = ok ? s : Timing();
+    if (r.timing == &t.glb) t.glb_path = out;
   }
   row("whole-process CLI export, .pkl -> .glb",
       fmt("%.2f", t.glb.wall) + fmt(" / %.2f s", t.glb.cpu), "", "");
+  row("whole-process CLI, .pkl -> .glb, truncated weights",
+      fmt("%.2f", t.glb_truncated.wall) + fmt(" / %.2f s", t.glb_truncated.cpu), "", "");
   row("whole-process CLI export, .pkl -> .fbx",
       fmt("%.2f", t.fbx.wall) + fmt(" / %.2f s", t.fbx.cpu), "",
       fmt("%.2f", t.fbx.wall / t.glb.wall) + fmt(" / %.2fx GLB", t.fbx.cpu / t.glb.cpu));
   return t;
 }
 
+// GLB, then FBX at --fbx-compress-level 1 (the default), 0 (stored) and 6:
+// serialisation time and file size (what the README's FBX level table shows).
 void compareWrite(const BodyModel& model) {
   Result<Asset> asset = buildAsset(model, ExportOptions());
   if (!asset) return row("in-process write", asset.message(), "", "");
-  Timing t[2];
-  int i = 0;
-  for (const char* ext : {".glb", ".fbx"}) {
-    const Writer* w = writerForPath(std::string("x") + ext);
-    t[i++] = medianSeconds(5, [&] { (void)w->serialize(*asset, WriterOptions()); });
+  const Writer* glb = writerForPath("x.glb");
+  size_t glb_size = 0;
+  const Timing g = medianSeconds(5, [&] {
+    Result<std::string> b = glb->serialize(*asset, WriterOptions());
+    glb_size = b ? b->size() : 0;
+  });
+  row("in-process write GLB", fmt("%.0f", 1e3 * g.wall) + fmt(" / %.0f ms", 1e3 * g.cpu),
+      fmt("%.1f MB", glb_size / 1e6), "");
+  const Writer* fbx = writerForPath("x.fbx");
+  for (int level : {1, 0, 6}) {
+    WriterOptions o;
+    o.fbx_compress_level = level;
+    size_t size = 0;
+    const Timing t = medianSeconds(5, [&] {
+      Result<std::string> b = fbx->serialize(*asset, o);
+      size = b ? b->size() : 0;
+    });
+    const std::string what = "in-process write FBX, --fbx-compress-level " + std::to_string(level) +
+                             (level == 1 ? " (default)" : "");
+    row(what.c_str(), fmt("%.0f", 1e3 * t.wall) + fmt(" / %.0f ms", 1e3 * t.cpu),
+        fmt("%.1f MB", size / 1e6),
+        fmt("%.1f", t.wall / g.wall) + fmt(" / %.1fx GLB", t.cpu / g.cpu));
   }
-  row("in-process write GLB", fmt("%.0f", 1e3 * t[0].wall) + fmt(" / %.0f ms", 1e3 * t[0].cpu), "",
-      "");
-  row("in-process write FBX (deflate on all cores)",
-      fmt("%.0f", 1e3 * t[1].wall) + fmt(" / %.0f ms", 1e3 * t[1].cpu), "",
-      fmt("%.1f", t[1].wall / t[0].wall) + fmt(" / %.1fx GLB", t[1].cpu / t[0].cpu));
 }
 
 void compareForward(const BodyModel& model, const CompareOptions& o, const std::string& npz) {
@@ -250,6 +274,11 @@ void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::str
       fmt("%.2f", cli.glb.wall) + fmt(" / %.2f s", cli.glb.cpu),
       fmt("Blender 3.4 %.2f", gltf.wall) + fmt(" / %.2f s", gltf.cpu),
       fmt("%.1f", gltf.wall / cli.glb.wall) + fmt(" / %.1fx", gltf.cpu / cli.glb.cpu));
+  row("Blender glTF exporter vs CLI, truncated weights",
+      fmt("%.2f", cli.glb_truncated.wall) + fmt(" / %.2f s", cli.glb_truncated.cpu),
+      fmt("Blender 3.4 %.2f", gltf.wall) + fmt(" / %.2f s", gltf.cpu),
+      fmt("%.1f", gltf.wall / cli.glb_truncated.wall) +
+          fmt(" / %.1fx", gltf.cpu / cli.glb_truncated.cpu));
   row("Blender FBX exporter vs whole-process CLI",
       fmt("%.2f", cli.fbx.wall) + fmt(" / %.2f s", cli.fbx.cpu),
       fmt("Blender 3.4 %.2f", fbx.wall) + fmt(" / %.2f s", fbx.cpu),
