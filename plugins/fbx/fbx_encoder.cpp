@@ -108,7 +108,8 @@ void collectDeflates(const FbxNode& n, std::vector<const FbxProperty*>* pending)
 std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector<FbxNode>& top,
                                                                const FbxEncodeOptions& options) {
   std::vector<const FbxProperty*> pending;
-  for (const FbxNode& n : top) collectDeflates(n, &pending);
+  if (options.compress_level > 0)  // level 0: the Encoder stores them raw, without a copy here
+    for (const FbxNode& n : top) collectDeflates(n, &pending);
   std::vector<std::string> done(pending.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
@@ -132,7 +133,8 @@ std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector
 
 struct Encoder {
   const std::unordered_map<const FbxProperty*, std::string>* deflated = nullptr;
-  bool wide = false;  // 64-bit record headers (7500+)
+  bool stored = false;  // level 0: deferred arrays written raw (encoding 0)
+  bool wide = false;    // 64-bit record headers (7500+)
   std::string out;
   std::string error;
 
@@ -154,8 +156,31 @@ struct Encoder {
 
   void nullRecord() { out.append(headerSize() + 1, '\0'); }
 
-  const std::string& payloadOf(const FbxProperty& p) const {
-    return p.deflate ? deflated->at(&p) : p.payload;
+  // A deferred array's payload is count + raw bytes; stored, it gains the
+  // encoding (0) and byte length after the count.
+  size_t payloadSize(const FbxProperty& p) const {
+    if (!p.deflate) return p.payload.size();
+    return stored ? p.payload.size() + 8 : deflated->at(&p).size();
+  }
+  void putPayload(const FbxProperty& p) {
+    if (!p.deflate) {
+      out += p.payload;
+    } else if (!stored) {
+      out += deflated->at(&p);
+    } else {
+      out.append(p.payload, 0, 4);
+      putLE(out, uint32_t(0));
+      putLE(out, static_cast<uint32_t>(p.payload.size() - 4));
+      out.append(p.payload, 4, std::string::npos);
+    }
+  }
+
+  // An upper bound of the encoded size of `n` (reserved once: no regrowth).
+  size_t sizeBound(const FbxNode& n) const {
+    size_t bytes = 2 * headerSize() + 2 + n.name.size();
+    for (const FbxProperty& p : n.properties) bytes += 1 + payloadSize(p);
+    for (const FbxNode& child : n.children) bytes += sizeBound(child);
+    return bytes;
   }
 
   bool node(const FbxNode& n) {
@@ -165,7 +190,7 @@ struct Encoder {
     }
     size_t header_at = out.size();
     uint64_t prop_bytes = 0;
-    for (const FbxProperty& p : n.properties) prop_bytes += 1 + payloadOf(p).size();
+    for (const FbxProperty& p : n.properties) prop_bytes += 1 + payloadSize(p);
     putHeaderField(0);  // end offset, patched below
     putHeaderField(n.properties.size());
     putHeaderField(prop_bytes);
@@ -173,7 +198,7 @@ struct Encoder {
     out += n.name;
     for (const FbxProperty& p : n.properties) {
       out.push_back(p.type);
-      out += payloadOf(p);
+      putPayload(p);
     }
     for (const FbxNode& child : n.children)
       if (!node(child)) return false;
@@ -270,7 +295,11 @@ Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
   const std::unordered_map<const FbxProperty*, std::string> deflated = deflateAll(top, options);
   Encoder enc;
   enc.deflated = &deflated;
+  enc.stored = options.compress_level == 0;
   enc.wide = version >= 7500;
+  size_t bound = 27 + enc.headerSize() + 1 + 200;  // header, top null record, footer
+  for (const FbxNode& n : top) bound += enc.sizeBound(n);
+  enc.out.reserve(bound);
   enc.out.append(kMagic, kMagicSize);
   putLE(enc.out, version);
   for (const FbxNode& n : top)

@@ -126,7 +126,7 @@ bool ensureStandins(const std::string& dir) {
 
 void row(const char* what, const std::string& ours, const std::string& peer,
          const std::string& ratio) {
-  std::printf("| %-44s | %-16s | %-26s | %-12s |\n", what, ours.c_str(), peer.c_str(),
+  std::printf("| %-56s | %-16s | %-26s | %-16s |\n", what, ours.c_str(), peer.c_str(),
               ratio.c_str());
 }
 
@@ -302,8 +302,8 @@ int runCompare(const CompareOptions& o) {
       "Times are wall / CPU (user + system, all threads); ratios are peer / smpl-export.\n\n",
       static_cast<long long>(model->numVertices()), model->numPoseFeatures(), o.frames);
   row("measure", "smpl-export", "peer", "ratio");
-  std::printf("|%s|%s|%s|%s|\n", std::string(46, '-').c_str(), std::string(18, '-').c_str(),
-              std::string(28, '-').c_str(), std::string(14, '-').c_str());
+  std::printf("|%s|%s|%s|%s|\n", std::string(58, '-').c_str(), std::string(18, '-').c_str(),
+              std::string(28, '-').c_str(), std::string(18, '-').c_str());
   compareLoad(dir);
   const CliTimes cli = compareCli(dir);
   compareWrite(*model);
