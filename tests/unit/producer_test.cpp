@@ -26,7 +26,7 @@ std::string hashOf(std::vector<const char*> argv) {
 TEST(Producer, OptionsEnterByTheTablesHashedColumn) {
   const std::string plain = hashOf({"--model", "builtin", "--out", "a.glb"});
   EXPECT_EQ(hashOf({"--model", "builtin", "--out", "b/c.glb", "-q", "--memory-limit", "1G"}),
-            plain);                                                               // Hashed::No
+            plain);                                                                   // Hashed::No
   EXPECT_NE(hashOf({"--model", "builtin", "--out", "a.glb", "--name", "x"}), plain);  // Value
 }
 
