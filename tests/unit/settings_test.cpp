@@ -31,6 +31,31 @@ TEST(Settings, DefaultsAndValues) {
   EXPECT_FALSE(eq->export_options.correctives);
 }
 
+TEST(Settings, FbxCompressLevelAndThreads) {
+  Result<Settings> d = parse({"--model", "builtin", "--out", "a.fbx"});
+  ASSERT_TRUE(d.ok()) << d.message();
+  EXPECT_EQ(d->writer_options.fbx_compress_level, 1);
+  EXPECT_EQ(d->writer_options.threads, 0);  // all cores
+  for (int level : {0, 12}) {
+    const std::string v = std::to_string(level);
+    Result<Settings> s =
+        parse({"--model", "builtin", "--out", "a.fbx", "--fbx-compress-level", v.c_str()});
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_EQ(s->writer_options.fbx_compress_level, level);
+  }
+  for (const char* bad : {"13", "-1", "x"}) {
+    Result<Settings> s =
+        parse({"--model", "builtin", "--out", "a.fbx", "--fbx-compress-level", bad});
+    ASSERT_FALSE(s.ok()) << bad;
+    EXPECT_NE(s.message().find("--fbx-compress-level"), std::string::npos) << s.message();
+    EXPECT_EQ(s.kind(), ErrorKind::Usage);
+  }
+  // One export (not batch mode): --threads sets the FBX compression workers.
+  Result<Settings> t = parse({"--model", "builtin", "--out", "a.fbx", "--threads", "3"});
+  ASSERT_TRUE(t.ok()) << t.message();
+  EXPECT_EQ(t->writer_options.threads, 3);
+}
+
 TEST(Settings, RejectsBeforeWork) {
   struct Bad {
     std::vector<const char*> args;
