@@ -118,10 +118,10 @@ const std::vector<OptionSpec> kOptions = {
      "per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz, AMASS "
      "smplh/male/model.npz, "
      "...); or the built-in demo body",
-     [](V v, S* s) { return s->model = v, Status(); }},
+     [](V v, S* s) { return s->model = v, Status(); }, Hashed::Content},
     {"--out", nullptr, "FILE", Applies::Single, nullptr,
      "output; format from the extension (.glb, .gltf, .fbx). Also writes FILE.smpl.json (metadata)",
-     [](V v, S* s) { return s->out = v, Status(); }},
+     [](V v, S* s) { return s->out = v, Status(); }, Hashed::No},
     {"--betas", nullptr, "v,v,...", Applies::Any, nullptr,
      "shape coefficients (fewer than the model has are zero-padded)",
      [](V v, S* s) {
@@ -132,7 +132,7 @@ const std::vector<OptionSpec> kOptions = {
     {"--betas-file", nullptr, "FILE", Applies::Any, nullptr,
      "betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas: identical rows -> that "
      "row, else their mean (a note gives the deviation)",
-     [](V v, S* s) { return s->betas_file = v, Status(); }},
+     [](V v, S* s) { return s->betas_file = v, Status(); }, Hashed::Content},
     {"--expression", nullptr, "v,v,...", Applies::Any, nullptr, "SMPL-X expression coefficients",
      [](V v, S* s) {
        Result<std::vector<double>> list = parseList(v, "--expression");
@@ -225,7 +225,7 @@ const std::vector<OptionSpec> kOptions = {
      "UVs (seams split vertices). Default: the model file's own vt/ft if it has them (SMPL-X "
      "release). OBJ sharing the model's vertex order, or a numpy pair <stem>_uv.npy (U,2) + "
      "<stem>_ft.npy (F,3) (give either); none: no UVs",
-     [](V v, S* s) { return s->export_options.uv_obj = v, Status(); }},
+     [](V v, S* s) { return s->export_options.uv_obj = v, Status(); }, Hashed::Content},
     {"--name", nullptr, "NAME", Applies::Any, nullptr, "mesh name (default body)",
      [](V v, S* s) { return s->export_options.name = v, Status(); }},
     {"--dmpl", nullptr, "FILE|DIR", Applies::Any, nullptr,
@@ -233,7 +233,7 @@ const std::vector<OptionSpec> kOptions = {
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
      "--motion at weight 0. DIR: per motion gender, DIR/dmpls/<gender>/model.npz or "
      "DIR/<gender>/model.npz (AMASS layout)",
-     [](V v, S* s) { return s->dmpl = v, Status(); }},
+     [](V v, S* s) { return s->dmpl = v, Status(); }, Hashed::Content},
     {"--dmpl-count", nullptr, "N", Applies::Any, nullptr,
      "keep the first N DMPL directions (default all)",
      [](V v, S* s) {
@@ -272,7 +272,7 @@ const std::vector<OptionSpec> kOptions = {
      "ExPose), "
      "AIST++ .pkl):",
      "bake FILE as an animation (repeatable: one animation each)",
-     [](V v, S* s) { return s->motions.push_back(v), Status(); }},
+     [](V v, S* s) { return s->motions.push_back(v), Status(); }, Hashed::Content},
     {"--source-fps", nullptr, "R", Applies::Motion, nullptr,
      "the motion's frame rate: overrides a stored one; without it a file that stores none is read "
      "at 30 fps (AIST++: 60) and a note says so",
@@ -321,10 +321,10 @@ const std::vector<OptionSpec> kOptions = {
      "convert every .npz/.json/.smpl/.pkl in DIR, in parallel, skipping outputs made from the same "
      "inputs and options (recorded in the sidecar); per-file errors do not stop the batch; files "
      "with no pose keys (AMASS shape.npz, *_stagei.npz) are skipped with a note",
-     [](V v, S* s) { return s->motion_dir = v, Status(); }},
+     [](V v, S* s) { return s->motion_dir = v, Status(); }, Hashed::No},
     {"--out-dir", nullptr, "DIR", Applies::Batch, nullptr,
      "where batch outputs go (DIR/<motion stem>.<format>)",
-     [](V v, S* s) { return s->out_dir = v, Status(); }},
+     [](V v, S* s) { return s->out_dir = v, Status(); }, Hashed::No},
     {"--format", nullptr, "glb|gltf|fbx", Applies::Batch, nullptr,
      "batch output format (default glb)",
      [](V v, S* s) {
@@ -334,22 +334,23 @@ const std::vector<OptionSpec> kOptions = {
      }},
     {"--force", nullptr, nullptr, Applies::Batch, nullptr,
      "rebuild every output, even when up to date",
-     [](V, S* s) { return s->force = true, Status(); }},
+     [](V, S* s) { return s->force = true, Status(); }, Hashed::No},
     {"--threads", nullptr, "N", Applies::Batch, nullptr, "batch workers (default: all cores)",
      [](V v, S* s) {
        Status st = intInto(v, "--threads", &s->threads);
        if (st && (s->threads < 1 || s->threads > 1024))
          return Status(usageError("--threads: expected 1..1024, got '" + v + "'"));
        return st;
-     }},
+     },
+     Hashed::No},
     {"--shard", nullptr, "I/N", Applies::Batch, nullptr,
      "convert only share I of N (0 <= I < N): the motions sorted by path relative to DIR, the one "
      "at position p belongs to shard p mod N",
-     [](V v, S* s) { return parseShard(v, s); }},
+     [](V v, S* s) { return parseShard(v, s); }, Hashed::No},
     {"--manifest", nullptr, "FILE", Applies::Batch, nullptr,
      "write one JSON line per motion (input, output, bytes, sha256, seconds, status); shards' "
      "manifests concatenate",
-     [](V v, S* s) { return s->manifest = v, Status(); }},
+     [](V v, S* s) { return s->manifest = v, Status(); }, Hashed::No},
 
     {"--memory-limit", nullptr, "SIZE", Applies::Any, "General:",
      "memory budget for everything the run reads or builds, e.g. 512M, 4G (default: the smaller of "
@@ -360,13 +361,14 @@ const std::vector<OptionSpec> kOptions = {
        Result<uint64_t> m = parseMemorySize(v);
        if (!m) return Status(usageError(m.message()));
        return s->memory_limit = *m, Status();
-     }},
+     },
+     Hashed::No},
     {"--quiet", "-q", nullptr, Applies::Any, nullptr, "no summary",
-     [](V, S* s) { return s->quiet = true, Status(); }},
+     [](V, S* s) { return s->quiet = true, Status(); }, Hashed::No},
     {"--version", nullptr, nullptr, Applies::Any, nullptr, "print the version and exit",
-     [](V, S* s) { return s->version = true, Status(); }},
+     [](V, S* s) { return s->version = true, Status(); }, Hashed::No},
     {"--help", "-h", nullptr, Applies::Any, nullptr, "print this text and exit",
-     [](V, S* s) { return s->help = true, Status(); }},
+     [](V, S* s) { return s->help = true, Status(); }, Hashed::No},
 };
 
 constexpr size_t kHelpColumn = 25, kWidth = 100;

@@ -23,6 +23,14 @@ enum class Applies {
   Fbx,     // only FBX output (.fbx, or --format fbx)
 };
 
+// How an option enters the producer hash (cli/producer.h), which decides
+// whether an existing output is up to date.
+enum class Hashed {
+  Value,    // as given: it changes the bytes written
+  No,       // it does not change the bytes written (--threads, --out, ...)
+  Content,  // it names an input, which producer.cpp hashes by content
+};
+
 struct OptionSpec {
   const char* name;   // "--max-influences"
   const char* alias;  // a short form ("-q"), or nullptr
@@ -32,6 +40,7 @@ struct OptionSpec {
   const char* help;     // usage text; '\n' continues on the next line
   // Stores the value into the settings (a flag gets ""). Errors name the option.
   Status (*apply)(const std::string& value, Settings* s);
+  Hashed hashed = Hashed::Value;
 };
 
 // Every option, in usage order.

@@ -5,39 +5,31 @@
 #include <filesystem>
 #include <utility>
 
+#include "cli/options.h"
 #include "core/io/file_io.h"
+#include "core/load/model_folder.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
-// Options that do not change the bytes written, and those naming inputs
-// (hashed by identity below).
-const char* const kNotHashed[] = {
-    "--threads",    "--quiet",        "-q",      "--force",    "--out",   "--out-dir",
-    "--motion-dir", "--memory-limit", "--shard", "--manifest", "--model", "--motion",
-    "--betas-file", "--uv",           "--dmpl",  "--help",     "-h",      "--version"};
-
+// Options that change the bytes written (cli/options.h: Hashed::Value); those
+// naming inputs are hashed by content below.
 bool hashed(const std::string& option) {
-  return std::find_if(std::begin(kNotHashed), std::end(kNotHashed),
-                      [&](const char* o) { return option == o; }) == std::end(kNotHashed);
+  const OptionSpec* o = findOption(option);
+  return !o || o->hashed == Hashed::Value;
 }
 
-// A folder (a --model folder): each regular file's name, size and time.
+// A folder (a --model folder): each file a model could be picked from
+// (core/load/model_folder.h, two levels deep), by relative path, size and time.
 void addFolder(const std::string& dir, ContentHash* h) {
-  std::vector<std::string> entries;
-  std::error_code ec;
-  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator();
-       it.increment(ec)) {
-    std::error_code e2;
-    if (!it->is_regular_file(e2)) continue;
-    const auto size = fs::file_size(it->path(), e2);
-    const auto time = fs::last_write_time(it->path(), e2).time_since_epoch().count();
-    entries.push_back(it->path().filename().string() + "/" + std::to_string(size) + "/" +
-                      std::to_string(time));
+  for (const std::string& rel : listModelFolder(dir)) {
+    std::error_code ec;
+    const fs::path path = fs::path(dir) / rel;
+    const auto size = fs::file_size(path, ec);
+    const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
+    h->add(rel + "/" + std::to_string(size) + "/" + std::to_string(time));
   }
-  std::sort(entries.begin(), entries.end());
-  for (const std::string& e : entries) h->add(e);
 }
 
 // An input file by base name and content ("" = not given). Only regular

@@ -5,12 +5,13 @@
 //
 // The hash covers: a schema tag and the exporter version (SMPL_EXPORT_VERSION);
 // every option as given on the command line (name and value, sorted), except
-// those that do not change the output's bytes (--threads, --quiet, --force,
-// --out, --out-dir, --motion-dir, --memory-limit, --shard, --manifest) and
-// those naming input files (--model, --motion, --betas-file, --uv), which
-// enter by identity instead: the model's base name and content (or, for a
-// model folder, each file's name, size and modification time; "builtin" for
-// the demo body), the betas and UV files' content, each motion's base name
+// those the option table marks as not changing the output's bytes
+// (cli/options.h Hashed::No: --threads, --quiet, --force, --out, ...) and
+// those naming input files (Hashed::Content: --model, --motion, --betas-file,
+// --uv, --dmpl), which enter by identity instead: the model's base name and
+// content (or, for a model folder, each file a model could be picked from,
+// two levels deep, by relative path, size and modification time; "builtin"
+// for the demo body), the betas, UV and DMPL files' content, each motion's base name
 // and size. A motion edited in place is caught by the batch's time check
 // (output older than its motion), so motions are not read to hash them.
 #pragma once

@@ -28,6 +28,8 @@ struct MorphTarget {
   float rest_weight = 0.0f;  // weight at the rest pose (non-zero for the unit encoding)
   bool quantized = false;    // stored as normalised int16 (KHR_mesh_quantization): deltas
                              // already divided by their peak s_n, |delta| <= 1 (morph_scales.h)
+  double peak = 1.0;         // s_n the deltas were divided by (1 if not quantized):
+                             // deltas * peak are metres
 };
 
 struct SkinnedMesh {

@@ -57,6 +57,7 @@ void foldMorphScales(Asset* asset) {
     t.quantized = t.quantized || q[n];
     if (s[n] == 1.0) continue;
     t.deltas /= float(s[n]);
+    t.peak *= s[n];
     t.rest_weight = float(t.rest_weight * s[n]);
     for (AnimationClip& clip : asset->animations)
       if (clip.morph_weights.cols() == Eigen::Index(s.size()))

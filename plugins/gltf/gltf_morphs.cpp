@@ -8,8 +8,8 @@
 namespace smpl {
 namespace {
 
-int16_t quantize(float d, double scale) {
-  const double q = std::nearbyint(double(d) / scale * 32767.0);
+int16_t quantize(float d) {
+  const double q = std::nearbyint(double(d) * 32767.0);
   return int16_t(std::max(-32767.0, std::min(32767.0, q)));
 }
 
@@ -36,7 +36,7 @@ int addDense(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
   if (e.quantized) {
     std::vector<int16_t> q(4 * v_count, 0);  // stride 8: vertex attributes are 4-byte aligned
     for (size_t v = 0; v < v_count; ++v)
-      for (int c = 0; c < 3; ++c) q[4 * v + size_t(c)] = quantize(d(Eigen::Index(v), c), e.scale);
+      for (int c = 0; c < 3; ++c) q[4 * v + size_t(c)] = quantize(d(Eigen::Index(v), c));
     const int view = addView(b, q.data(), q.size() * 2, TINYGLTF_TARGET_ARRAY_BUFFER, 8);
     accessor =
         addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, v_count, true);
@@ -66,7 +66,7 @@ int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
     const Eigen::Index r = Eigen::Index(v);
     const double len2 =
         double(d(r, 0)) * d(r, 0) + double(d(r, 1)) * d(r, 1) + double(d(r, 2)) * d(r, 2);
-    if (len2 > e.epsilon * e.epsilon) kept.push_back(uint32_t(v));
+    if (len2 * e.peak * e.peak > e.epsilon * e.epsilon) kept.push_back(uint32_t(v));
   }
   // Sparse only where it is smaller than dense; dense keeps every delta exactly.
   const size_t value_bytes = e.quantized ? 6 : 12, dense_bytes = e.quantized ? 8 : 12;
@@ -86,8 +86,7 @@ int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
   if (e.quantized) {
     std::vector<int16_t> q(3 * kept.size());
     for (size_t i = 0; i < kept.size(); ++i)
-      for (int c = 0; c < 3; ++c)
-        q[3 * i + size_t(c)] = quantize(d(Eigen::Index(kept[i]), c), e.scale);
+      for (int c = 0; c < 3; ++c) q[3 * i + size_t(c)] = quantize(d(Eigen::Index(kept[i]), c));
     value_view = addView(b, q.data(), q.size() * 2, 0);
     shortBounds(q, 3, kept.size() < v_count, &bounds);
   } else {

@@ -295,6 +295,7 @@ void addMorphTargets(GltfBuild& b, const SkinnedMesh& m, const WriterOptions& op
     MorphEncoding e;
     e.epsilon = options.morph_epsilon;
     e.quantized = t.quantized;
+    e.peak = t.peak;
     if (e.quantized) requireExtension(b.model, "KHR_mesh_quantization");
     prim.targets.push_back({{"POSITION", addMorphTarget(b, t.deltas, e)}});
     mesh.weights.push_back(

@@ -152,6 +152,28 @@ TEST(GltfCompact, WriterQuantizesExactlyTheMarkedTargets) {
             0.5f / 32767 + 1e-7f);
 }
 
+// --corrective-epsilon is metres also for quantized targets: the writer
+// compares |d| * peak (the folded deltas are d / s_n), so the kept vertices are
+// those of the unquantized export.
+TEST(GltfCompact, EpsilonIsMetresForQuantizedTargets) {
+  const Asset a = compactAsset();
+  Asset folded = a;
+  foldMorphScales(&folded);
+  WriterOptions o;
+  o.morph_epsilon = 1e-4;
+  Result<DecodedMorphs> d = decodeMorphs(write(folded, o));
+  ASSERT_TRUE(d.ok()) << d.message();
+  const Eigen::MatrixXf& exact = a.mesh.morph_targets[0].deltas;  // quantized, peak ~1e-2
+  int kept = 0;
+  for (int i = 0; i < exact.rows(); ++i) {
+    const bool keep = exact.row(i).cast<double>().norm() > 1e-4;
+    kept += keep;
+    EXPECT_EQ(d->deltas[0].row(i).isZero(), !keep) << "vertex " << i;
+  }
+  EXPECT_GT(kept, 0);
+  EXPECT_LT(kept, exact.rows());
+}
+
 TEST(GltfCompact, FoldingTwiceIsTheIdentity) {
   Asset a = compactAsset();
   foldMorphScales(&a);
