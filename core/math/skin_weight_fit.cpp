@@ -197,7 +197,9 @@ void searchSupport(const VertexFit& v, int m, int exhaustive_limit, std::vector<
 
 // Iteratively reweighted least squares toward the smallest sum of per-pose
 // distances on a fixed support (each step minimises sum_p e_p^2 / e'_p with
-// e' the previous step's distances; floor 1e-3 of their mean).
+// e' the previous step's distances, floor 1e-3 of their mean: a
+// majorise-minimise step that cannot increase the sum, as in Weiszfeld's
+// algorithm for the geometric median).
 void refineL1(const VertexFit& v, const std::vector<int>& subset, int iterations,
               Eigen::VectorXd* u) {
   for (int it = 0; it < iterations; ++it) {
