@@ -135,6 +135,10 @@ struct VertexFit {
 double fitSubset(const VertexFit& v, const Eigen::MatrixXd& gram, const std::vector<int>& subset,
                  Eigen::VectorXd* u) {
   const int m = int(subset.size());
+  if (m == 1) {  // the simplex is one point
+    *u = Eigen::VectorXd::Ones(1);
+    return gram(subset[0], subset[0]);
+  }
   Eigen::MatrixXd d(m, m);
   Eigen::VectorXd prior(m);
   for (int a = 0; a < m; ++a) {
