@@ -155,11 +155,9 @@ const std::vector<OptionSpec> kOptions = {
        return s->export_options.max_influences = *n, Status();
      }},
     {"--skin-weights", nullptr, "truncated|optimized", Applies::Any, nullptr,
-     "truncated: the N largest weights, renormalised; optimized (default): the same or greedily "
-     "chosen "
-     "joints with weights fitted to the unpruned model over 48 training poses (lower error on "
-     "held-out "
-     "poses; the summary shows both)",
+     "truncated: the N largest weights, renormalised; optimized (default): the best-fitting N "
+     "of the vertex's largest weights, with weights fitted to the unpruned model over 48 "
+     "training poses (lower error on held-out poses; the summary shows both)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--skin-weights", {"truncated", "optimized"});
        if (!c) return Status(c.error());

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <thread>
 #include <vector>
@@ -88,62 +89,136 @@ void storeRow(Eigen::Index i, const std::vector<int>& joints, Eigen::VectorXd u,
   }
 }
 
-// D_st = sum_p d_ps . d_pt over the candidate joints, d_ps = a_ps - y_p:
-// with sum u = 1 the residual of weights u is sum_s u_s d_ps, so the fit
-// error over the training poses is u' D u.
-Eigen::MatrixXd residualGram(const BodyModel& model, const TrainingSet& ts, Eigen::Index i,
-                             const std::vector<int>& nonzero, const std::vector<int>& candidates) {
-  const int c = int(candidates.size());
-  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(c, c);
-  Eigen::Matrix3Xd d(3, c);
-  for (size_t p = 0; p < ts.transforms.size(); ++p) {
-    const Eigen::Vector4d x = ts.v_posed.col(Eigen::Index(p)).segment<3>(3 * i).homogeneous();
+// Residuals of the candidate joints alone, stacked over the poses (3T x C):
+// rows 3p..3p+2 of column s are d_ps = a_ps - y_p. With sum u = 1 the
+// residual of weights u at pose p is sum_s u_s d_ps, and the training error
+// is u' (D'D) u.
+Eigen::MatrixXd candidateResiduals(const BodyModel& model, const TrainingSet& ts, Eigen::Index i,
+                                   const std::vector<int>& nonzero,
+                                   const std::vector<int>& candidates) {
+  const Eigen::Index poses = Eigen::Index(ts.transforms.size());
+  Eigen::MatrixXd d(3 * poses, Eigen::Index(candidates.size()));
+  for (Eigen::Index p = 0; p < poses; ++p) {
+    const std::vector<Affine>& a = ts.transforms[size_t(p)];
+    const Eigen::Vector4d x = ts.v_posed.col(p).segment<3>(3 * i).homogeneous();
     Eigen::Vector3d y = Eigen::Vector3d::Zero();
-    for (int k : nonzero) y += model.weights(i, k) * (ts.transforms[p][size_t(k)] * x);
-    for (int s = 0; s < c; ++s) d.col(s) = ts.transforms[p][size_t(candidates[size_t(s)])] * x - y;
-    gram.noalias() += d.transpose() * d;
+    for (int k : nonzero) y += model.weights(i, k) * (a[size_t(k)] * x);
+    for (size_t s = 0; s < candidates.size(); ++s)
+      d.block<3, 1>(3 * p, Eigen::Index(s)) = a[size_t(candidates[s])] * x - y;
   }
-  return gram;
+  return d;
 }
 
-// Largest |sum_s u_s a_ps - y_p| over the training poses.
-double maxResidual(const BodyModel& model, const TrainingSet& ts, Eigen::Index i,
-                   const std::vector<int>& nonzero, const std::vector<int>& joints,
-                   const Eigen::VectorXd& u) {
-  double worst = 0.0;
-  for (size_t p = 0; p < ts.transforms.size(); ++p) {
-    const Eigen::Vector4d x = ts.v_posed.col(Eigen::Index(p)).segment<3>(3 * i).homogeneous();
-    Eigen::Vector3d r = Eigen::Vector3d::Zero();
-    for (int k : nonzero) r -= model.weights(i, k) * (ts.transforms[p][size_t(k)] * x);
-    for (size_t s = 0; s < joints.size(); ++s)
-      r += u(Eigen::Index(s)) * (ts.transforms[p][size_t(joints[s])] * x);
-    worst = std::max(worst, r.norm());
-  }
-  return worst;
+// |sum_s u_s d_ps| per pose p (length T) for weights u on the candidate subset.
+Eigen::VectorXd poseErrors(const Eigen::MatrixXd& d, const std::vector<int>& subset,
+                           const Eigen::VectorXd& u) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(d.rows());
+  for (size_t a = 0; a < subset.size(); ++a) r += u(Eigen::Index(a)) * d.col(subset[a]);
+  Eigen::VectorXd e(d.rows() / 3);
+  for (Eigen::Index p = 0; p < e.size(); ++p) e(p) = r.segment<3>(3 * p).norm();
+  return e;
 }
 
-// Fitted weights on the candidate subset `subset` (indices into the Gram
-// matrix) and their training error u' D u. `prior` (same length) is the
-// ridge's anchor and the solver's feasible start.
-double fitSubset(const Eigen::MatrixXd& gram, const std::vector<int>& subset,
-                 const Eigen::VectorXd& prior, Eigen::VectorXd* u) {
+// One vertex's fitting problem: candidate residuals, their Gram matrix and
+// the model's weights of the candidates.
+struct VertexFit {
+  Eigen::MatrixXd d;      // 3T x C, candidateResiduals
+  Eigen::MatrixXd gram;   // C x C, d'd
+  Eigen::VectorXd model;  // C, the model's weights of the candidates
+  double lambda = 0.1;    // SkinFitOptions::prior_strength
+};
+
+// Fitted weights on the candidate subset `subset` (indices into the
+// candidates) from the Gram matrix `gram`, and their training error u'Du.
+// Prior (the ridge's anchor and the solver's feasible start): the model's
+// weights of the subset, renormalised.
+double fitSubset(const VertexFit& v, const Eigen::MatrixXd& gram, const std::vector<int>& subset,
+                 Eigen::VectorXd* u) {
   const int m = int(subset.size());
+  if (m == 1) {  // the simplex is one point
+    *u = Eigen::VectorXd::Ones(1);
+    return gram(subset[0], subset[0]);
+  }
   Eigen::MatrixXd d(m, m);
-  for (int a = 0; a < m; ++a)
+  Eigen::VectorXd prior(m);
+  for (int a = 0; a < m; ++a) {
+    prior(a) = v.model(subset[size_t(a)]);
     for (int b = 0; b < m; ++b) d(a, b) = gram(subset[size_t(a)], subset[size_t(b)]);
-  const double ridge = 1e-6 * d.trace() / m + 1e-300;
+  }
+  prior /= prior.sum();
+  // 1e-6: keeps the system regular when two joints move a vertex alike.
+  const double ridge = (v.lambda + 1e-6) * d.trace() / m + 1e-300;
   const Eigen::MatrixXd h = 2.0 * (d + ridge * Eigen::MatrixXd::Identity(m, m));
   *u = solveSimplexQp(h, 2.0 * ridge * prior, prior);
   return u->dot(d * *u);
 }
 
-// Support rule: the better (lower training error) of (a) the m largest
-// weights and (b) greedy forward selection among the candidates (each step
-// adds the joint that lowers the fitted error most; ties: larger weight).
-// Guard: if the fit's largest training-pose error exceeds truncation's, the
-// vertex keeps its truncated weights (so the worst case does not grow).
-void fitVertex(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, int m,
-               SparseSkin* skin) {
+// Number of m-subsets of c things (as a double: no overflow).
+double subsets(int c, int m) {
+  double n = 1.0;
+  for (int a = 0; a < m; ++a) n = n * (c - a) / (a + 1);
+  return n;
+}
+
+// Lowest-training-error support of size m among the candidates (see the
+// header's support rule), starting from the M largest (`*best` on entry).
+void searchSupport(const VertexFit& v, int m, int exhaustive_limit, std::vector<int>* best,
+                   Eigen::VectorXd* best_u) {
+  const int c = int(v.model.size());
+  double best_err = fitSubset(v, v.gram, *best, best_u);
+  Eigen::VectorXd u;
+  auto consider = [&](const std::vector<int>& subset) {
+    const double err = fitSubset(v, v.gram, subset, &u);
+    if (err < best_err) best_err = err, *best = subset, *best_u = u;
+  };
+  if (subsets(c, m) <= exhaustive_limit) {
+    std::vector<int> subset(static_cast<size_t>(m));
+    std::iota(subset.begin(), subset.end(), 0);
+    for (;;) {  // every m-subset in lexicographic order
+      consider(subset);
+      int a = m - 1;
+      while (a >= 0 && subset[size_t(a)] == c - m + a) --a;
+      if (a < 0) return;
+      ++subset[size_t(a)];
+      for (int b = a + 1; b < m; ++b) subset[size_t(b)] = subset[size_t(b - 1)] + 1;
+    }
+  }
+  std::vector<int> greedy;  // forward selection; ties: the larger model weight
+  for (int step = 0; step < m; ++step) {
+    int pick = -1;
+    double pick_err = 0.0;
+    for (int s = 0; s < c; ++s) {
+      if (std::find(greedy.begin(), greedy.end(), s) != greedy.end()) continue;
+      std::vector<int> trial = greedy;
+      trial.push_back(s);
+      const double err = fitSubset(v, v.gram, trial, &u);
+      if (pick < 0 || err < pick_err) pick = s, pick_err = err;
+    }
+    greedy.push_back(pick);
+  }
+  consider(greedy);
+}
+
+// Iteratively reweighted least squares toward the smallest sum of per-pose
+// distances on a fixed support (each step minimises sum_p e_p^2 / e'_p with
+// e' the previous step's distances, floor 1e-3 of their mean: a
+// majorise-minimise step that cannot increase the sum, as in Weiszfeld's
+// algorithm for the geometric median).
+void refineL1(const VertexFit& v, const std::vector<int>& subset, int iterations,
+              Eigen::VectorXd* u) {
+  for (int it = 0; it < iterations; ++it) {
+    const Eigen::VectorXd e = poseErrors(v.d, subset, *u);
+    const double floor = 1e-3 * e.mean() + 1e-300;
+    Eigen::MatrixXd dw = v.d;
+    for (Eigen::Index p = 0; p < e.size(); ++p)
+      dw.middleRows<3>(3 * p) /= std::sqrt(std::max(e(p), floor));
+    fitSubset(v, dw.transpose() * dw, subset, u);
+  }
+}
+
+// The fitted row of vertex i (see the header: support rule, prior, guard).
+void fitVertex(const BodyModel& model, const TrainingSet& ts, const SkinFitOptions& o,
+               Eigen::Index i, int m, SparseSkin* skin) {
   const std::vector<int> order = jointsByWeight(model.weights, i);
   int count = 0;
   while (count < int(order.size()) && model.weights(i, order[size_t(count)]) > 0) ++count;
@@ -157,39 +232,26 @@ void fitVertex(const BodyModel& model, const TrainingSet& ts, Eigen::Index i, in
   }
   const std::vector<int> candidates(
       nonzero.begin(), nonzero.begin() + std::min(count, std::max(kMaxCandidates, 2 * m)));
-  const Eigen::MatrixXd gram = residualGram(model, ts, i, nonzero, candidates);
-  std::vector<int> top(static_cast<size_t>(m), 0);
+  VertexFit v;
+  v.d = candidateResiduals(model, ts, i, nonzero, candidates);
+  v.gram = v.d.transpose() * v.d;
+  v.model.resize(Eigen::Index(candidates.size()));
+  for (size_t s = 0; s < candidates.size(); ++s)
+    v.model(Eigen::Index(s)) = model.weights(i, candidates[s]);
+  v.lambda = o.prior_strength;
+  std::vector<int> top(static_cast<size_t>(m)), best;
   std::iota(top.begin(), top.end(), 0);
-  Eigen::VectorXd prior(m), best_u;
-  for (int s = 0; s < m; ++s) prior(s) = model.weights(i, candidates[size_t(s)]);
-  double best = fitSubset(gram, top, prior / prior.sum(), &best_u);
-  std::vector<int> best_set = top, greedy;
-  for (int step = 0; step < m; ++step) {
-    int pick = -1;
-    double pick_err = 0.0;
-    Eigen::VectorXd u;
-    for (int c = 0; c < int(candidates.size()); ++c) {
-      if (std::find(greedy.begin(), greedy.end(), c) != greedy.end()) continue;
-      std::vector<int> trial = greedy;
-      trial.push_back(c);
-      const double err = fitSubset(
-          gram, trial, Eigen::VectorXd::Constant(int(trial.size()), 1.0 / trial.size()), &u);
-      if (pick < 0 || err < pick_err) pick = c, pick_err = err;
-    }
-    greedy.push_back(pick);
-  }
-  Eigen::VectorXd greedy_u;
-  const double greedy_err =
-      fitSubset(gram, greedy, Eigen::VectorXd::Constant(m, 1.0 / m), &greedy_u);
-  if (greedy_err < best) best_set = greedy, best_u = greedy_u;
-  std::vector<int> joints, top_joints(candidates.begin(), candidates.begin() + m);
-  for (int s : best_set) joints.push_back(candidates[size_t(s)]);
-  // Never worse at the vertex's worst training pose than truncation.
-  const Eigen::VectorXd truncated = prior / prior.sum();
-  if (maxResidual(model, ts, i, nonzero, joints, best_u) >
-      maxResidual(model, ts, i, nonzero, top_joints, truncated))
-    return storeRow(i, top_joints, truncated, skin);
-  storeRow(i, joints, best_u, skin);
+  best = top;
+  Eigen::VectorXd u;
+  searchSupport(v, m, o.exhaustive_limit, &best, &u);
+  refineL1(v, best, o.l1_iterations, &u);
+  std::vector<int> joints;
+  for (int s : best) joints.push_back(candidates[size_t(s)]);
+  const Eigen::VectorXd truncated = v.model.head(m) / v.model.head(m).sum();
+  if (o.guard && poseErrors(v.d, best, u).maxCoeff() > poseErrors(v.d, top, truncated).maxCoeff())
+    return storeRow(i, std::vector<int>(candidates.begin(), candidates.begin() + m), truncated,
+                    skin);
+  storeRow(i, joints, u, skin);
 }
 
 // Minimiser of 1/2 u'Hu - c'u with u_j = 0 for the active j and sum u = 1:
@@ -264,7 +326,7 @@ SparseSkin fitSkinWeights(const BodyModel& model, const ShapedBody& body, const 
   std::vector<std::thread> pool;
   for (int w = 0; w < workers; ++w)
     pool.emplace_back([&, w] {
-      for (Eigen::Index i = w; i < n; i += workers) fitVertex(model, ts, i, m, &skin);
+      for (Eigen::Index i = w; i < n; i += workers) fitVertex(model, ts, o, i, m, &skin);
     });
   for (std::thread& t : pool) t.join();
   return skin;

@@ -6,21 +6,26 @@
 //
 //   a_ps = A_{k_s}(p) v_posed_i(p)          (3-vector: vertex i moved by joint k_s alone)
 //   y_p  = sum_k w_ik A_k(p) v_posed_i(p)   (the model with all its weights)
-//   minimise  sum_p |sum_s u_s a_ps - y_p|^2 + lambda |u - u_trunc|^2
+//   minimise  sum_p |sum_s u_s a_ps - y_p|^2 + lambda |u - u_prior|^2
 //   over u >= 0, sum_s u_s = 1,
 //
 // solved exactly by a primal active-set method (Nocedal & Wright, "Numerical
-// Optimization", 2nd ed., algorithm 16.3) started from the truncated weights
-// u_trunc. The tiny ridge lambda (1e-6 of the mean diagonal) only keeps the
-// system regular when two joints move a vertex alike. Support rule: the
-// lower training error of (a) the M joints with the largest model weights and
-// (b) greedy forward selection among the vertex's largest non-zero weights
-// (each step adds the joint that lowers the fitted error most). Guard: a
-// vertex whose fit is worse than truncation at its worst training pose keeps
-// the truncated weights. A vertex with at most M non-zero weights keeps its
-// exact weights. Poses: samplePoses
-// (core/math/pose_sampler.h) with a seed of its own, so reports that measure
-// the error on the default report seed (20261124) measure held-out poses.
+// Optimization", 2nd ed., algorithm 16.3). u_prior is the model's weights on
+// the support, renormalised (on the M largest joints: the truncated weights);
+// lambda = prior_strength x the mean diagonal of the support's Gram matrix.
+// The pull toward the prior is shrinkage: it costs little training error
+// and keeps the fit from trading rare large errors on poses it never saw for
+// small ones on the poses it did (the held-out maximum). Support rule: the
+// candidates are the vertex's largest non-zero weights (up to 12, or 2M
+// if more); every M-subset of them when there are at most exhaustive_limit
+// subsets, otherwise the better of the M largest and greedy forward
+// selection (each step adds the joint that lowers the fitted error most);
+// the subset of lowest training error wins. Guard: a vertex whose fit is
+// worse than truncation at its worst training pose keeps the truncated
+// weights. A vertex with at most M non-zero weights keeps its exact weights.
+// Poses: samplePoses (core/math/pose_sampler.h) with a seed of its own, so
+// reports that measure the error on the default report seed (20261124)
+// measure held-out poses (the same distribution, other samples).
 // Deterministic: the result does not depend on the thread count.
 #pragma once
 
@@ -39,6 +44,13 @@ struct SkinFitOptions {
   uint64_t seed = 0x5157a11f17ull;  // training set; differs from the report's held-out seed
   double pose_scale = 0.6;          // radians, as samplePoses
   int threads = 2;                  // worker threads over vertices (result is thread-independent)
+  double prior_strength = 0.1;      // lambda / mean Gram diagonal: pull toward the prior weights
+  int exhaustive_limit = 70;        // try every M-subset of the candidates up to this many subsets
+  bool guard = true;                // keep truncation where the fit's worst training pose is worse
+  // > 0: after the support is chosen, this many iteratively reweighted least
+  // squares steps (weights 1 / |residual_p|) minimise sum_p |residual_p|, the
+  // summed distance a mean-error report measures, instead of its square.
+  int l1_iterations = 0;
 };
 
 // Fitted N x M skin of the subject `body` (shapeBody of the exported betas).

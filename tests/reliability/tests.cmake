@@ -5,9 +5,9 @@
 #
 # It needs a product build of smpl-export: peak memory is only meaningful
 # without sanitizers, and the out-of-memory cases limit the address space
-# (ulimit -v), which AddressSanitizer cannot run under. scripts/test.sh passes
-# the quick-start build (build/cli/smpl-export) as SMPL_RELIABILITY_EXE; by
-# default the suite runs this build's smpl-export.
+# (ulimit -v), which AddressSanitizer cannot run under. scripts/test.sh runs
+# it in its Release build (SMPL_TEST_SET=integration), on this build's
+# smpl-export; SMPL_RELIABILITY_EXE may name another product binary.
 set(SMPL_RELIABILITY_EXE "" CACHE FILEPATH
     "smpl-export binary for the reliability suite (default: this build's; must not be sanitized)")
 if(SMPL_RELIABILITY_EXE)

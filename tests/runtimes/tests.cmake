@@ -24,7 +24,6 @@ add_test(NAME runtime.maya_glue
           --package ${SMPL_MAYA_DIR} --reference ${SMPL_RUNTIME_REF})
 set_tests_properties(runtime.python_core runtime.maya_glue PROPERTIES
   LABELS unit FIXTURES_REQUIRED runtime_reference)
-add_dependencies(unit_tests maya_package)  # runtime.maya_glue reads the staged package
 
 # The Unreal plugin's glue sources compiled against stand-in Unreal headers
 # (unreal_standin/: CoreMinimal.h, AnimNodeBase.h, ... with Unreal's names and

@@ -64,19 +64,56 @@ Errors heldOut(const BodyModel& model, int m) {
   return {e->truncated, SkinError{e->mean_m, e->max_m}};
 }
 
+// Issue 13's goal is 30% below truncation; every M-subset of the fixture's
+// at most 6 influences (exhaustive support) brings it to 44% (greedy: 40%).
 TEST(FitSkinWeights, HeldOutErrorOnTheSmplFixtureIsWellBelowTruncation) {
   Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   ASSERT_TRUE(model.ok()) << model.message();
   const Errors e = heldOut(*model, 4);
-  EXPECT_LE(e.fitted.mean_m, 0.7 * e.truncated.mean_m)
+  EXPECT_LE(e.fitted.mean_m, 0.58 * e.truncated.mean_m)
       << e.fitted.mean_m << " vs " << e.truncated.mean_m;
   EXPECT_LE(e.fitted.max_m, e.truncated.max_m) << e.fitted.max_m << " vs " << e.truncated.max_m;
 }
 
+// The built-in body cannot reach the 30% goal: no weights on 4 of a
+// vertex's joints do better than 15% on these very poses (see the next
+// test). The fit gains 11% and, pulled toward the truncated weights, does
+// not raise the worst vertex (without the pull: 2.44 mm against 2.35 mm).
 TEST(FitSkinWeights, HeldOutMeanErrorOfTheBuiltinBodyIsBelowTruncation) {
   const Errors e = heldOut(demoBody(), 4);
-  EXPECT_LE(e.fitted.mean_m, 0.95 * e.truncated.mean_m)
+  EXPECT_LE(e.fitted.mean_m, 0.9 * e.truncated.mean_m)
       << e.fitted.mean_m << " vs " << e.truncated.mean_m;
+  EXPECT_LE(e.fitted.max_m, e.truncated.max_m) << e.fitted.max_m << " vs " << e.truncated.max_m;
+}
+
+// The fit trained on the held-out poses themselves (summed distance
+// minimised, no prior, no guard; smpl-skin-report's "bound") is at least as
+// good there as the fit trained elsewhere, and still misses 30% on the
+// built-in body: the goal is out of reach for any weights, not for the fit.
+TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
+  const BodyModel& model = demoBody();
+  Result<ShapedBody> body = shapeBody(model, Eigen::VectorXd());
+  ASSERT_TRUE(body.ok());
+  SkinFitOptions o;
+  o.training_poses = 32;
+  o.seed = 20261124;  // exporter/pruning_error.h's held-out poses
+  o.prior_strength = 0.0;
+  o.guard = false;
+  o.l1_iterations = 30;
+  ExportOptions x;
+  Result<SkinError> bound = measureSkinError(
+      model, x, denseWeights(fitSkinWeights(model, *body, o), model.numJoints()), 32);
+  ASSERT_TRUE(bound.ok()) << bound.message();
+  const Errors e = heldOut(model, 4);
+  EXPECT_LT(bound->mean_m, e.fitted.mean_m);
+  EXPECT_GT(bound->mean_m, 0.7 * e.truncated.mean_m)
+      << bound->mean_m << " vs " << e.truncated.mean_m;
+  // Least squares only (no reweighting): a larger summed distance.
+  o.l1_iterations = 0;
+  Result<SkinError> squares = measureSkinError(
+      model, x, denseWeights(fitSkinWeights(model, *body, o), model.numJoints()), 32);
+  ASSERT_TRUE(squares.ok());
+  EXPECT_LT(bound->mean_m, squares->mean_m);
 }
 
 TEST(FitSkinWeights, RowsAreConvexCombinationsAndThreadIndependent) {
