@@ -63,6 +63,13 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   const std::vector<PlannedOutput>& motions = plan.outputs;
   std::vector<ManifestEntry> manifest(motions.size());
   const bool record = !s.manifest.empty();
+  const unsigned threads =
+      s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
+  const size_t workers = std::min<size_t>(threads, std::max<size_t>(1, motions.size()));
+  // Files in parallel, or one file's FBX arrays in parallel, never both:
+  // `workers` jobs each compressing on `threads` cores would run threads^2.
+  Settings job_settings = s;
+  if (workers > 1) job_settings.writer_options.threads = 1;
   std::atomic<size_t> next{0};
   std::mutex print;
   auto worker = [&] {
@@ -97,7 +104,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
       const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
       Result<ExportReport> r =
           !pick ? Result<ExportReport>(makeError(errorLine("loading", s.model, pick.message())))
-                : runExport(*pick->model, s, job);
+                : runExport(*pick->model, job_settings, job);
       if (r) describeOutput(out, record, &entry);
       entry.status = r ? "converted" : "failed";
       entry.message = r ? "" : r.message();
@@ -116,11 +123,8 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
       for (const std::string& note : r->notes) std::printf("note: %s\n", note.c_str());
     }
   };
-  const unsigned threads =
-      s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
   std::vector<std::thread> pool;
-  for (unsigned t = 0; t < std::min<size_t>(threads, std::max<size_t>(1, motions.size())); ++t)
-    pool.emplace_back(worker);
+  for (size_t t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
   std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n",
               summary.converted, summary.skipped, summary.failed, summary.no_poses);

@@ -346,8 +346,8 @@ const std::vector<OptionSpec> kOptions = {
      "rebuild every output, even when up to date",
      [](V, S* s) { return s->force = true, Status(); }, Hashed::No},
     {"--threads", nullptr, "N", Applies::Any, nullptr,
-     "worker threads: batch files converted at once, and the FBX arrays of one file compressed "
-     "at once (default: all cores; the output does not depend on it)",
+     "worker threads: batch files converted at once (each compressing on one), or the FBX arrays "
+     "of a single file compressed at once (default: all cores; the output does not depend on it)",
      [](V v, S* s) {
        Status st = intInto(v, "--threads", &s->threads);
        if (st && (s->threads < 1 || s->threads > 1024))
