@@ -57,7 +57,8 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 if [[ "${1:-}" != "--no-fuzz" ]]; then
-  phase "fuzz (30 s each)" scripts/fuzz.sh 30 build-san
+  # 20 s per fuzzer on top of the seed corpus: a smoke run (scripts/fuzz.sh SECONDS for longer).
+  phase "fuzz (20 s each)" scripts/fuzz.sh 20 build-san
 fi
 status=0
 phase "ctest unit (sanitized)" bash -c 'cd build-san && ctest --output-on-failure -j"$0" --timeout 900' "$jobs" || status=$?
