@@ -46,7 +46,9 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 #              traces); clang compiles this configuration in a third to a half
 #              of g++'s CPU time (demo_body_test.cpp: 21 s vs 58 s).
 # Both use one fixture folder (generated once, by the first build).
-cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Release -DSMPL_TEST_SET=integration "${launcher[@]}" >/dev/null
+# Options given explicitly: a build-test left by an older test.sh (sanitized) is reconfigured.
+cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Release -DSMPL_SANITIZE=OFF -DSMPL_FUZZ=OFF \
+  -DSMPL_RELIABILITY_EXE= -DSMPL_TEST_SET=integration "${launcher[@]}" >/dev/null
 phase "release build (integration)" cmake --build build-test -j"$jobs"
 CC=clang CXX=clang++ cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSMPL_FUZZ=ON -DSMPL_TEST_SET=unit \
