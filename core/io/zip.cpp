@@ -286,12 +286,12 @@ Status inflateMember(const uint8_t* in, uint64_t csize, uint8_t* out, size_t out
 // The member's bytes: a view of the archive for a stored member (no copy),
 // else inflated into `owned` (default-initialised: no zero fill). CRC-checked.
 Result<ZipBytes> extractBytes(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
-                              const std::string& ctx, bool view_stored) {
+                              const std::string& ctx) {
   const std::string ectx = ctx + "/" + printable(c.name);
   Result<size_t> start = locateData(data, c, data_end, ectx);
   if (!start) return start.error();
   ZipBytes b;
-  if (c.method == 0 && view_stored) {
+  if (c.method == 0) {
     b.data = data + *start;
     b.size = static_cast<size_t>(c.csize);
   } else {
@@ -300,11 +300,8 @@ Result<ZipBytes> extractBytes(const uint8_t* data, const CentralEntry& c, uint64
     adviseHugePages(b.owned.get(), static_cast<size_t>(c.usize));
     b.data = b.owned.get();
     b.size = static_cast<size_t>(c.usize);
-    if (c.method == 0 && b.size > 0)
-      std::memcpy(b.owned.get(), data + *start, b.size);
-    else if (c.method != 0)
-      if (Status st = inflateMember(data + *start, c.csize, b.owned.get(), b.size, ectx); !st)
-        return st.error();
+    if (Status st = inflateMember(data + *start, c.csize, b.owned.get(), b.size, ectx); !st)
+      return st.error();
   }
   const uint32_t crc = crc32Of(b.data, b.size);
   if (crc != c.crc)
@@ -314,12 +311,14 @@ Result<ZipBytes> extractBytes(const uint8_t* data, const CentralEntry& c, uint64
 
 Result<ZipEntry> extractEntry(const uint8_t* data, const CentralEntry& c, uint64_t data_end,
                               const std::string& ctx) {
-  Result<ZipBytes> b = extractBytes(data, c, data_end, ctx, /*view_stored=*/false);
+  Result<ZipBytes> b = extractBytes(data, c, data_end, ctx);  // stored: a view, not a copy
   if (!b) return b.error();
   ZipEntry e;
   e.name = c.name;
+  // The copy is charged while the inflated buffer (if any) still is.
+  if (Status st = e.charge.add(b->size, ctx + "/" + printable(c.name), "inflating the member"); !st)
+    return st.error();
   e.data.assign(b->data, b->data + b->size);
-  e.charge = std::move(b->charge);
   return e;
 }
 
@@ -361,7 +360,7 @@ Result<ZipBytes> viewZipMember(const uint8_t* data, size_t size, const ZipMember
           checkExtractable(data, size, member, context + "/" + printable(member.name), limits);
       !st)
     return st.error();
-  return extractBytes(data, member, member.data_end, context, /*view_stored=*/true);
+  return extractBytes(data, member, member.data_end, context);
 }
 
 Result<std::vector<uint8_t>> readZipMemberPrefix(const uint8_t* data, size_t size,

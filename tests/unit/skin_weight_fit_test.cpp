@@ -100,9 +100,11 @@ TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
   o.prior_strength = 0.0;
   o.guard = false;
   o.l1_iterations = 30;
-  ExportOptions x;
-  Result<SkinError> bound = measureSkinError(
-      model, x, denseWeights(fitSkinWeights(model, *body, o), model.numJoints()), 32);
+  auto heldOutError = [&] {
+    return measureSkinError(model, ExportOptions(),
+                            denseWeights(fitSkinWeights(model, *body, o), model.numJoints()), 32);
+  };
+  Result<SkinError> bound = heldOutError();
   ASSERT_TRUE(bound.ok()) << bound.message();
   const Errors e = heldOut(model, 4);
   EXPECT_LT(bound->mean_m, e.fitted.mean_m);
@@ -110,8 +112,7 @@ TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
       << bound->mean_m << " vs " << e.truncated.mean_m;
   // Least squares only (no reweighting): a larger summed distance.
   o.l1_iterations = 0;
-  Result<SkinError> squares = measureSkinError(
-      model, x, denseWeights(fitSkinWeights(model, *body, o), model.numJoints()), 32);
+  Result<SkinError> squares = heldOutError();
   ASSERT_TRUE(squares.ok());
   EXPECT_LT(bound->mean_m, squares->mean_m);
 }
