@@ -1,0 +1,61 @@
+#include "core/data_node.h"
+
+namespace smpl {
+
+const DataNode* DataNode::get(std::string_view key) const {
+  if (kind != Kind::Dict) return nullptr;
+  for (size_t i = keys.size(); i-- > 0;)
+    if (keys[i] == key) return &children[i];
+  return nullptr;
+}
+
+const Array* DataNode::leaf(std::string_view key) const {
+  const DataNode* child = get(key);
+  return child && child->kind == Kind::Array ? &child->array : nullptr;
+}
+
+ArrayDict arraysOf(const DataNode& dict) {
+  ArrayDict arrays;
+  if (dict.kind != DataNode::Kind::Dict) return arrays;
+  for (size_t i = 0; i < dict.keys.size(); ++i) {
+    if (dict.children[i].kind == DataNode::Kind::Array)
+      arrays[dict.keys[i]] = dict.children[i].array;
+    else
+      arrays.erase(dict.keys[i]);  // a later non-array value replaces an earlier one
+  }
+  return arrays;
+}
+
+DataNode nodeOf(ArrayDict arrays) {
+  DataNode node;
+  node.kind = DataNode::Kind::Dict;
+  for (auto& [key, array] : arrays) {
+    DataNode leaf;
+    leaf.kind = DataNode::Kind::Array;
+    leaf.array = std::move(array);
+    node.keys.push_back(key);
+    node.children.push_back(std::move(leaf));
+  }
+  return node;
+}
+
+std::string describeNode(const DataNode& node, size_t max_keys) {
+  switch (node.kind) {
+    case DataNode::Kind::None:
+      return "None";
+    case DataNode::Kind::Array:
+      return node.array.isString() ? "text" : "array " + shapeString(node.array.shape);
+    case DataNode::Kind::List:
+      return "list of " + std::to_string(node.children.size());
+    case DataNode::Kind::Dict:
+      break;
+  }
+  std::string text = "dict with keys ";
+  for (size_t i = 0; i < node.keys.size() && i < max_keys; ++i)
+    text += (i ? ", '" : "'") + node.keys[i] + "'";
+  if (node.keys.size() > max_keys) text += ", ... (" + std::to_string(node.keys.size()) + " keys)";
+  if (node.keys.empty()) text = "empty dict";
+  return text;
+}
+
+}  // namespace smpl
