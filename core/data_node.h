@@ -25,7 +25,8 @@ struct DataNode {
     None,   // Python None, or a value that is not data (an object the readers do not rebuild)
     Array,  // a leaf: `array`
     Dict,   // keys[i] names children[i], in file order; integer keys as decimal text ("0", "12")
-    List,   // children in order (a Python list or tuple, a JSON array that is not rectangular numbers)
+    List,   // children in order (a Python list or tuple, a JSON array that is not rectangular
+            // numbers)
   };
   Kind kind = Kind::None;
   Array array;
