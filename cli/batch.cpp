@@ -14,6 +14,7 @@
 #include "cli/manifest.h"
 #include "cli/sha256.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
@@ -41,11 +42,20 @@ bool noPoseData(const std::string& motion) {
   }
 }
 
+// ".npz, .smpl, .pkl or .json": the reader table's motion extensions.
+std::string extensionList() {
+  const std::vector<std::string> ext = motionFileExtensions();
+  std::string text;
+  for (size_t i = 0; i < ext.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == ext.size() ? " or " : ", ") + ext[i];
+  return text;
+}
+
 void printHeader(const Settings& s, const BatchPlan& plan) {
   for (const std::string& note : plan.notes) std::printf("note: %s\n", note.c_str());
   for (const std::string& error : plan.errors) std::fprintf(stderr, "%s\n", error.c_str());
   if (plan.listed == 0)
-    std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n",
+    std::fprintf(stderr, "Warning: no motions (%s) in %s\n", extensionList().c_str(),
                  s.motion_dir.c_str());
   else if (plan.outputs.empty() && !s.quiet)
     std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index,

@@ -11,16 +11,20 @@
 #include "cli/output_guard.h"
 #include "cli/producer.h"
 #include "core/io/file_io.h"
+#include "core/load/motion_layout.h"
 #include "exporter/metadata_json.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
+// A name with a motion extension of the reader table (core/load/motion_layout.h),
+// not one of our sidecars.
 bool isMotionName(const std::string& name) {
-  return (hasSuffix(name, ".npz") || hasSuffix(name, ".json") || hasSuffix(name, ".smpl") ||
-          hasSuffix(name, ".pkl")) &&
-         !hasSuffix(name, ".smpl.json");
+  if (hasSuffix(name, ".smpl.json")) return false;
+  for (const std::string& ext : motionFileExtensions())
+    if (hasSuffix(name, ext)) return true;
+  return false;
 }
 
 // The motions in `dir`; unreadable entries become errors/notes of `plan`.

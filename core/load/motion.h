@@ -1,18 +1,16 @@
-// Pose sequences, recognised by their keys (not by the extension):
-//   AMASS .npz (SMPL-H release: poses (T,156); SMPL-X release: poses (T,165)
-//   or the split keys root_orient/pose_body/pose_hand/pose_jaw/pose_eye),
-//   SMPL (T,72), plain .npz / .json with `poses` as axis-angle (T,3J) /
-//   (T,J,3) or rotation matrices (T,J,3,3); frame rate from
-//   `mocap_framerate`, `mocap_frame_rate` or `fps`;
-//   Meshcapade SMPLCodec `.smpl` (motion_smplcodec.h);
-//   SMPL-X / SMPL fits as fitters write them, .pkl or .npz (motion_fit.h);
-//   AIST++ .pkl (motion_aist.h).
-// The container is chosen by content: zip magic -> npz, pickle opcodes ->
-// data-only unpickler, else JSON. Every frame is validated (finite numbers,
-// consistent lengths) before anything is exported.
+// Pose sequences, recognised by their keys (not by the extension), through
+// the motion reader table (core/load/motion_layout.h; one row per layout:
+// AMASS and plain poses (motion_amass.h), Meshcapade SMPLCodec `.smpl`
+// (motion_smplcodec.h), SMPL-X / SMPL fits (motion_fit.h), AIST++
+// (motion_aist.h); docs/motions.md lists them with the tools that write them).
+// The container is chosen by content (core/load/motion_read.h). Every frame
+// is validated (finite numbers, consistent lengths, rotations) before
+// anything is exported.
 // A file with no pose keys at all (AMASS `shape.npz`, `*_stagei.npz`, a
 // shape-only .smpl) is "no pose data": loadMotion fails on it and
-// hasPoseData() says so without failing (batch mode skips such files).
+// hasPoseData() says so without failing (batch mode skips such files); a
+// file with pose-like keys of a layout no row reads fails with the keys it
+// has and a pointer to docs/motions.md.
 #pragma once
 
 #include <Eigen/Core>
@@ -50,22 +48,32 @@ struct Motion {
   bool amass = false;         // AMASS-style file (Z-up world)
   PendingHands hands;         // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
+  std::string source_layout;       // the table row that read it ("amass", "fit", ...)
   MemoryCharge charge;             // `frames` and `translation` against the memory budget
 };
 
 // Options of loadMotion.
 struct MotionOptions {
-  double source_fps = 0.0;     // --source-fps: the source rate; 0 = stored rate, else a default
-  double fps_fallback = 30.0;  // rate assumed when none is stored (AIST++: 60, as documented)
+  double source_fps = 0.0;  // --source-fps: the source rate; 0 = stored rate, else the layout's
+                            // default (30 fps; AIST++ 60, as documented) with a note
 };
 
-// `path` names the file in errors. Errors: unreadable file, no pose data,
-// wrong shapes, NaN/Inf.
-Result<Motion> loadMotion(const std::string& path, const MotionOptions& options);
-Result<Motion> loadMotion(const std::string& path, double fps_fallback = 30.0);
+// What one file holds: one Motion per person or track (most files hold one)
+// and the notes that concern the file as a whole.
+struct MotionSet {
+  std::vector<Motion> tracks;
+  std::vector<std::string> notes;
+};
 
-// The file's arrays (npz, pickle or JSON by content).
-Result<ArrayDict> readMotionArrays(const std::string& path);
+// Every track of the file at `path` (which names it in errors), each named
+// after the file's stem, its frame rate settled (MotionOptions) and its
+// values checked (validate_inputs.h). Errors: unreadable file, no pose data,
+// an unknown layout, wrong shapes, NaN/Inf; one line naming the file.
+Result<MotionSet> loadMotionSet(const std::string& path,
+                                const MotionOptions& options = MotionOptions());
+
+// The file's first track, with the file's notes first among its notes.
+Result<Motion> loadMotion(const std::string& path, const MotionOptions& options = MotionOptions());
 
 // False for a readable file without pose keys (a shape file); an error if
 // the file cannot be read at all.

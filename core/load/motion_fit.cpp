@@ -48,7 +48,7 @@ int64_t framesOf(const std::vector<int64_t>& s, int joints, bool* matrices) {
 }
 
 // Optional part with `joints` joints and T frames into joints [first, ...).
-Status putPart(const ArrayDict& d, const std::string& path, const char* key, int joints, int first,
+Status putPart(const DataNode& d, const std::string& path, const char* key, int joints, int first,
                Motion* m) {
   const Array* a = find(d, key);
   if (!a) return Status();
@@ -68,7 +68,7 @@ Status putPart(const ArrayDict& d, const std::string& path, const char* key, int
 
 // A hand: matrices go in directly; axis-angle (full 45 or C < 45 PCA
 // coefficients) waits for the model in `pending`.
-Status putHand(const ArrayDict& d, const std::string& path, const char* key, int first, Motion* m,
+Status putHand(const DataNode& d, const std::string& path, const char* key, int first, Motion* m,
                std::vector<Eigen::VectorXd>* pending) {
   const Array* a = find(d, key);
   if (!a) return Status();
@@ -107,7 +107,7 @@ std::vector<double> oneRow(const Array& a, const char* key, Motion* m) {
   return mean;
 }
 
-Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
+Status readExtras(const DataNode& d, const std::string& path, Motion* m) {
   const int64_t t = static_cast<int64_t>(m->frames.size());
   m->translation.assign(t, Eigen::Vector3d::Zero());
   if (const Array* a = find(d, "transl")) {
@@ -138,7 +138,7 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
 
 }  // namespace
 
-Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m) {
+Status decodeFit(const DataNode& d, const std::string& path, Motion* m) {
   const Array* body = find(d, "body_pose");
   if (!body)
     return makeError(path + ": missing key 'body_pose' (a fit with 'global_orient' needs it)");
@@ -220,6 +220,24 @@ Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::s
     return s;
   m->hands = PendingHands();
   return Status();
+}
+
+namespace {
+bool matchesFit(const DataNode& root) {
+  return motion_detail::has(root, "body_pose") || motion_detail::has(root, "global_orient");
+}
+}  // namespace
+
+const MotionLayout& fitLayout() {
+  static const MotionLayout row{"fit",
+                                "SMPL-X / SMPL fit (SMPLify-X, PIXIE, ExPose)",
+                                kAnyContainer,
+                                matchesFit,
+                                {"global_orient", "body_pose", "left_hand_pose", "right_hand_pose",
+                                 "jaw_pose", "leye_pose", "reye_pose", "expression", "betas",
+                                 "transl", "gender", "fps", "frame_rate", "mocap_framerate"},
+                                motion_detail::oneTrack<motion_detail::decodeFit>};
+  return row;
 }
 
 }  // namespace smpl

@@ -26,18 +26,22 @@
 
 #include <string>
 
-#include "core/array.h"
 #include "core/body_model.h"
+#include "core/data_node.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
 #include "core/result.h"
 
 namespace smpl {
 namespace motion_detail {
 
-// Called by loadMotion for files with `body_pose` / `global_orient`.
-Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m);
+// The row's decode for files with `body_pose` / `global_orient`.
+Status decodeFit(const DataNode& d, const std::string& path, Motion* m);
 
 }  // namespace motion_detail
+
+// The table row (core/load/motion_layout.h): matches `body_pose` or `global_orient`.
+const MotionLayout& fitLayout();
 
 // Turns Motion::hands into the hand joints' rotations with the model's PCA
 // components and mean (see above); flat_hand_mean: the poses are relative to

@@ -21,16 +21,21 @@
 
 #include <string>
 
-#include "core/array.h"
+#include "core/data_node.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
 #include "core/result.h"
 
 namespace smpl {
 namespace motion_detail {
 
-// Called by loadMotion for files with `bodyPose`: fills frames, layout,
+// The row's decode for files with `bodyPose`: fills frames, layout,
 // translation, betas, gender, fps (0 when `frameRate` is absent), notes.
-Status decodeSmplCodec(const ArrayDict& d, const std::string& path, Motion* m);
+Status decodeSmplCodec(const DataNode& d, const std::string& path, Motion* m);
 
 }  // namespace motion_detail
+
+// The table row (core/load/motion_layout.h): matches `bodyPose`.
+const MotionLayout& smplCodecLayout();
+
 }  // namespace smpl
