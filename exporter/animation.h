@@ -6,6 +6,7 @@
 // back with no runtime script.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,7 +18,17 @@
 
 namespace smpl {
 
-enum class UpAxis { Auto, Y, Z };  // Auto: Z for AMASS files, else Y
+// The motion world's up axis (--up); the output is always Y-up.
+//   Auto  what the motion's layout says (Motion::world): Z for AMASS, -y for
+//         the camera frames of video methods, else Y
+//   Z     a Z-up world, turned -90 degrees about x
+//   NegY  a camera frame (OpenCV: y down, z forward), turned upright by one
+//         half turn about x: (x, y, z) -> (x, -y, -z), about the world origin
+//         (camera-relative translations stay camera-relative)
+enum class UpAxis { Auto, Y, Z, NegY };
+
+// The rotation that turns a motion's world Y-up (identity for Y).
+Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world);
 
 struct AnimationOptions {
   double fps = 0.0;     // output rate; 0 keeps the motion's rate

@@ -90,6 +90,11 @@ Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& op
     m.name = stemOf(path);
     m.source_layout = row->name;
     settleFps(options, row->fps_fallback, row->fps_why, &m);
+    if (m.world == MotionWorld::CameraYDown && !options.up_given)
+      m.notes.push_back(
+          (m.world_why.empty() ? std::string("the poses are in a camera frame") : m.world_why) +
+          " (x right, y down, z forward): turned upright by a half turn about x "
+          "(--up -y); --up y keeps the file's axes");
     if (Status st = checkMotionValues(&m, path); !st) return st.error();
   }
   return set;

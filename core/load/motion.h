@@ -33,6 +33,14 @@ struct PendingHands {
   bool active() const { return !left.empty() || !right.empty(); }
 };
 
+// The world a motion's root rotations and translations are expressed in;
+// the export is always Y-up (exporter/animation.h turns the whole body).
+//   Y            a Y-up world (most fitters and generators)
+//   Z            a Z-up capture world (AMASS)
+//   CameraYDown  a camera frame as OpenCV has it: x right, y down, z forward
+//                (the output of video methods in camera coordinates)
+enum class MotionWorld { Y, Z, CameraYDown };
+
 struct Motion {
   std::string name;                          // file stem
   ModelKind layout = ModelKind::Smpl;        // joint layout of `rotations`
@@ -45,8 +53,14 @@ struct Motion {
   Eigen::MatrixXd dmpls;  // T x D DMPL soft-tissue coefficients (AMASS `dmpls`); 0 x 0 if absent
   std::string dmpls_problem;  // "<path>: 'dmpls' ..." when present but unusable (shape, NaN); the
                               // error of an export that needs them (core/load/dmpl.h)
-  bool amass = false;         // AMASS-style file (Z-up world)
-  PendingHands hands;         // fits only: resolved by resolveFitHands()
+  MotionWorld world = MotionWorld::Y;  // what the layout says of the file's world (--up overrides)
+  std::string world_why;  // for a camera frame: the note saying so ("WHAM 'pose' is in the camera
+                          // frame"), printed when no --up is given
+  Eigen::MatrixXd expression;  // T x E SMPL-X expression coefficients per frame; 0 x 0 if absent
+  std::string track;           // the person or track id in a multi-person file; "" if it has one
+  int64_t first_frame = 0;     // source frame number of frames[0] (a track that starts later)
+  std::string hand;            // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
+  PendingHands hands;          // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
   std::string source_layout;       // the table row that read it ("amass", "fit", ...)
   MemoryCharge charge;             // `frames` and `translation` against the memory budget
@@ -56,6 +70,7 @@ struct Motion {
 struct MotionOptions {
   double source_fps = 0.0;  // --source-fps: the source rate; 0 = stored rate, else the layout's
                             // default (30 fps; AIST++ 60, as documented) with a note
+  bool up_given = false;    // --up was given: no note about the layout's default world turn
 };
 
 // What one file holds: one Motion per person or track (most files hold one)

@@ -120,10 +120,11 @@ Status decodeExtras(const DataNode& d, const std::string& path, Motion* m) {
     if (Status st = checkFrameRate(rate->data[0], path, "'" + std::string(key) + "'"); !st)
       return st;
     m->fps = rate->data[0];
-    m->amass = m->amass || std::string(key) != "fps";
+    if (std::string(key) != "fps") m->world = MotionWorld::Z;
     break;
   }
-  m->amass = m->amass || motion_detail::has(d, "gender") || motion_detail::has(d, "root_orient");
+  if (motion_detail::has(d, "gender") || motion_detail::has(d, "root_orient"))
+    m->world = MotionWorld::Z;
   return Status();
 }
 

@@ -98,7 +98,7 @@ TEST(Animation, SlerpBetweenFramesAndFrameRange) {
   ASSERT_EQ(clip->times.size(), 19u);
   Eigen::Quaterniond a(l.motion.frames[12][3]), b(l.motion.frames[13][3]);
   EXPECT_LT(clip->rotations[3][5].angularDistance(a.slerp(0.5, b)), 1e-12);
-  EXPECT_FALSE(l.motion.amass);
+  EXPECT_EQ(l.motion.world, MotionWorld::Y);
   EXPECT_LT(
       (clip->rotations[0][0].toRotationMatrix() - l.motion.frames[10][0]).cwiseAbs().maxCoeff(),
       1e-12);
@@ -121,6 +121,33 @@ TEST(Animation, InPlaceKeepsHeightOnly) {
   const Eigen::Matrix3d up =
       Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   EXPECT_NEAR(clip->root_translation[200].y(), (up * (j0 + l.motion.translation[200])).y(), 1e-12);
+}
+
+// A camera frame (OpenCV: y down, z forward) is turned upright by one half
+// turn about x, about the world origin: --up -y, or the layout's default.
+TEST(Animation, CameraFrameTurnsUprightByAHalfTurnAboutX) {
+  Loaded l = load("smpl_small.npz", "smpl_72.npz");
+  l.motion.world = MotionWorld::CameraYDown;
+  const Eigen::Matrix3d half = Eigen::Vector3d(1, -1, -1).asDiagonal();
+  const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
+  for (UpAxis up : {UpAxis::Auto, UpAxis::NegY, UpAxis::Y}) {
+    AnimationOptions o;
+    o.up = up;
+    Result<AnimationClip> clip = bakeAnimation(l.model, l.asset, l.motion, o, "m.npz");
+    ASSERT_TRUE(clip.ok()) << clip.message();
+    const Eigen::Matrix3d turn = up == UpAxis::Y ? Eigen::Matrix3d::Identity() : half;
+    EXPECT_EQ(clip->source.world, up == UpAxis::Y ? "y" : "-y");
+    for (int i : {0, 7, 29}) {
+      const Rotations& src = l.motion.frames[i];
+      EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - turn * src[0]).cwiseAbs().maxCoeff(),
+                1e-12);
+      EXPECT_LT((clip->root_translation[i] - turn * (j0 + l.motion.translation[i])).norm(), 1e-12);
+    }
+  }
+  EXPECT_LT((worldTurn(UpAxis::Auto, MotionWorld::Z) -
+             Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix())
+                .norm(),
+            1e-15);
 }
 
 }  // namespace

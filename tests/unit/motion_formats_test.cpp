@@ -189,7 +189,7 @@ TEST(MotionFormats, AistTranslationIsDividedByTheScaling) {
   EXPECT_EQ(m->fps, 60.0);
   EXPECT_TRUE(m->fps_assumed);
   EXPECT_TRUE(hasNote(*m, "AIST++"));
-  EXPECT_FALSE(m->amass);  // Y-up world
+  EXPECT_EQ(m->world, MotionWorld::Y);  // Y-up world
 }
 
 TEST(MotionFormats, FrameRateAssumedOrStated) {
