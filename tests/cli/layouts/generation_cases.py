@@ -1,4 +1,5 @@
-"""Layout cases of the motion-generation tools (docs/motions.md "Motion-generation tools"):
+"""Layout cases of the motion-generation tools (docs/motions.md, "Motion-generation tools,
+hand and camera-frame fits"):
 Motion-X smplx_322, MDM smpl_params / results, HumanML3D joints, HaMeR hands, BEAT2 /
 EMAGE, camera-frame fits, VPoser latents and an unknown layout. The fixtures are written by
 tests/fixtures/make_generation_layouts.py into FIXTURE_DIR/layouts/generation/.
@@ -486,7 +487,8 @@ def decoded(case, fixture_dir, model):
     elif name.startswith("mdm"):
         d, up = mdm(case, fixture_dir), "y"
     elif name.startswith("hamer"):
-        d, up = hamer(case, fixture_dir, model_is_right=case["model"] != "mano_left_small"), "-y"
+        # The model's side from its file stem, as the decoder spec says (MANO_LEFT.pkl).
+        d, up = hamer(case, fixture_dir, model_is_right="left" not in case["model"].lower()), "-y"
     elif name.startswith("beat2"):
         b = beat2(case, fixture_dir)
         keys = expression_keys(case)
