@@ -189,7 +189,7 @@ def main():
     cases = [c for c in mod.CASES if a.only in (None, c["name"])]
     if not cases:
         sys.exit("no case named %r in %s_cases.py" % (a.only, a.cases))
-    failed = 0
+    failed = checked = 0
     for case in cases:
         before = snapshot(a.fixtures)
         if a.equivalent:
@@ -205,13 +205,16 @@ def main():
             problems.append("the fixture folder changed during the run")
         if not case["refusal"] and not worst <= TOLERANCE:
             problems.append("worst vertex error %s m > %g m" % (worst, TOLERANCE))
+        checked += 1
         status = "FAIL" if problems else "ok"
         detail = "refused as expected" if case["refusal"] and not problems else "worst %.3e m" % worst
         print("%-24s %-4s  %s" % (case["name"], status, detail))
         for p in problems:
             print("    " + p)
         failed += bool(problems)
-    print("%d of %d cases failed" % (failed, len(cases)) if failed else "all %d cases passed" % len(cases))
+    skipped = len(cases) - checked
+    print("%d of %d cases failed" % (failed, checked) if failed else "all %d cases passed" % checked,
+          "(%d not run: refusals in --equivalent mode, or not expressible today)" % skipped if skipped else "")
     sys.exit(1 if failed else 0)
 
 

@@ -82,7 +82,7 @@ CASES = [
           "camera translation", "camera frame", "assumed 30 fps"],
          source={"layout": "phalp", "track": "1", "frames": [0, 19]}),
     case("phalp_gap", V + "phalp/demo_video.pkl", "smpl_small", [0, 6, 13],
-         ["track 2 of 3 (source frames 3-16)", "2 source frames without a detection"], args=["--track", "2"]),
+         ["track 2 of 3 (source frames 3-16)", "source frames without a detection: 2"], args=["--track", "2"]),
     case("phalp_all", V + "phalp/demo_video.pkl", "smpl_small", [0, 5, 9], ["track 3 of 3"], args=["--track", "all"],
          outputs=[".track1.glb", ".track2.glb", ".track3.glb"]),
     # GVHMR: SMPL-X, hands at hands_mean; global (Y up) preferred, incam on request.
@@ -123,7 +123,7 @@ CASES = [
     # SMPLer-X: one npz per frame and detection; person 0 frames 3-24 (none at 11), person 1 frames 6-14.
     case("smplerx_seq", V + "smplerx/smplx", "smplx_small", [0, 8, 21],
          ["read as SMPLer-X output", "30 files joined (frames 3-24)", "track 0 of 2 (source frames 3-24, the longest)",
-          "1 source frames without a detection", "detection index", "camera frame", "not baked", "their mean"],
+          "source frames without a detection: 1", "detection index", "camera frame", "not baked", "their mean"],
          source={"layout": "smplerx", "track": "0", "frames": [3, 24]}),
     case("smplerx_track1", V + "smplerx/smplx", "smplx_small", [0, 4, 8], ["track 1 of 2 (source frames 6-14)"],
          args=["--track", "1"]),
