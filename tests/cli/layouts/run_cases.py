@@ -98,8 +98,11 @@ def check_notes(case, run):
     return problems
 
 
-def check_source(case, path):
+def check_source(case, path, sfx):
+    """The sidecar's motion_source: the case's `source`, or with --track all the output's track id."""
     want = case.get("source")
+    if sfx is not None:
+        want = {"track": re.match(r"\.track(.+)\.glb$", sfx).group(1)}
     if not want:
         return []
     try:
@@ -127,12 +130,14 @@ def run_case(mod, case, a, work):
     problems = check_notes(case, run)
     refs = mod.expected(case, a.fixtures)
     worst = 0.0
+    if case["outputs"] and os.path.exists(os.path.join(work, case["name"] + ".glb")):
+        problems.append("%s.glb written besides the per-track outputs" % case["name"])
     for sfx, path in outs:
         ref = refs if sfx is None else refs[sfx]
-        problems += check_source(case, path) if sfx is None else []
         if not os.path.exists(path):
             problems.append("no output %s" % os.path.basename(path))
             continue
+        problems += check_source(case, path, sfx)
         ref_path = path + ".expected.json"
         with open(ref_path, "w", encoding="utf-8") as fh:
             json.dump(ref, fh)

@@ -424,7 +424,7 @@ def easymocap_clips(case, path):
                              "rh": mats(np.asarray(person["Rh"], np.float64).reshape(3)),
                              "th": np.asarray(person["Th"], np.float64).reshape(3),
                              "betas": np.asarray(person["shapes"], np.float64).reshape(10)}
-    up = Z_UP_TO_Y_UP if arg(case, "--up") in (None, "z") else np.eye(3)
+    up = {None: Z_UP_TO_Y_UP, "z": Z_UP_TO_Y_UP, "y": np.eye(3), "-y": CAMERA_TO_UP}[arg(case, "--up")]
     out = []
     for sfx, tr in pick_tracks(case, tracks):
         rows = tr.clip()
