@@ -145,9 +145,12 @@ def run_case(mod, case, a, work):
         worst = max(worst, err) if err == err else err
         if problem:
             problems.append("%s: %s" % (os.path.basename(path), problem))
-        if "authors_expression_difference_m" in ref:
-            print("  %s: the authors' math (joints follow the expression) differs from the export by %.3e m" %
-                  (case["name"], ref["authors_expression_difference_m"]))
+        for pattern, value in ref.get("numbers", {}).items():  # a note's number, printed with 3 decimals
+            found = re.search(pattern, run.stdout)
+            if not found:
+                problems.append("stdout lacks a note matching %r (numpy: %.3f)" % (pattern, value))
+            elif abs(float(found.group(1)) - value) > 0.0015:
+                problems.append("note says %s, numpy %.3f: %r" % (found.group(1), value, pattern))
     return worst, problems
 
 
