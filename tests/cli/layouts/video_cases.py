@@ -94,7 +94,8 @@ CASES = [
          source={"layout": "gvhmr", "track": None, "frames": [0, 23]}),
     case("gvhmr_incam", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23], ["camera frame", "hands_mean"],
          args=["--source-params", "incam"]),
-    case("gvhmr_pkl", V + "gvhmr/hmr4d_results.pkl", "smplx_small", [0, 11, 23], ["read as GVHMR output", "world frame"]),
+    case("gvhmr_pkl", V + "gvhmr/hmr4d_results.pkl", "smplx_small", [0, 11, 23],
+         ["read as GVHMR output", "world frame"]),
     # Today's reading of GVHMR's global parameters flattened into an npz (an SMPL-X fit: hands at rest).
     case("gvhmr_flat_today", V + "gvhmr/gvhmr_flat.npz", "smplx_small", [0, 11, 23],
          ["assumed 30 fps", "their mean"]),
@@ -550,7 +551,8 @@ def expected(case, fixture_dir):
     out = {}
     for sfx, c in clips(case, fixture_dir, m):
         for f in case["frames"]:
-            assert 0 <= f < len(c["pose"]), "%s: frame %d outside the clip (%d frames)" % (case["name"], f, len(c["pose"]))
+            assert 0 <= f < len(c["pose"]), "%s: frame %d outside the clip (%d frames)" % (
+                case["name"], f, len(c["pose"]))
         ref = {"fps": c["fps"], "frames": case["frames"], "num_vertices": len(m["v_template"]),
                "vertices": [vertices(c, m, t, weights).tolist() for t in case["frames"]]}
         if c["expression"] is not None:
