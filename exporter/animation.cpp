@@ -62,6 +62,18 @@ Eigen::Vector3d translationAt(const Motion& m, const Sample& s) {
   return (1 - s.t) * m.translation[s.frame] + s.t * m.translation[s.frame + 1];
 }
 
+// The frame change of the sample (Motion::world_rotation/world_translation):
+// slerp / lerp between source frames; identity when the motion has none.
+void frameChangeAt(const Motion& m, const Sample& s, Eigen::Matrix3d* a, Eigen::Vector3d* b) {
+  *a = Eigen::Matrix3d::Identity();
+  *b = Eigen::Vector3d::Zero();
+  if (m.world_rotation.empty()) return;
+  const int next = std::min(s.frame + 1, static_cast<int>(m.world_rotation.size()) - 1);
+  const Eigen::Quaterniond q0(m.world_rotation[s.frame]), q1(m.world_rotation[next]);
+  *a = q0.normalized().slerp(s.t, q1.normalized()).toRotationMatrix();
+  *b = (1 - s.t) * m.world_translation[s.frame] + s.t * m.world_translation[next];
+}
+
 // Quaternion sign continuity keeps LINEAR interpolation in engines on the short path.
 void makeContinuous(std::vector<Eigen::Quaterniond>* track) {
   for (size_t i = 1; i < track->size(); ++i)
@@ -205,30 +217,34 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   Rotations local(k);
   for (int i = 0; i < t; ++i) {
     clip.times.push_back(i / fps);
+    Eigen::Matrix3d change;  // the layout's per-frame frame change, then the world turn
+    Eigen::Vector3d shift;
+    frameChangeAt(motion, samples[i], &change, &shift);
+    const Eigen::Matrix3d turn = up * change;
     for (int j = 0; j < k; ++j) {
       const int src = mapping->source_of_joint[j];
       Eigen::Quaterniond q =
           src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
-      if (j == 0) q = Eigen::Quaterniond(up) * q;
+      if (j == 0) q = Eigen::Quaterniond(turn) * q;
       clip.rotations[j][i] = q;
       local[j] = q.toRotationMatrix();
     }
     // The root node sits at J_0 + trans in the capture world; rotate it with the world.
-    Eigen::Vector3d root = up * (j0 + translationAt(motion, samples[i]));
+    Eigen::Vector3d root = up * (change * (j0 + translationAt(motion, samples[i])) + shift);
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
     if (const int d = static_cast<int>(asset.metadata.dmpl.targets.size());
         d > 0)  // DMPL soft tissue (dmpl_targets.h)
       if (Status st = applyDmplFrame(asset, dmplAt(motion, samples[i].frame, samples[i].t, d),
-                                     local, up, i, &clip);
+                                     local, turn, i, &clip);
           !st)
         return st.error();
     if (expressions > 0)  // animated SMPL-X expression (expression_targets.h)
       applyExpressionFrame(asset,
                            expressionAt(motion, samples[i].frame, samples[i].t,
                                         model.numExpressions(), asset.metadata.expression),
-                           local, up, i, &clip);
+                           local, turn, i, &clip);
     if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
   }
   for (auto& track : clip.rotations) makeContinuous(&track);

@@ -59,8 +59,15 @@ struct Motion {
   Eigen::MatrixXd expression;  // T x E SMPL-X expression coefficients per frame; 0 x 0 if absent
   std::string track;           // the person or track id in a multi-person file; "" if it has one
   int64_t first_frame = 0;     // source frame number of frames[0] (a track that starts later)
-  std::string hand;            // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
-  PendingHands hands;          // fits only: resolved by resolveFitHands()
+  int64_t held_frames = 0;     // frames without a detection, holding the previous one (tracks)
+  // Per-frame frame change applied to the whole posed body about the world
+  // origin, before the world turn: v -> world_rotation[f] v + world_translation[f]
+  // (EasyMocap's Rh/Th, TRAM's camera-to-world). Empty: identity. The bake
+  // knows J_0: the root becomes A R_0 and the root node A (J_0 + t) + b.
+  std::vector<Eigen::Matrix3d> world_rotation;
+  std::vector<Eigen::Vector3d> world_translation;
+  std::string hand;    // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
+  PendingHands hands;  // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
   std::string source_layout;       // the table row that read it ("amass", "fit", ...)
   MemoryCharge charge;             // `frames` and `translation` against the memory budget

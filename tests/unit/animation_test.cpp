@@ -150,5 +150,31 @@ TEST(Animation, CameraFrameTurnsUprightByAHalfTurnAboutX) {
             1e-15);
 }
 
+// A per-frame frame change (EasyMocap's Rh/Th) turns and moves the whole
+// posed body about the world origin: root A R_0, root node A (J_0 + t) + b.
+TEST(Animation, FrameChangeMovesTheBodyAboutTheOrigin) {
+  Loaded l = load("smpl_small.npz", "smpl_72.npz");
+  const size_t t = l.motion.frames.size();
+  for (size_t f = 0; f < t; ++f) {
+    l.motion.world_rotation.push_back(
+        Eigen::AngleAxisd(0.05 * f, Eigen::Vector3d(0.3, 1, 0.2).normalized()).toRotationMatrix());
+    l.motion.world_translation.emplace_back(0.1 * f, 1.0, -2.0);
+  }
+  Result<AnimationClip> clip = bakeAnimation(l.model, l.asset, l.motion, AnimationOptions(), "m");
+  ASSERT_TRUE(clip.ok()) << clip.message();
+  const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
+  for (int i : {0, 11, 29}) {
+    const Eigen::Matrix3d& a = l.motion.world_rotation[i];
+    EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - a * l.motion.frames[i][0])
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-12);
+    EXPECT_LT((clip->root_translation[i] -
+               (a * (j0 + l.motion.translation[i]) + l.motion.world_translation[i]))
+                  .norm(),
+              1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace smpl
