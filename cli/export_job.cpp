@@ -50,6 +50,7 @@ Result<std::vector<Motion>> loadMotions(const BodyModel& model, const Settings& 
   std::vector<Motion> motions;
   MotionOptions options;
   options.source_fps = s.source_fps;
+  options.up_given = s.animation.up != UpAxis::Auto;
   for (const std::string& path : job.motions) {
     Result<Motion> m = loadMotion(path, options);
     if (!m) return fail(ErrorKind::Load, "loading", path, m.message());
@@ -122,8 +123,10 @@ void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& j
       report->notes.push_back(m.name + ": " + std::to_string(mapping->dropped.size()) + " " +
                               modelKindName(m.layout) + " joints not in the model were dropped (" +
                               mapping->dropped.front() + ", ...)");
-    if (i < asset.animations.size())
+    if (i < asset.animations.size()) {
       report->frames += static_cast<int>(asset.animations[i].times.size());
+      for (const std::string& note : asset.animations[i].notes) report->notes.push_back(note);
+    }
   }
 }
 

@@ -312,12 +312,15 @@ const std::vector<OptionSpec> kOptions = {
      "take the betas from the (first) motion and fail if it has none (without --betas/--betas-file "
      "the motion's betas are used when it has them, else zeros)",
      [](V, S* s) { return s->betas_from_motion = true, Status(); }},
-    {"--up", nullptr, "y|z", Applies::Motion, nullptr,
-     "up axis of the motion's world (default: z for AMASS files, else y); output is always Y-up",
+    {"--up", nullptr, "y|z|-y", Applies::Motion, nullptr,
+     "up axis of the motion's world (default: what the layout says: z for AMASS files, -y for the "
+     "camera frames of video methods, else y); -y: a camera frame (x right, y down, z forward), "
+     "turned upright by a half turn about x; output is always Y-up",
      [](V v, S* s) {
-       Result<int> c = choice(v, "--up", {"y", "z"});
+       Result<int> c = choice(v, "--up", {"y", "z", "-y"});
        if (!c) return Status(c.error());
-       return s->animation.up = *c == 0 ? UpAxis::Y : UpAxis::Z, Status();
+       const UpAxis axes[] = {UpAxis::Y, UpAxis::Z, UpAxis::NegY};
+       return s->animation.up = axes[*c], Status();
      }},
     {"--root-motion", nullptr, "keep|in-place", Applies::Motion, nullptr,
      "keep or drop horizontal root motion (default keep)",

@@ -146,9 +146,9 @@ void clipNotes(const BodyModel& model, const Asset& asset, const Motion& motion,
   if (baked == 0 || motion.expression.rows() == 0) return;
   char text[300];
   std::snprintf(text, sizeof text,
-                "%s: the expression is baked on the rest shape's skeleton (joints from the betas "
-                "only); against the authors' math, where the joints follow the expression, this "
-                "costs up to %.4f mm",
+                "%s: the expression is baked with the betas-only skeleton (fixed joints); against "
+                "the authors' math, where the joints follow the expression, this costs up to "
+                "%.3f mm",
                 clip->name.c_str(), clip->expression_joint_error * 1000);
   clip->notes.push_back(text);
 }

@@ -33,6 +33,22 @@ Status checkNumbers(const Array& a, const std::string& path, const char* key) {
   return Status();
 }
 
+Status readExpression(const Array& a, const std::string& path, const char* key, Motion* m) {
+  if (Status st = checkNumbers(a, path, key); !st) return st;
+  const int64_t t = static_cast<int64_t>(m->frames.size());
+  const int64_t e = a.shape.empty() ? 1 : a.shape.back();
+  const int64_t rows = e > 0 ? a.size() / e : 0;
+  if (e < 1 || a.shape.size() > 2 || (rows != t && rows != 1))
+    return makeError(path + ": '" + key + "' has shape " + shapeString(a.shape) + "; expected (" +
+                     std::to_string(t) + ",E) expression coefficients");
+  if (Status st = m->charge.add(static_cast<uint64_t>(t * e) * sizeof(double), path, key); !st)
+    return st;
+  m->expression.resize(t, e);
+  for (int64_t f = 0; f < t; ++f)
+    for (int64_t i = 0; i < e; ++i) m->expression(f, i) = a.data[(rows == 1 ? 0 : f) * e + i];
+  return Status();
+}
+
 void putAxisAngle(const double* p, int count, int first, Rotations* out) {
   const Rotations r = rotationsFromAxisAngle(Eigen::Map<const Eigen::VectorXd>(p, 3 * count));
   for (int k = 0; k < count; ++k) (*out)[first + k] = r[k];

@@ -26,6 +26,10 @@ Status allocateFrames(int64_t t, size_t joints, const std::string& path, Motion*
 // Numbers (not text), all finite; else "<path>: '<key>' ..." errors.
 Status checkNumbers(const Array& a, const std::string& path, const char* key);
 
+// Per-frame SMPL-X expression coefficients `key` into m->expression (T x E):
+// (T,E), or one row (1,E) / (E,) for every frame; T = m->frames.size().
+Status readExpression(const Array& a, const std::string& path, const char* key, Motion* m);
+
 // `count` consecutive axis-angle triples or row-major 3x3 matrices from `p`
 // into out[first..first+count).
 void putAxisAngle(const double* p, int count, int first, Rotations* out);

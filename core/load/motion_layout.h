@@ -67,10 +67,10 @@ const MotionLayout* findLayout(const DataNode& root, unsigned container);
 // excluded by batch mode.
 std::vector<std::string> motionFileExtensions();
 
-// The message for a file no row matches: "no pose data (keys 'betas',
-// 'gender'): a shape file, not a motion" when no key looks like pose data,
-// else "keys found: 'a', 'b', ...; not a motion layout this version reads
-// (supported layouts: docs/motions.md)". Keys pass through printable().
+// The message for a file no row matches: "no pose data (keys betas,
+// gender): a shape file, not a motion" when no key looks like pose data,
+// else "keys found: a, b, ...; supported layouts: docs/motions.md" (keys
+// sorted, at most 12, through printable()).
 std::string unmatchedMessage(const DataNode& root);
 
 // True when no row matches and no key looks like pose data (batch mode

@@ -6,9 +6,11 @@
 #include "core/io/printable.h"
 #include "core/load/motion_aist.h"
 #include "core/load/motion_amass.h"
+#include "core/load/motion_beat2.h"
 #include "core/load/motion_fit.h"
 #include "core/load/motion_layout.h"
 #include "core/load/motion_smplcodec.h"
+#include "core/load/motion_vposer.h"
 
 namespace smpl {
 
@@ -17,8 +19,10 @@ const std::vector<MotionLayout>& motionLayouts() {
   static const std::vector<MotionLayout> table = {
       smplCodecLayout(),  // bodyPose (.smpl)
       aistLayout(),       // smpl_poses
-      amassLayout(),      // poses, root_orient
-      fitLayout(),        // body_pose, global_orient
+      vposerLayout(),  // latent_pose, pose_embedding, latent (refused) before AMASS's root_orient
+      beat2Layout(),   // poses + expressions / model, before AMASS's poses
+      amassLayout(),   // poses, root_orient
+      fitLayout(),     // body_pose, global_orient
   };
   return table;
 }
@@ -51,11 +55,14 @@ bool looksLikePose(const std::string& key) {
   return false;
 }
 
+// The keys, sorted, comma-separated, at most 12 then ", ...".
 std::string keyList(const DataNode& root) {
+  std::vector<std::string> keys = root.keys;
+  std::sort(keys.begin(), keys.end());
   std::string list;
-  const size_t shown = std::min<size_t>(root.keys.size(), 12);
-  for (size_t i = 0; i < shown; ++i) list += (i ? ", '" : "'") + printable(root.keys[i], 64) + "'";
-  if (root.keys.size() > shown) list += ", ... (" + std::to_string(root.keys.size()) + " keys)";
+  const size_t shown = std::min<size_t>(keys.size(), 12);
+  for (size_t i = 0; i < shown; ++i) list += (i ? ", " : "") + printable(keys[i], 64);
+  if (keys.size() > shown) list += ", ... (" + std::to_string(keys.size()) + " keys)";
   return list.empty() ? "none" : list;
 }
 
@@ -75,8 +82,7 @@ std::string unmatchedMessage(const DataNode& root) {
            "docs/motions.md)";
   if (isShapeOnly(root))
     return "no pose data (keys " + keyList(root) + "): a shape file, not a motion";
-  return "keys found: " + keyList(root) +
-         "; not a motion layout this version reads (supported layouts: docs/motions.md)";
+  return "keys found: " + keyList(root) + "; supported layouts: docs/motions.md";
 }
 
 }  // namespace smpl

@@ -79,9 +79,7 @@ Status readScalars(const DataNode& d, const std::string& path, Motion* m) {
     if (Status s = checkFrameRate(r->data[0], path, "'frameRate'"); !s) return s;
     m->fps = r->data[0];
   }
-  if (const Array* e = find(d, "expressionParameters"))
-    m->notes.push_back("'expressionParameters' " + shapeString(e->shape) +
-                       " are not baked (the export has a fixed expression)");
+
   return Status();
 }
 
@@ -151,6 +149,8 @@ Status decodeSmplCodec(const DataNode& d, const std::string& path, Motion* m) {
     if (Status s = putPart(d, path, "rightHandPose", 15, hands + 15, m); !s) return s;
   }
   if (Status s = readTranslation(d, path, m); !s) return s;
+  if (const Array* e = find(d, "expressionParameters"))  // baked with --expression-keys
+    if (Status s = readExpression(*e, path, "expressionParameters", m); !s) return s;
   return readScalars(d, path, m);
 }
 

@@ -14,7 +14,8 @@
 //                 (with a note). The joint count decides; nothing else does.
 //   headPose      (T,3,3) axis-angle of jaw, left eye, right eye (SMPL-X)
 //   leftHandPose / rightHandPose (T,15,3) axis-angle, index1..thumb3
-//   expressionParameters (T,E)  not baked (a note says so)
+//   expressionParameters (T,E)  SMPL-X expression coefficients per frame, baked
+//                 as expr_<i> weights with --expression-keys (exporter/expression_targets.h)
 // Missing part poses are zeros (rest), as the codec's full_pose fills them.
 // A file without bodyPose is a body shape only (no pose data).
 #pragma once
