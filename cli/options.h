@@ -23,7 +23,7 @@ enum class Applies {
   Fbx,     // only FBX output (.fbx, or --format fbx)
 };
 
-// How an option enters the producer hash (cli/producer.h), which decides
+// How an option enters the producer hash (exporter/request/producer.h), which decides
 // whether an existing output is up to date.
 enum class Hashed {
   Value,    // as given: it changes the bytes written

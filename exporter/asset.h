@@ -88,7 +88,10 @@ struct AnimationClip {
   // [joint][frame] local translations of every joint (--dmpl-joints regressed); empty = rest_local
   std::vector<std::vector<Eigen::Vector3d>> joint_translations;
   double dmpl_joint_error = 0.0;  // max vertex error (m) that betas-only joints cost (DMPL)
-  MemoryCharge charge;            // the arrays above, against the memory budget
+  // Motion joints the model lacks, dropped by the mapping this clip was baked
+  // with (MotionMapping::dropped, animation.h), for the run's notes; not written.
+  std::vector<std::string> dropped_joints;
+  MemoryCharge charge;  // the arrays above, against the memory budget
 };
 
 struct AssetMetadata {

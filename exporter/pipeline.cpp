@@ -1,6 +1,7 @@
 #include "exporter/pipeline.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <numeric>
 #include <optional>
 
@@ -15,46 +16,6 @@ namespace {
 
 Eigen::VectorXd toVector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
-}
-
-// Options that do not fit the model: usage errors (exit 1 in the CLI).
-Status checkOptions(const BodyModel& model, const ExportOptions& o) {
-  if (static_cast<int>(o.betas.size()) > model.numBetas())
-    return makeError("betas: " + std::to_string(o.betas.size()) + " values given; the model " +
-                         model.name + " has " + std::to_string(model.numBetas()),
-                     ErrorKind::Usage);
-  if (static_cast<int>(o.expression.size()) > model.numExpressions())
-    return makeError("expression: " + std::to_string(o.expression.size()) +
-                         " values given; the model " + model.name + " has " +
-                         std::to_string(model.numExpressions()),
-                     ErrorKind::Usage);
-  if (o.max_influences != kAllInfluences &&
-      (o.max_influences < 1 || o.max_influences > model.numJoints()))
-    return makeError("--max-influences must be between 1 and " + std::to_string(model.numJoints()) +
-                         " (the model's joints) or 'all', got " + std::to_string(o.max_influences),
-                     ErrorKind::Usage);
-  if (o.shape_keys < 0 || o.shape_keys > model.numBetas())
-    return makeError("--shape-keys " + std::to_string(o.shape_keys) + ": the model has " +
-                         std::to_string(model.numBetas()) + " shape directions",
-                     ErrorKind::Usage);
-  if (o.expression_keys < 0 || o.expression_keys > model.numExpressions())
-    return makeError("--expression-keys " + std::to_string(o.expression_keys) + ": the model has " +
-                         std::to_string(model.numExpressions()) + " expression directions",
-                     ErrorKind::Usage);
-  if (o.corrective_basis < 0 || o.corrective_basis > model.numPoseFeatures())
-    return makeError("--corrective-basis " + std::to_string(o.corrective_basis) + ": expected 1.." +
-                         std::to_string(model.numPoseFeatures()) + " (the model has " +
-                         std::to_string(model.numPoseFeatures()) + " pose correctives)",
-                     ErrorKind::Usage);
-  if (o.corrective_basis > 0 && !o.correctives)
-    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)",
-                     ErrorKind::Usage);
-  if (o.corrective_basis > 0 && o.encoding == CorrectiveEncoding::Split)
-    return makeError(
-        "--corrective-basis drives its targets with signed or unit weights; it conflicts with "
-        "--corrective-weights split",
-        ErrorKind::Usage);
-  return Status();
 }
 
 Skeleton buildSkeleton(const BodyModel& model, const Eigen::MatrixXd& joints) {
@@ -191,9 +152,11 @@ Status addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* as
   } else if (o.correctives) {
     addCorrectives(model, o, asset);
   }
-  for (int i = 0; i < o.shape_keys; ++i)
+  // Counts beyond the model's directions are clamped (a precondition: the
+  // request refuses them first, exporter/request/check_request.h).
+  for (int i = 0; i < std::min(o.shape_keys, model.numBetas()); ++i)
     targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
-  for (int i = 0; i < o.expression_keys; ++i)
+  for (int i = 0; i < std::min(o.expression_keys, model.numExpressions()); ++i)
     targets.push_back(directionTarget("expr_" + std::to_string(i), model.exprdirs, i, src));
   return Status();
 }
@@ -244,7 +207,6 @@ std::string correctiveTargetName(const BodyModel& model, int feature) {
 }
 
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
-  if (Status s = checkOptions(model, o); !s) return s.error();
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
   Result<std::optional<UvLayout>> uv =
