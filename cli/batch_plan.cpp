@@ -101,12 +101,15 @@ void keepShard(const Settings& s, BatchPlan* plan) {
 
 Result<BatchPlan> planBatch(const Settings& s) {
   BatchPlan plan;
+  const WriterFormat* format = outputFormat(s);  // --format, checked by the parser
+  if (!format) return usage("--format " + s.format + ": no such output format");
   Result<std::vector<std::string>> motions = listMotions(s.request.motion_dir, &plan);
   if (!motions) return motions.error();
   for (const std::string& m : *motions) {
     PlannedOutput p;
     p.motion = m;
-    p.out = (fs::path(s.out_dir) / (fs::path(m).stem().string() + "." + s.format)).string();
+    p.out =
+        (fs::path(s.out_dir) / (fs::path(m).stem().string() + format->extensions.front())).string();
     plan.outputs.push_back(p);
   }
   if (Status st = checkCollisions(plan.outputs); !st) return usage(st.message());

@@ -1,5 +1,6 @@
 #include "cli/options.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 
 #include "cli/settings.h"
 #include "core/memory_budget.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 namespace {
@@ -125,7 +127,7 @@ const std::vector<OptionSpec> kOptions = {
      "...); or the built-in demo body",
      [](V v, S* s) { return s->request.model = v, Status(); }, Hashed::Content},
     {"--out", nullptr, "FILE", Applies::Single, nullptr,
-     "output; format from the extension (.glb, .gltf, .fbx). Also writes FILE.smpl.json (metadata)",
+     "output; format from the extension ({extensions}). Also writes FILE.smpl.json (metadata)",
      [](V v, S* s) { return s->request.out = v, Status(); }, Hashed::No},
     {"--betas", nullptr, "v,v,...", Applies::Any, nullptr,
      "shape coefficients (fewer than the model has are zero-padded)",
@@ -193,20 +195,20 @@ const std::vector<OptionSpec> kOptions = {
      "the "
      "metadata; runtime scripts apply it)",
      [](V v, S* s) { return intInto(v, "--corrective-basis", &s->request.corrective_basis); }},
-    {"--corrective-epsilon", nullptr, "M", Applies::Gltf, nullptr,
+    {"--corrective-epsilon", nullptr, "M", Applies::Format, nullptr,
      "glTF: drop morph deltas up to M metres, write sparse accessors",
      [](V v, S* s) {
        Result<double> m = parseNumber(v, "--corrective-epsilon");
        if (!m) return Status(m.error());
        return s->request.corrective_epsilon = *m, Status();
      }},
-    {"--quantize-morphs", nullptr, nullptr, Applies::Gltf, nullptr,
+    {"--quantize-morphs", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: int16 morph deltas (KHR_mesh_quantization)",
      [](V, S* s) { return s->request.quantize_morphs = true, Status(); }},
-    {"--draco", nullptr, nullptr, Applies::Gltf, nullptr,
+    {"--draco", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
      [](V, S* s) { return s->request.draco = true, Status(); }},
-    {"--gltf-embed", nullptr, nullptr, Applies::Gltf, nullptr,
+    {"--gltf-embed", nullptr, nullptr, Applies::Format, nullptr,
      ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); "
      "default: the "
      "buffer is FILE.bin beside FILE.gltf (written and replaced together with it)",
@@ -242,20 +244,20 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        return s->request.dmpl_regressed_joints = *c == 1, Status();
      }},
-    {"--fbx-units", nullptr, "m|cm", Applies::Fbx, nullptr, "FBX geometry units (default m)",
+    {"--fbx-units", nullptr, "m|cm", Applies::Format, nullptr, "FBX geometry units (default m)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-units", {"m", "cm"});
        if (!c) return Status(c.error());
        return s->request.fbx_units = v, Status();
      }},
-    {"--fbx-version", nullptr, "7400|7500", Applies::Fbx, nullptr,
+    {"--fbx-version", nullptr, "7400|7500", Applies::Format, nullptr,
      "FBX binary version (default 7400)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-version", {"7400", "7500"});
        if (!c) return Status(c.error());
        return s->request.fbx_version = *c == 0 ? 7400 : 7500, Status();
      }},
-    {"--fbx-compress-level", nullptr, "N", Applies::Fbx, nullptr,
+    {"--fbx-compress-level", nullptr, "N", Applies::Format, nullptr,
      "array compression, as the FBX SDK's EXP_FBX_COMPRESS_LEVEL: 0 = stored uncompressed "
      "(fastest to write and read, largest), 1..12 = deflate level (default 1)",
      [](V v, S* s) { return intInto(v, "--fbx-compress-level", &s->request.fbx_compress_level); }},
@@ -312,10 +314,12 @@ const std::vector<OptionSpec> kOptions = {
     {"--out-dir", nullptr, "DIR", Applies::Batch, nullptr,
      "where batch outputs go (DIR/<motion stem>.<format>)",
      [](V v, S* s) { return s->out_dir = v, Status(); }, Hashed::No},
-    {"--format", nullptr, "glb|gltf|fbx", Applies::Batch, nullptr,
-     "batch output format (default glb)",
+    {"--format", nullptr, "{formats}", Applies::Batch, nullptr,
+     "batch output format (default {default-format})",
      [](V v, S* s) {
-       Result<int> c = choice(v, "--format", {"glb", "gltf", "fbx"});
+       std::vector<const char*> names;  // the writer table's rows (plugins/writer.h)
+       for (const WriterFormat& row : writerFormats()) names.push_back(row.name.c_str());
+       Result<int> c = choice(v, "--format", names);
        if (!c) return Status(c.error());
        return s->format = v, Status();
      }},
@@ -373,14 +377,37 @@ std::vector<std::string> wrap(const std::string& text, size_t width) {
   return lines;
 }
 
+// The writer table's words in usage text (plugins/writer.h): {formats}
+// "glb|gltf|fbx", {default-format} "glb", {extensions} ".glb, .gltf, .fbx",
+// {extensions|} ".glb|.gltf|.fbx".
+std::string expand(std::string text) {
+  std::string names, extensions, bars;
+  for (const WriterFormat& row : writerFormats()) {
+    names += (names.empty() ? "" : "|") + row.name;
+    for (const std::string& ext : row.extensions) {
+      extensions += (extensions.empty() ? "" : ", ") + ext;
+      bars += (bars.empty() ? "" : "|") + ext;
+    }
+  }
+  const std::pair<const char*, std::string> words[] = {
+      {"{formats}", names},
+      {"{default-format}", writerFormats().front().name},
+      {"{extensions}", extensions},
+      {"{extensions|}", bars}};
+  for (const auto& [word, value] : words)
+    for (size_t at; (at = text.find(word)) != std::string::npos;)
+      text.replace(at, std::string(word).size(), value);
+  return text;
+}
+
 // "  --name VALUE" then the help text in a column; a long name puts the help
 // on the next line.
 void appendUsage(const OptionSpec& o, std::string* out) {
   std::string left = std::string("  ") + o.name;
   if (o.alias) left += std::string(", ") + o.alias;
-  if (o.value) left += std::string(" ") + o.value;
+  if (o.value) left += " " + expand(o.value);
   bool first = true;
-  for (const std::string& line : wrap(o.help, kWidth - kHelpColumn)) {
+  for (const std::string& line : wrap(expand(o.help), kWidth - kHelpColumn)) {
     if (first && left.size() + 1 <= kHelpColumn) {
       *out += left + std::string(kHelpColumn - left.size(), ' ') + line + "\n";
     } else {
@@ -401,18 +428,22 @@ const OptionSpec* findOption(const std::string& name) {
   return nullptr;
 }
 
-const char* appliesRule(Applies applies) {
-  switch (applies) {
+std::string appliesRule(const OptionSpec& option) {
+  switch (option.applies) {
     case Applies::Single:
       return "conflicts with batch mode (--motion-dir)";
     case Applies::Motion:
       return "needs --motion or --motion-dir";
     case Applies::Batch:
       return "applies only to batch mode (--motion-dir)";
-    case Applies::Gltf:
-      return "applies only to glTF output (.glb, .gltf)";
-    case Applies::Fbx:
-      return "applies only to .fbx output";
+    case Applies::Format: {
+      std::string extensions;
+      for (const WriterFormat& row : writerFormats())
+        if (std::find(row.options.begin(), row.options.end(), option.name) != row.options.end())
+          for (const std::string& ext : row.extensions)
+            extensions += (extensions.empty() ? "" : ", ") + ext;
+      return "applies only to " + extensions + " output";
+    }
     default:
       return "";
   }
@@ -421,7 +452,8 @@ const char* appliesRule(Applies applies) {
 std::string usageText() {
   std::string out =
       "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose correctives\n\n"
-      "Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]\n"
+      "Usage: smpl-export --model PATH|builtin --out FILE" +
+      expand("{extensions|}") + " [options]\n" +
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
   for (const OptionSpec& o : kOptions) {
     if (o.heading && *o.heading)

@@ -6,7 +6,6 @@
 #include <algorithm>
 
 #include "cli/options.h"
-#include "core/io/file_io.h"
 #include "core/io/printable.h"
 
 namespace smpl {
@@ -19,21 +18,25 @@ bool given(const Settings& s, const char* name) {
                      [&](const auto& o) { return o.first == name; });
 }
 
+// Whether the output format's writer row lists a format-only option; an
+// unknown format lists everything (the request refuses the format itself).
+bool formatTakes(const WriterFormat* format, const std::string& option) {
+  return !format ||
+         std::find(format->options.begin(), format->options.end(), option) != format->options.end();
+}
+
 // An option used where its table entry says it does not apply.
 Status checkApplies(const Settings& s, bool batch) {
   const bool animated = !s.request.motions.empty() || batch;
-  const std::string& out = s.request.out;
-  const bool fbx = batch ? s.format == "fbx" : hasSuffix(out, ".fbx");
+  const WriterFormat* format = outputFormat(s);
   for (const auto& [name, value] : s.given_options) {
     const OptionSpec* o = findOption(name);
     const bool ok = o->applies == Applies::Any || (o->applies == Applies::Single && !batch) ||
                     (o->applies == Applies::Motion && animated) ||
                     (o->applies == Applies::Batch && batch) ||
-                    (o->applies == Applies::Gltf && !fbx) || (o->applies == Applies::Fbx && fbx);
-    if (!ok) return usageError(name + " " + appliesRule(o->applies));
+                    (o->applies == Applies::Format && formatTakes(format, name));
+    if (!ok) return usageError(name + " " + appliesRule(*o));
   }
-  if (given(s, "--gltf-embed") && (batch ? s.format != "gltf" : !hasSuffix(out, ".gltf")))
-    return usageError("--gltf-embed applies only to .gltf output");
   return Status();
 }
 
@@ -74,6 +77,11 @@ Status takeOption(int argc, const char* const* argv, int* i, Settings* s) {
 }  // namespace
 
 bool isBatch(const Settings& s) { return given(s, "--motion-dir") || given(s, "--out-dir"); }
+
+const WriterFormat* outputFormat(const Settings& s) {
+  if (!isBatch(s)) return writerFormatForPath(s.request.out);
+  return s.format.empty() ? &writerFormats().front() : writerFormatByName(s.format);
+}
 
 Result<Settings> parseSettings(int argc, const char* const* argv) {
   Settings s;

@@ -13,13 +13,14 @@
 
 #include "core/result.h"
 #include "exporter/request/export_request.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 
 struct Settings {
   ExportRequest request;                 // every option of the export itself
   std::string out_dir;                   // --out-dir DIR (batch mode)
-  std::string format = "glb";            // --format (batch output format)
+  std::string format;                    // --format (batch; "" = the writer table's first row)
   bool force = false;                    // --force (batch): rebuild outputs even when up to date
   int shard_index = 0, shard_count = 1;  // --shard I/N (batch): this run's share
   bool quiet = false;                    // --quiet, -q: no summary
@@ -31,6 +32,11 @@ struct Settings {
 
 // Batch mode: --motion-dir or --out-dir given.
 bool isBatch(const Settings& settings);
+
+// The writer row (plugins/writer.h) of the run's outputs: batch mode's
+// --format (default the table's first row), else --out's extension; null when
+// --out has none the table knows (the request reports it).
+const WriterFormat* outputFormat(const Settings& settings);
 
 // Parse argv through the option table, then the rules of where options apply
 // (the table's Applies column) and batch mode's pair of folders; fills

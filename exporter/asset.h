@@ -117,6 +117,10 @@ struct Asset {
   SkinnedMesh mesh;
   std::vector<AnimationClip> animations;
   AssetMetadata metadata;
+  // A skeleton-only asset (for a writer without a mesh, plugins/writer.h
+  // needs_mesh = false): `mesh` is empty and validateAssetStructure does not
+  // require one. Last: keeps aggregate initialisers of the fields above valid.
+  bool skeleton_only = false;
 };
 
 }  // namespace smpl

@@ -188,6 +188,31 @@ void buildMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const Sp
   }
 }
 
+// The model-level metadata of every asset.
+void fillMetadata(const BodyModel& model, const ExportOptions& o, AssetMetadata* meta) {
+  meta->model_kind = modelKindName(model.kind);
+  meta->model_name = model.name;
+  meta->exporter_version = SMPL_EXPORT_VERSION;
+  meta->betas = o.betas;
+  meta->betas.resize(model.numBetas(), 0.0);
+  meta->expression = o.expression;
+  meta->expression.resize(model.numExpressions(), 0.0);
+  meta->skin_weights = skinWeightMethodName(o.skin_weights);
+  meta->corrective_encoding = correctiveEncodingName(o.encoding);
+}
+
+// Options::mesh false: the subject's skeleton and metadata only; nothing of
+// the mesh is computed (no skin fit, no morph targets).
+Asset skeletonAsset(const BodyModel& model, const ExportOptions& o, const Eigen::MatrixXd& joints) {
+  Asset asset;
+  asset.name = o.name;
+  asset.skeleton = buildSkeleton(model, joints);
+  asset.skeleton_only = true;
+  fillMetadata(model, o, &asset.metadata);
+  asset.metadata.max_influences = 0;
+  return asset;
+}
+
 }  // namespace
 
 const char* correctiveEncodingName(CorrectiveEncoding encoding) {
@@ -209,6 +234,7 @@ std::string correctiveTargetName(const BodyModel& model, int feature) {
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
+  if (!o.mesh) return skeletonAsset(model, o, body->joints);
   Result<std::optional<UvLayout>> uv =
       resolveUvLayout(o.uv_obj, model);  // model UVs, --uv FILE or none
   if (!uv)
@@ -219,17 +245,8 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   const SparseSkin skin = exportSkin(model, *body, o);
   const int m = static_cast<int>(skin.joints.cols());  // influencesFor(), or fewer with "all"
   buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
-  AssetMetadata& meta = asset.metadata;
-  meta.model_kind = modelKindName(model.kind);
-  meta.model_name = model.name;
-  meta.exporter_version = SMPL_EXPORT_VERSION;
-  meta.betas = o.betas;
-  meta.betas.resize(model.numBetas(), 0.0);
-  meta.expression = o.expression;
-  meta.expression.resize(model.numExpressions(), 0.0);
-  meta.max_influences = m;
-  meta.skin_weights = skinWeightMethodName(o.skin_weights);
-  meta.corrective_encoding = correctiveEncodingName(o.encoding);
+  fillMetadata(model, o, &asset.metadata);
+  asset.metadata.max_influences = m;
   if (Status s = addMorphTargets(model, o, &asset); !s) return s.error();
   return asset;
 }

@@ -62,6 +62,9 @@ struct ExportOptions {
   std::string name = "body";
   bool quantize_morphs = false;  // --quantize-morphs: exportAsset folds each corrective's peak
                                  // into its weights and marks it quantized (morph_scales.h)
+  // false: a skeleton-only asset (the writer has no mesh, plugins/writer.h):
+  // no UVs, no skin (nothing fitted), no morph targets.
+  bool mesh = true;
 };
 
 // The rest asset: skeleton, mesh, skin (exportSkin), morph targets. The
@@ -71,7 +74,8 @@ struct ExportOptions {
 // influencesFor, shape/expression keys to B/E), a corrective basis without
 // correctives is not built, and a basis with Split weights is signed. Errors:
 // more betas or expression values than the model has (shapeBody), an
-// unreadable --uv file (kind Load), a basis that cannot be fitted.
+// unreadable --uv file (kind Load), a basis that cannot be fitted. With
+// options.mesh false: the skeleton and metadata only (Asset::skeleton_only).
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& options);
 
 // Morph target name for pose feature n: pose_<joint>_<r><c> (docs/file-contract.md).

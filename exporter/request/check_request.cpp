@@ -82,6 +82,20 @@ Status checkConflicts(const ExportRequest& r) {
   return checkMorphOptions(r);
 }
 
+// A format without a mesh (writer.h needs_mesh false) refuses what only a mesh has.
+Status checkMeshOptions(const ExportRequest& r, const WriterFormat& format) {
+  const char* option = !r.dmpl.empty()          ? "--dmpl"
+                       : r.shape_keys > 0       ? "--shape-keys"
+                       : r.expression_keys > 0  ? "--expression-keys"
+                       : !r.uv.empty()          ? "--uv"
+                       : r.corrective_basis > 0 ? "--corrective-basis"
+                       : r.quantize_morphs      ? "--quantize-morphs"
+                                                : nullptr;
+  if (!option) return Status();
+  return usage(std::string(option) + " needs an output format with a mesh; " + format.name +
+               " output has none");
+}
+
 // A count option against what the model has: "--shape-keys 12: the model has 10 shape directions".
 Status checkCount(int value, int available, const char* option, const char* what) {
   if (value >= 0 && value <= available) return Status();
@@ -99,10 +113,12 @@ Status checkRequestOptions(const ExportRequest& r) {
 Status checkRequest(const ExportRequest& r) {
   if (Status st = checkRequestOptions(r); !st) return st;
   if (r.out.empty() && r.motion_dir.empty())
-    return usage("missing --out FILE (.glb, .gltf or .fbx)");
-  if (!r.out.empty() && !writerForPath(r.out))
-    return usage("--out " + r.out + ": unknown format (expected .glb, .gltf or .fbx)");
-  return Status();
+    return usage("missing --out FILE (" + writerExtensionList() + ")");
+  if (r.out.empty()) return Status();  // a batch: each job's output has its --format's row
+  const WriterFormat* format = writerFormatForPath(r.out);
+  if (!format)
+    return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
+  return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }
 
 Status checkRequestForModel(const ExportRequest& r, const std::vector<double>& betas,

@@ -39,7 +39,9 @@ namespace smpl {
 Status checkRequestOptions(const ExportRequest& request);
 
 // checkRequestOptions, then the output: --out given unless batch
-// (motion_dir), and its format has a writer (plugins/writer.h).
+// (motion_dir), its format has a row in the writer table (plugins/writer.h),
+// and a format without a mesh gets no mesh options (--dmpl, --shape-keys,
+// --expression-keys, --uv, --corrective-basis, --quantize-morphs).
 Status checkRequest(const ExportRequest& request);
 
 // Counts against `model`: `betas` (the request's, from --betas or

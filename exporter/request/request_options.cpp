@@ -18,6 +18,8 @@ ExportOptions exportOptionsOf(const ExportRequest& r, const std::vector<double>&
   o.uv_obj = r.uv;
   o.name = r.name;
   o.quantize_morphs = r.quantize_morphs;
+  const WriterFormat* format = writerFormatForPath(r.out);
+  o.mesh = !format || format->needs_mesh;  // a skeleton-only writer: no skin, no morph targets
   return o;
 }
 
@@ -33,7 +35,8 @@ AnimationOptions animationOptionsOf(const ExportRequest& r) {
 
 WriterOptions writerOptionsOf(const ExportRequest& r, const std::string& buffer_path) {
   WriterOptions w;
-  w.binary = !hasSuffix(r.out, ".gltf");
+  const WriterFormat* format = writerFormatForPath(r.out);
+  w.binary = !format || format->binary;
   w.buffer_uri = buffer_path.empty() ? "" : baseName(buffer_path);
   w.fbx_units = r.fbx_units;
   w.fbx_version = r.fbx_version;

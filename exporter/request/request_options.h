@@ -15,7 +15,8 @@
 namespace smpl {
 
 // `betas`: the run's (RunInputs, run_request.h); the encoding stays as asked
-// (Auto is resolved by exportAsset, export_asset.h).
+// (Auto is resolved by exportAsset, export_asset.h); no mesh when the
+// output's writer row has none (plugins/writer.h needs_mesh).
 ExportOptions exportOptionsOf(const ExportRequest& request, const std::vector<double>& betas);
 
 AnimationOptions animationOptionsOf(const ExportRequest& request);

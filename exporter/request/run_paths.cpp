@@ -12,6 +12,7 @@
 #include "core/io/file_io.h"
 #include "core/load/model_folder.h"
 #include "core/load/uv_npy.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
@@ -151,9 +152,9 @@ RunPaths runPaths(const ExportRequest& r, const std::vector<std::string>& outs,
 }
 
 std::string gltfBufferPath(const ExportRequest& r, const std::string& out) {
-  const size_t dot = out.rfind('.');
-  if (r.gltf_embed || dot == std::string::npos || out.compare(dot, std::string::npos, ".gltf") != 0)
-    return "";
+  const WriterFormat* format = writerFormatForPath(out);
+  if (r.gltf_embed || !format || !format->external_buffer) return "";
+  const size_t dot = out.rfind('.');  // the row's extension, whatever its case
   return out.substr(0, dot) + ".bin";
 }
 

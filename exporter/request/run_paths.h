@@ -33,8 +33,9 @@ struct RunPaths {
 RunPaths runPaths(const ExportRequest& request, const std::vector<std::string>& outs,
                   const std::vector<std::string>& motions);
 
-// The external buffer file written beside a .gltf output (DIR/body.gltf ->
-// DIR/body.bin), or "" (GLB, FBX, or --gltf-embed).
+// The external buffer file written beside an output whose writer row has
+// one (plugins/writer.h external_buffer: DIR/body.gltf -> DIR/body.bin), or ""
+// (GLB, FBX, or --gltf-embed).
 std::string gltfBufferPath(const ExportRequest& request, const std::string& out);
 
 // The guard, one line naming both paths (kind Usage, exit 1; no prefix):

@@ -187,14 +187,14 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   if (!bytes) return bytes.error();
   const BodyModel& model = *loaded->pick.model;
   report.bytes = *bytes;
-  report.skin = skinOfAsset(asset->mesh, model.numVertices());
-  report.skin_fitted = true;
+  report.skin_fitted = asset->mesh.joints.cols() > 0;  // no skin for a skeleton-only writer
+  if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
   report.joints = static_cast<int>(asset->skeleton.names.size());
   report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
   report.max_influences = asset->metadata.max_influences;
-  if (r.skin_error_poses > 0) {
+  if (r.skin_error_poses > 0 && report.skin_fitted) {
     Result<PruningError> err =
         measurePruningError(model, report.options, r.skin_error_poses, &report.skin);
     if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());

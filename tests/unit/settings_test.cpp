@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "cli/options.h"
@@ -88,7 +89,8 @@ TEST(Settings, RejectsBeforeWork) {
        "expected 'all' or 'none'"},
       {{"--model", "builtin", "--out", "a.glb", "--max-influences", "2.5"}, "is not an integer"},
       {{"--model", "builtin", "--out", "a.glb", "--out", "b.glb"}, "given twice"},
-      {{"--model", "builtin", "--out", "a.fbx", "--draco"}, "applies only to glTF"},
+      {{"--model", "builtin", "--out", "a.fbx", "--draco"},
+       "--draco applies only to .glb, .gltf output"},
       {{"--model", "builtin", "--out", "a.glb", "--frames", "0:10"}, "needs --motion"},
       {{"--model", "builtin", "--out", "a.glb", "--motion", "w.npz", "--frames", "0-10"},
        "--frames: expected A:B, got '0-10'"},
@@ -188,16 +190,26 @@ TEST(SettingsMemory, MemoryLimitIsParsedAndChecked) {
 namespace smpl {
 namespace {
 
-// Every batch-only, FBX-only and glTF-only option of the table is refused
-// where it does not apply, with the table's rule in the message.
+// The output (an extension of a writer row) whose format does not take the
+// format-only option `name`, or "a.fbx" for the other options.
+std::string outputWithout(const std::string& name) {
+  for (const WriterFormat& row : writerFormats())
+    if (std::find(row.options.begin(), row.options.end(), name) == row.options.end())
+      return "a" + row.extensions.front();
+  return "";
+}
+
+// Every batch-only, motion-only and format-only option of the table is
+// refused where it does not apply, with the table's rule in the message.
 TEST(OptionTable, EveryRuleIsEnforced) {
-  int checked = 0;
+  int checked = 0, format_only = 0;
   for (const OptionSpec& o : optionTable()) {
-    const char* out = o.applies == Applies::Fbx ? "a.glb" : "a.fbx";
-    if (o.applies != Applies::Batch && o.applies != Applies::Fbx && o.applies != Applies::Gltf &&
-        o.applies != Applies::Motion)
+    if (o.applies != Applies::Batch && o.applies != Applies::Format && o.applies != Applies::Motion)
       continue;
-    std::vector<const char*> args = {"--model", "builtin", "--out", out, o.name};
+    const std::string out = o.applies == Applies::Format ? outputWithout(o.name) : "a.fbx";
+    ASSERT_FALSE(out.empty()) << o.name << " applies to every format: it is not format-only";
+    format_only += o.applies == Applies::Format;
+    std::vector<const char*> args = {"--model", "builtin", "--out", out.c_str(), o.name};
     const std::map<std::string, std::string> valid = {
         {"--fbx-units", "cm"},     {"--fbx-version", "7500"}, {"--up", "y"},
         {"--root-motion", "keep"}, {"--frames", "0:1"},       {"--format", "glb"},
@@ -208,11 +220,12 @@ TEST(OptionTable, EveryRuleIsEnforced) {
       continue;  // these start batch mode
     Result<Settings> s = parse(args);
     ASSERT_FALSE(s.ok()) << o.name;
-    EXPECT_NE(s.message().find(appliesRule(o.applies)), std::string::npos) << s.message();
+    EXPECT_NE(s.message().find(appliesRule(o)), std::string::npos) << s.message();
     EXPECT_EQ(s.kind(), ErrorKind::Usage);
     ++checked;
   }
   EXPECT_GE(checked, 15);
+  EXPECT_EQ(format_only, 7);  // the options the writer rows list
   for (const OptionSpec& o : optionTable()) EXPECT_TRUE(o.help && *o.help) << o.name;
 }
 
