@@ -101,8 +101,7 @@ void keepShard(const Settings& s, BatchPlan* plan) {
 
 Result<BatchPlan> planBatch(const Settings& s) {
   BatchPlan plan;
-  const WriterFormat* format = outputFormat(s);  // --format, checked by the parser
-  if (!format) return usage("--format " + s.format + ": no such output format");
+  const WriterFormat* format = outputFormat(s);  // not null: beginRun checked --format
   Result<std::vector<std::string>> motions = listMotions(s.request.motion_dir, &plan);
   if (!motions) return motions.error();
   for (const std::string& m : *motions) {

@@ -316,12 +316,8 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) { return s->out_dir = v, Status(); }, Hashed::No},
     {"--format", nullptr, "{formats}", Applies::Batch, nullptr,
      "batch output format (default {default-format})",
-     [](V v, S* s) {
-       std::vector<const char*> names;  // the writer table's rows (plugins/writer.h)
-       for (const WriterFormat& row : writerFormats()) names.push_back(row.name.c_str());
-       Result<int> c = choice(v, "--format", names);
-       if (!c) return Status(c.error());
-       return s->format = v, Status();
+     [](V v, S* s) {  // one of the writer table's rows: checked by the request
+       return s->request.format = v, Status();
      }},
     {"--force", nullptr, nullptr, Applies::Batch, nullptr,
      "rebuild every output, even when up to date",

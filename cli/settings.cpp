@@ -7,6 +7,7 @@
 
 #include "cli/options.h"
 #include "core/io/printable.h"
+#include "exporter/request/check_request.h"
 
 namespace smpl {
 namespace {
@@ -80,7 +81,7 @@ bool isBatch(const Settings& s) { return given(s, "--motion-dir") || given(s, "-
 
 const WriterFormat* outputFormat(const Settings& s) {
   if (!isBatch(s)) return writerFormatForPath(s.request.out);
-  return s.format.empty() ? &writerFormats().front() : writerFormatByName(s.format);
+  return batchFormat(s.request);
 }
 
 Result<Settings> parseSettings(int argc, const char* const* argv) {

@@ -20,7 +20,6 @@ namespace smpl {
 struct Settings {
   ExportRequest request;                 // every option of the export itself
   std::string out_dir;                   // --out-dir DIR (batch mode)
-  std::string format;                    // --format (batch; "" = the writer table's first row)
   bool force = false;                    // --force (batch): rebuild outputs even when up to date
   int shard_index = 0, shard_count = 1;  // --shard I/N (batch): this run's share
   bool quiet = false;                    // --quiet, -q: no summary

@@ -114,8 +114,16 @@ Status checkRequest(const ExportRequest& r) {
   if (Status st = checkRequestOptions(r); !st) return st;
   if (r.out.empty() && r.motion_dir.empty())
     return usage("missing --out FILE (" + writerExtensionList() + ")");
-  if (r.out.empty()) return Status();  // a batch: each job's output has its --format's row
-  const WriterFormat* format = writerFormatForPath(r.out);
+  const WriterFormat* format = r.out.empty() ? batchFormat(r) : writerFormatForPath(r.out);
+  if (!format && r.out.empty()) {
+    std::string names;  // the writer table's rows
+    for (size_t i = 0; i < writerFormats().size(); ++i)
+      names += std::string(i == 0                            ? ""
+                           : i + 1 == writerFormats().size() ? " or "
+                                                             : ", ") +
+               "'" + writerFormats()[i].name + "'";
+    return usage("--format: expected " + names + ", got '" + r.format + "'");
+  }
   if (!format)
     return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
@@ -145,6 +153,10 @@ Status checkRequestForModel(const ExportRequest& r, const std::vector<double>& b
     return usage("--corrective-basis " + std::to_string(r.corrective_basis) + ": expected 1.." +
                  std::to_string(p) + " (the model has " + std::to_string(p) + " pose correctives)");
   return Status();
+}
+
+const WriterFormat* batchFormat(const ExportRequest& r) {
+  return r.format.empty() ? &writerFormats().front() : writerFormatByName(r.format);
 }
 
 Status checkDmplCount(const ExportRequest& r, int directions) {

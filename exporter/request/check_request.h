@@ -23,6 +23,7 @@
 #include "core/body_model.h"
 #include "core/result.h"
 #include "exporter/request/export_request.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 
@@ -39,10 +40,15 @@ namespace smpl {
 Status checkRequestOptions(const ExportRequest& request);
 
 // checkRequestOptions, then the output: --out given unless batch
-// (motion_dir), its format has a row in the writer table (plugins/writer.h),
+// (motion_dir), its format (batch: --format) has a row in the writer table
+// (plugins/writer.h),
 // and a format without a mesh gets no mesh options (--dmpl, --shape-keys,
 // --expression-keys, --uv, --corrective-basis, --quantize-morphs).
 Status checkRequest(const ExportRequest& request);
+
+// A batch's writer row: --format (request.format), "" = the table's first;
+// null when the table has no such row.
+const WriterFormat* batchFormat(const ExportRequest& request);
 
 // Counts against `model`: `betas` (the request's, from --betas or
 // --betas-file) at most B values, --expression at most E, --max-influences

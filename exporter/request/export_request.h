@@ -64,7 +64,8 @@ struct ExportRequest {
   int fbx_compress_level = 1;       // --fbx-compress-level N: 0..12
 
   // --- the run ---
-  std::string out;             // --out FILE: .glb, .gltf or .fbx (batch: the job's output)
+  std::string out;     // --out FILE: .glb, .gltf or .fbx (batch: the job's output)
+  std::string format;  // --format (batch): the outputs' writer row name ("" = the table's first)
   std::string motion_dir;      // --motion-dir DIR (batch): read by the path guard (run_paths.h)
   std::string manifest;        // --manifest FILE (batch): an output of the run for the guard
   std::optional<int> threads;  // --threads N, 1..1024 (none: all cores): this export's FBX workers

@@ -33,6 +33,10 @@ TEST(CheckRequest, ValidRequestsPass) {
   batch.out.clear();
   batch.motion_dir = "motions";
   EXPECT_TRUE(checkRequest(batch).ok());
+  batch.format = "fbx";
+  EXPECT_TRUE(checkRequest(batch).ok());
+  batch.format = "obj";
+  EXPECT_EQ(checkRequest(batch).message(), "--format: expected 'glb', 'gltf' or 'fbx', got 'obj'");
   ExportRequest edges = valid();  // every range at its ends
   edges.fps = 1000;
   edges.source_fps = 1;
