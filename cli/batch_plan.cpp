@@ -8,11 +8,12 @@
 #include <set>
 
 #include "cli/batch_shard.h"
-#include "cli/output_guard.h"
-#include "cli/producer.h"
 #include "core/io/file_io.h"
 #include "core/load/motion_layout.h"
 #include "exporter/metadata_json.h"
+#include "exporter/request/error_line.h"
+#include "exporter/request/producer.h"
+#include "exporter/request/run_paths.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
@@ -92,7 +93,7 @@ void keepShard(const Settings& s, BatchPlan* plan) {
   std::vector<std::string> all;
   for (const PlannedOutput& p : plan->outputs) all.push_back(p.motion);
   const std::vector<std::string> share =
-      shardMotions(all, s.motion_dir, s.shard_index, s.shard_count);
+      shardMotions(all, s.request.motion_dir, s.shard_index, s.shard_count);
   const std::set<std::string> keep(share.begin(), share.end());
   std::vector<PlannedOutput> kept;
   for (const PlannedOutput& p : plan->outputs)
@@ -104,12 +105,14 @@ void keepShard(const Settings& s, BatchPlan* plan) {
 
 Result<BatchPlan> planBatch(const Settings& s) {
   BatchPlan plan;
-  Result<std::vector<std::string>> motions = listMotions(s.motion_dir, &plan);
+  const WriterFormat* format = outputFormat(s);  // not null: beginRun checked --format
+  Result<std::vector<std::string>> motions = listMotions(s.request.motion_dir, &plan);
   if (!motions) return motions.error();
   for (const std::string& m : *motions) {
     PlannedOutput p;
     p.motion = m;
-    p.out = (fs::path(s.out_dir) / (fs::path(m).stem().string() + "." + s.format)).string();
+    p.out =
+        (fs::path(s.out_dir) / (fs::path(m).stem().string() + format->extensions.front())).string();
     plan.outputs.push_back(p);
   }
   if (Status st = checkCollisions(plan.outputs); !st) return usage(st.message());
@@ -117,15 +120,14 @@ Result<BatchPlan> planBatch(const Settings& s) {
   keepShard(s, &plan);
   std::vector<std::string> outs, names;
   for (const PlannedOutput& p : plan.outputs) {
-    for (const std::string& o : outputsOf(s, p.out)) {
-      outs.push_back(o);
-      names.push_back(baseName(o));
-    }
-    names.push_back(baseName(p.out) + ".smpl.json");
+    outs.push_back(p.out);
+    for (const std::string& name : {p.out, p.out + ".smpl.json", gltfBufferPath(s.request, p.out)})
+      if (!name.empty()) names.push_back(baseName(name));
   }
-  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st)
+  // Every path of the run (every listed motion, this share's outputs, the manifest).
+  if (Status st = checkRunPaths(runPaths(s.request, outs, *motions)); !st)
     return usage(st.message());
-  Result<ContentHash> base = producerBase(s);
+  Result<ContentHash> base = producerBase(s.request);
   if (!base)
     return makeError("Error loading " + base.message(), ErrorKind::Load);  // names the input file
   removeStaleTemps(s.out_dir, names);

@@ -88,7 +88,6 @@ Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::s
     return makeError(context + ": --frames " + std::to_string(o.first_frame) + ":" +
                      std::to_string(*end) + " is outside the motion's " + std::to_string(total) +
                      " frames");
-  if (o.fps < 0 || o.fps > 1000) return makeError("--fps must be in (0, 1000]");
   return Status();
 }
 
@@ -210,6 +209,7 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   clip.fps = fps;
   clip.source = ClipSource{motion.source_layout, motion.track, motion.first_frame + o.first_frame,
                            motion.first_frame + end, worldName(o.up, motion.world)};
+  clip.dropped_joints = mapping->dropped;
   clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));
   clip.morph_weights =
       Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));

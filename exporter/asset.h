@@ -120,7 +120,10 @@ struct AnimationClip {
   double expression_joint_error = 0.0;  // the same for an animated expression (m)
   ClipSource source;
   std::vector<std::string> notes;  // for the user, one line each (what was dropped or assumed)
-  MemoryCharge charge;             // the arrays above, against the memory budget
+  // Motion joints the model lacks, dropped by the mapping this clip was baked
+  // with (MotionMapping::dropped, animation.h), for the run's notes; not written.
+  std::vector<std::string> dropped_joints;
+  MemoryCharge charge;  // the arrays above, against the memory budget
 };
 
 struct AssetMetadata {
@@ -147,6 +150,10 @@ struct Asset {
   SkinnedMesh mesh;
   std::vector<AnimationClip> animations;
   AssetMetadata metadata;
+  // A skeleton-only asset (for a writer without a mesh, plugins/writer.h
+  // needs_mesh = false): `mesh` is empty and validateAssetStructure does not
+  // require one. Last: keeps aggregate initialisers of the fields above valid.
+  bool skeleton_only = false;
 };
 
 }  // namespace smpl

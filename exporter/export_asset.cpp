@@ -19,7 +19,7 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
       resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
   Result<Asset> asset = buildAsset(model, resolved);
   if (!asset) return asset;
-  if (dmpl && dmpl->basis)
+  if (dmpl && dmpl->basis && !asset->skeleton_only)  // DMPL targets need a mesh
     addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
   std::vector<const Eigen::MatrixXd*> expressions;  // animated SMPL-X expressions
   for (const MotionInput& m : motions)

@@ -12,7 +12,7 @@
 //
 // The sidecar <out>.smpl.json adds, last,
 //   "producer": {"hash": "<16 hex digits>"}
-// a hash of everything that produced the output pair (cli/producer.h: exporter
+// a hash of everything that produced the output pair (exporter/request/producer.h: exporter
 // version, options, model and input identities); batch mode rebuilds an
 // output whose sidecar hash differs. It is not in the glTF, so the output's
 // bytes do not depend on it.

@@ -13,7 +13,7 @@ namespace smpl {
 std::string metadataJson(const Asset& asset);
 
 // The sidecar <out>.smpl.json: metadataJson plus, last,
-// "producer": {"hash": producer_hash} (what made the output; cli/producer.h).
+// "producer": {"hash": producer_hash} (what made the output; exporter/request/producer.h).
 std::string sidecarJson(const Asset& asset, const std::string& producer_hash);
 
 // The producer hash recorded in a sidecar's text; "" when absent or when the

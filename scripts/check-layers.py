@@ -23,12 +23,17 @@ ALLOWED = {
     "plugins": ["core", "core/math", "exporter", "plugins/gltf", "plugins/fbx"],
     "plugins/gltf": ["core", "core/math", "exporter", "plugins"],
     "plugins/fbx": ["core", "core/math", "exporter", "plugins"],
-    "cli": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter", "plugins"],
+    # The export request: above the writers (it picks one), below cli/ and tools/.
+    "exporter/request": ["core", "core/math", "core/io", "core/io/pickle", "core/load",
+                         "core/demo", "exporter", "plugins"],
+    "cli": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter", "plugins",
+            "exporter/request"],
     "tools": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter",
-              "plugins", "plugins/gltf", "plugins/fbx", "tools/bench"],
+              "plugins", "plugins/gltf", "plugins/fbx", "exporter/request", "tools/bench"],
     "tools/bench": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter",
-                    "plugins", "tools"],
-    "tools/reference": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter"],
+                    "plugins", "exporter/request", "tools"],
+    "tools/reference": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter",
+                        "exporter/request", "cli"],
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 

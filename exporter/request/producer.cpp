@@ -1,24 +1,16 @@
 // producerBase/producerHash: see producer.h for what enters the hash.
-#include "cli/producer.h"
+#include "exporter/request/producer.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <utility>
 
-#include "cli/options.h"
 #include "core/io/file_io.h"
 #include "core/load/model_folder.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
 namespace {
-
-// Options that change the bytes written (cli/options.h: Hashed::Value); those
-// naming inputs are hashed by content below.
-bool hashed(const std::string& option) {
-  const OptionSpec* o = findOption(option);
-  return !o || o->hashed == Hashed::Value;
-}
 
 // A folder (a --model folder): each file a model could be picked from
 // (core/load/model_folder.h, two levels deep), by relative path, size and time.
@@ -67,18 +59,16 @@ Status addDmplFolder(const std::string& dir, ContentHash* h) {
 
 }  // namespace
 
-Result<ContentHash> producerBase(const Settings& s) {
+Result<ContentHash> producerBase(const ExportRequest& s) {
   ContentHash h;
   h.add(std::string("smpl-export producer 1"));
   h.add(std::string(SMPL_EXPORT_VERSION));
-  std::vector<std::pair<std::string, std::string>> options;
-  for (const auto& o : s.given_options)
-    if (hashed(o.first)) options.push_back(o);
+  std::vector<std::pair<std::string, std::string>> options = s.hashed_options;
   std::sort(options.begin(), options.end());
   for (const auto& [name, value] : options) h.add(name + "=" + value);
   if (Status st = addInput("model", s.model, &h); !st) return st.error();
   if (Status st = addInput("betas", s.betas_file, &h); !st) return st.error();
-  if (Status st = addInput("uv", s.export_options.uv_obj, &h); !st) return st.error();
+  if (Status st = addInput("uv", s.uv, &h); !st) return st.error();
   if (Status st = addInput("dmpl", s.dmpl, &h); !st) return st.error();
   if (Status st = addDmplFolder(s.dmpl, &h); !st) return st.error();
   return h;

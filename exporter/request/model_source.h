@@ -1,9 +1,10 @@
 // Where each export's body model comes from: `--model FILE`, `--model builtin`
-// or `--model DIR` (core/load/model_folder.h picks the file per motion: its
-// model kind from the joint count or AMASS's `surface_model_type`, its gender
-// from `gender`). Loaded models are cached by path and shared by the batch
-// workers (thread-safe), so a mixed-gender AMASS folder loads each model once;
-// each cached model's arrays are charged to the memory budget.
+// or `--model DIR` (core/load/model_folder.h picks the file per motion from
+// the motion as the export decoded it: its model kind from its joint layout,
+// its gender from `gender`; the motion file is not read again). Loaded models
+// are cached by path and shared by the batch workers (thread-safe), so a
+// mixed-gender AMASS folder loads each model once; each cached model's arrays
+// are charged to the memory budget.
 #pragma once
 
 #include <map>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "core/body_model.h"
+#include "core/load/motion.h"
 #include "core/memory_budget.h"
 #include "core/result.h"
 
@@ -28,8 +30,12 @@ class ModelSource {
  public:
   explicit ModelSource(std::string option) : option_(std::move(option)) {}
   bool isFolder() const;
-  // The model for a motion file ("" = no motion). Errors name the file that failed.
-  Result<ModelPick> forMotion(const std::string& motion_path);
+  // The model for a decoded motion (null = no motion: a folder gives its most
+  // complete neutral model). Errors name the model file that failed.
+  Result<ModelPick> forMotion(const Motion* motion);
+  // Serves `model` for `path` from now on (a model built in code, for tests
+  // and tools: nothing is read). Errors: its arrays exceed the memory budget.
+  Status add(const std::string& path, BodyModel model);
 
  private:
   Result<ModelPick> load(const std::string& path, const std::string& name);

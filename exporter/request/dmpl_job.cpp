@@ -1,10 +1,12 @@
-#include "cli/dmpl_job.h"
+#include "exporter/request/dmpl_job.h"
 
 #include <cstdio>
 #include <filesystem>
 
 #include "core/load/dmpl.h"
 #include "exporter/dmpl_targets.h"
+#include "exporter/request/check_request.h"
+#include "exporter/request/error_line.h"
 
 namespace smpl {
 namespace {
@@ -14,7 +16,7 @@ Error failWith(const std::string& path, const std::string& message) {
 }
 
 // The basis file: --dmpl FILE, or from --dmpl DIR by the first motion's gender.
-Result<std::string> dmplPath(const Settings& s, const std::vector<Motion>& motions,
+Result<std::string> dmplPath(const ExportRequest& s, const std::vector<Motion>& motions,
                              ExportReport* report) {
   std::error_code ec;
   if (!std::filesystem::is_directory(s.dmpl, ec)) return s.dmpl;
@@ -37,7 +39,7 @@ void noteIgnoredDmpls(const std::vector<Motion>& motions, ExportReport* report) 
 
 }  // namespace
 
-Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, const ExportJob& job,
+Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const ExportRequest& s,
                                  const std::vector<Motion>& motions, ExportReport* report) {
   PreparedDmpl out;
   if (s.dmpl.empty()) {
@@ -49,13 +51,11 @@ Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, cons
   Result<DmplBasis> basis = loadDmplBasis(*path, model.numVertices());
   if (!basis) return failWith(*path, basis.message());
   const int total = static_cast<int>(basis->directions.cols());
-  if (s.dmpl_count > total)
-    return failWith(*path, "--dmpl-count " + std::to_string(s.dmpl_count) + ": the basis has " +
-                               std::to_string(total) + " directions");
+  if (Status st = checkDmplCount(s, total); !st) return failWith(*path, st.message());
   std::vector<const Eigen::MatrixXd*> coefficients;
   for (size_t i = 0; i < motions.size(); ++i) {
-    if (Status st = checkDmplCoefficients(motions[i], job.motions[i], total, *path); !st)
-      return failWith(job.motions[i], st.message());
+    if (Status st = checkDmplCoefficients(motions[i], s.motions[i], total, *path); !st)
+      return failWith(s.motions[i], st.message());
     if (motions[i].dmpls.rows() > 0)
       coefficients.push_back(&motions[i].dmpls);
     else
@@ -67,7 +67,7 @@ Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, cons
         "--dmpl: no motion has 'dmpls' (DMPL coefficients): no DMPL targets exported");
     return out;
   }
-  const int count = s.dmpl_count > 0 ? s.dmpl_count : total;
+  const int count = s.dmpl_count.value_or(total);
   basis->directions.conservativeResize(Eigen::NoChange, count);
   out.basis = std::make_unique<DmplBasis>(std::move(*basis));
   out.input = DmplInput{out.basis.get(), dmplLayout(count, coefficients), s.dmpl_regressed_joints};

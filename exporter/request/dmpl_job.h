@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "cli/export_job.h"
 #include "core/body_model.h"
 #include "core/load/motion.h"
 #include "exporter/asset.h"
 #include "exporter/dmpl_targets.h"
+#include "exporter/request/export_request.h"
 
 namespace smpl {
 
@@ -25,7 +25,8 @@ struct PreparedDmpl {
   std::unique_ptr<DmplBasis> basis;
   DmplInput input;
 };
-Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const Settings& s, const ExportJob& job,
+// `motions` are the request's motions, decoded (request.motions[i] names motions[i]).
+Result<PreparedDmpl> prepareDmpl(const BodyModel& model, const ExportRequest& request,
                                  const std::vector<Motion>& motions, ExportReport* report);
 
 // After baking: one note per clip with the fixed-joint cost (max vertex error, mm).
