@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/array.h"
+#include "core/result.h"
 
 namespace smpl {
 
@@ -29,6 +30,9 @@ struct DataNode {
             // numbers)
   };
   Kind kind = Kind::None;
+  // A leaf's data; for a Dict or List, only `array.charge` is used: it holds
+  // the node's own bytes (its children and keys, chargeNode below), so a
+  // whole tree's memory is charged while it lives.
   Array array;
   std::vector<std::string> keys;
   std::vector<DataNode> children;
@@ -50,6 +54,18 @@ ArrayDict arraysOf(const DataNode& dict);
 
 // Wraps a flat dict of arrays as a Dict node (keys sorted, as ArrayDict keeps them).
 DataNode nodeOf(ArrayDict arrays);
+
+// Charges `bytes` of a Dict's or List's own memory (children, keys) to the
+// memory budget, held by node->array.charge; readers call it before they
+// allocate them. Error: "<context>: the tree's nodes would need ...".
+Status chargeNode(DataNode* node, uint64_t bytes, const std::string& context);
+
+// A List of numeric Array leaves of one shape S -> one Array of shape (n, S...)
+// (e.g. 4D-Humans' per-person lists of (1,3,3) global_orient), dtype of the
+// first leaf, charged before it is allocated. An empty List gives shape (0).
+// Errors name `context`: "x.pkl: element 2 is a dict, expected an array",
+// "x.pkl: element 1 has shape (23,3,3); element 0 has (1,3,3)".
+Result<Array> stackList(const DataNode& list, const std::string& context);
 
 // "dict with keys 'pose', 'trans', 'betas'", "list of 12", "array (T,72)",
 // "None": what a node is, for errors and refusals. Keys and text from the
