@@ -16,8 +16,8 @@ bool startsWith(const uint8_t* data, size_t size, const char* prefix, size_t n) 
 }
 
 // What to tell the user about a compressor we do not read.
-std::string refusal(const char* compressor) {
-  return std::string("a ") + compressor +
+std::string refusal(const std::string& compressor) {
+  return (compressor == "bz2" ? "a " : "an ") + compressor +
          "-compressed joblib file: decompress it first (python3 -c \"import joblib; "
          "joblib.dump(joblib.load('FILE'), 'FILE', compress=('zlib', 3))\"), or save it with "
          "compress=('zlib', 3)";

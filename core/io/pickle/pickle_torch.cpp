@@ -176,6 +176,8 @@ Result<Ref> rebuildTensor(Heap& heap, const TensorArgs& t) {
     array = decodeArray(heap, d, *size, false, bytes.data(), bytes.size());
   }
   if (!array) return array.error();
+  // A tensor's dtype has no byte order (torch.load swaps to native): numpy's name for it.
+  if (!array->dtype.empty() && array->dtype[0] == '>') array->dtype[0] = '<';
   if (t.element.kind == 'B') array->dtype = "bfloat16";
   Ref neg;
   if (heap.at(t.metadata).kind == Kind::Dict && dictGet(heap, t.metadata, "neg", &neg) &&
@@ -190,8 +192,11 @@ Result<Ref> rebuildTensor(Heap& heap, const TensorArgs& t) {
 Result<Ref> tensorFromArgs(Heap& heap, GlobalId id, const std::vector<Ref>& args) {
   const char* name =
       id == GlobalId::TorchRebuildTensorV3 ? "_rebuild_tensor_v3" : "_rebuild_tensor_v2";
+  // v2: (storage, offset, size, stride[, requires_grad, hooks[, metadata]]), as
+  // _rebuild_tensor's 4; v3: the same 6, dtype[, metadata].
   const size_t needed = id == GlobalId::TorchRebuildTensorV3 ? 7 : 4;
-  if (args.size() < needed || args.size() > needed + 2)
+  const size_t most = id == GlobalId::TorchRebuildTensorV3 ? 8 : 7;
+  if (args.size() < needed || args.size() > most || args.size() == 5)
     return heap.fail(std::string("torch._utils.") + name + " with " + std::to_string(args.size()) +
                      " arguments is not supported");
   const PyObj& s = heap.at(args[0]);
