@@ -126,6 +126,8 @@ TEST(DataTree, RefusalsAreOneLineNamingTheFileAndTheProblem) {
       {"offset_oob.pt", "size (2,), stride (1,) and offset 3 reads past the 4 elements"},
       {"huge_numel.pt",
        "torch storage '0' declares 1099511627776 elements of 4 bytes; its record has 16 bytes"},
+      {"broadcast.pt",
+       "strided tensor of 120000000 bytes exceeds the limit of 67108864 bytes for an input of"},
       {"complex.pt", "torch storage type 'torch.ComplexFloatStorage' is not supported"},
       {"script.pt", "a TorchScript archive (torch.jit.save)"},
       {"badorder.pt", "badorder.pt/archive/byteorder: unknown byte order 'middle'"},

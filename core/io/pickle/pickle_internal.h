@@ -148,6 +148,9 @@ class Heap {
   // Checks and counts `bytes` against this pickle's limit only: for memory that
   // outlives the heap and holds its own budget charge (a DataNode's arrays).
   Status count(uint64_t bytes, const char* what);
+  // Whether count(bytes) would succeed, without counting: before a scratch
+  // buffer whose result is then charged.
+  Status check(uint64_t bytes, const char* what) const;
   const std::string& context() const { return context_; }
   const VmOptions& options() const { return options_; }
   VmOptions& options() { return options_; }

@@ -32,10 +32,13 @@ Heap::Heap(const std::string& context, const PickleLimits& limits, uint64_t inpu
 }
 
 Status Heap::count(uint64_t bytes, const char* what) {
-  if (bytes <= limit_ && used_ <= limit_ - bytes) {
-    used_ += bytes;
-    return Status::success();
-  }
+  PK_TRY(check(bytes, what));
+  used_ += bytes;
+  return Status::success();
+}
+
+Status Heap::check(uint64_t bytes, const char* what) const {
+  if (bytes <= limit_ && used_ <= limit_ - bytes) return Status::success();
   if (!input_bound_)
     return fail(std::string(what) + " of " + std::to_string(bytes) +
                 " bytes exceeds the limit of " + std::to_string(limit_) + " bytes for one pickle");

@@ -167,9 +167,11 @@ Result<Ref> rebuildTensor(Heap& heap, const TensorArgs& t) {
         count == 0 ? nullptr : reinterpret_cast<const uint8_t*>(s.view) + offset * d.itemsize;
     array = decodeArray(heap, d, *size, false, p, count * d.itemsize);
   } else {
-    MemoryCharge scratch;  // the gathered bytes, at most the doubles charged next
-    PK_TRY(scratch.add(count * (d.kind == 'B' ? 4 : d.itemsize), heap.context(),
-                       "gathering a strided tensor"));
+    // The gathered bytes (at most the doubles charged next), once both fit.
+    const uint64_t gathered = count * (d.kind == 'B' ? 4 : d.itemsize);
+    PK_TRY(heap.check(gathered + count * sizeof(double), "strided tensor"));
+    MemoryCharge scratch;
+    PK_TRY(scratch.add(gathered, heap.context(), "gathering a strided tensor"));
     std::vector<uint8_t> bytes;
     gather(reinterpret_cast<const uint8_t*>(s.view), &d, big, *size, *stride, offset, count,
            &bytes);
