@@ -4,7 +4,7 @@
 // (GVHMR), an `np.save`d dict in a `.npy` (TRAM), an object array inside an
 // `.npz` (ROMP's `results`). Leaves are Arrays (core/array.h: numbers widened
 // to double, C order); inner nodes are dicts (keys in file order) and lists.
-// The container readers build it (core/io/data_tree.h); the motion layouts
+// The container readers build it (core/io/tree/data_tree.h); the motion layouts
 // read it (core/load/motion_layouts.h). It owns its data: each leaf holds
 // its own memory charge (core/memory_budget.h).
 //

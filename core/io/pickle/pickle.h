@@ -11,7 +11,9 @@
 //   containers      dict, list, tuple, str, bytes, int, float, bool, None
 // The top level must be a dict; entries whose value is an array-like
 // (ndarray, sparse, Ch, list of numbers, string) become Arrays, the rest are
-// dropped.
+// dropped. The readers of tools' containers (joblib, torch .pt, nested
+// values as trees) are in pickle_tree.h; they extend this allow-list only
+// for their own containers.
 #pragma once
 
 #include <cstdint>
