@@ -159,6 +159,10 @@ Result<DataNode> parseJsonTree(const uint8_t* data, size_t size, const std::stri
                      (e.byte > size ? std::string("truncated")
                                     : "syntax error at byte " + std::to_string(e.byte)) +
                      ")");
+  } catch (const Json::out_of_range&) {  // a number beyond double's range (1e999)
+    return makeError(context + ": not valid JSON (a number out of range)");
+  } catch (const Json::exception&) {
+    return makeError(context + ": not valid JSON");
   }
   DataNode tree;
   if (Status st = Converter(context).node(j, &tree); !st) return st.error();
