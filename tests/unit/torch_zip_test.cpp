@@ -91,6 +91,22 @@ TEST(TorchZip, EveryTruncationAndByteFlipEndsCleanly) {
   EXPECT_GT(failed, static_cast<int>(bytes.size() / 2));
 }
 
+TEST(TorchZip, LegacyFilesAreRefusedByEveryPickleReader) {
+  // torch < 1.6's format is a sequence of pickles: the first is the magic number.
+  const std::string legacy = readAll(kContainers + "legacy.pt");
+  ASSERT_TRUE(isLegacyTorchFile(reinterpret_cast<const uint8_t*>(legacy.data()), legacy.size()));
+  for (auto* parse : {&parsePickleTree, &parseJoblib}) {
+    Result<DataNode> r =
+        (*parse)(reinterpret_cast<const uint8_t*>(legacy.data()), legacy.size(), "old.pt", {});
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.message(),
+              "old.pt: a legacy torch file: re-save it with torch.save(obj, f) in torch >= 1.6");
+  }
+  Result<DataNode> zip = torchZip(legacy, "old.pt");
+  ASSERT_FALSE(zip.ok());
+  EXPECT_EQ(zip.message(), "old.pt: not a zip archive (no end of central directory record)");
+}
+
 TEST(TorchZip, PersistentIdsAndTorchGlobalsOnlyInsideAnArchive) {
   const std::string bytes = readAll(kContainers + "gvhmr.pt");
   const uint8_t* data = reinterpret_cast<const uint8_t*>(bytes.data());

@@ -58,9 +58,7 @@ Result<DataNode> parseJoblib(const uint8_t* data, size_t size, const std::string
     case JoblibCompression::Lz4:
       return makeError(context + ": " + refusal("lz4"));
     case JoblibCompression::Zfile:
-      return makeError(context +
-                       ": a joblib file from joblib < 0.9.3 (zfile 'ZF' header): load it with "
-                       "joblib and dump it again with a current joblib");
+      return makeError(context + ": " + kZfileMessage);
   }
   Result<InflatedBytes> inflated =
       inflateStream(data, size, format, context, limits.max_total_bytes);

@@ -81,5 +81,9 @@ Result<DataNode> parseNpyTree(const uint8_t* data, size_t size, const std::strin
 bool isLegacyTorchFile(const uint8_t* data, size_t size);
 inline constexpr const char* kLegacyTorchMessage =
     "a legacy torch file: re-save it with torch.save(obj, f) in torch >= 1.6";
+// joblib < 0.9.3's compressed "zfile" (JoblibCompression::Zfile).
+inline constexpr const char* kZfileMessage =
+    "a joblib file from joblib < 0.9.3 (zfile 'ZF' header): load it with joblib and dump it "
+    "again with a current joblib";
 
 }  // namespace smpl

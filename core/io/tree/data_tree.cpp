@@ -81,10 +81,7 @@ Result<Container> sniffContainer(const uint8_t* data, size_t size, const std::st
   if (isLegacyTorchFile(data, size) || (size > 262 && std::memcmp(data + 257, "ustar", 5) == 0))
     return makeError(context + ": " + kLegacyTorchMessage);
   const JoblibCompression compression = joblibCompression(data, size);
-  if (compression == JoblibCompression::Zfile)
-    return makeError(context +
-                     ": a joblib file from joblib < 0.9.3 (zfile 'ZF' header): load it with "
-                     "joblib and dump it again with a current joblib");
+  if (compression == JoblibCompression::Zfile) return makeError(context + ": " + kZfileMessage);
   if (compression != JoblibCompression::None) return Container::JoblibCompressed;
   size_t i = startsWith(data, size, "\xef\xbb\xbf", 3) ? 3 : 0;  // UTF-8 byte order mark
   while (i < size && std::strchr(" \t\r\n", data[i]) && data[i]) ++i;
