@@ -32,7 +32,7 @@ Heap::Heap(const std::string& context, const PickleLimits& limits, uint64_t inpu
 }
 
 Status Heap::count(uint64_t bytes, const char* what) {
-  PK_TRY(check(bytes, what));
+  if (bytes > limit_ || used_ > limit_ - bytes) return check(bytes, what);
   used_ += bytes;
   return Status::success();
 }
@@ -50,11 +50,10 @@ Status Heap::check(uint64_t bytes, const char* what) const {
 }
 
 Status Heap::charge(uint64_t bytes, const char* what) {
-  PK_TRY(count(bytes, what));
-  if (Status st = budget_.add(bytes, context_, std::string("unpickling (") + what + ")"); !st) {
-    used_ -= bytes;
+  if (bytes > limit_ || used_ > limit_ - bytes) return check(bytes, what);
+  if (Status st = budget_.add(bytes, context_, std::string("unpickling (") + what + ")"); !st)
     return st;
-  }
+  used_ += bytes;
   return Status::success();
 }
 
