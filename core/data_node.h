@@ -63,7 +63,7 @@ Status chargeNode(DataNode* node, uint64_t bytes, const std::string& context);
 // A List of numeric Array leaves of one shape S -> one Array of shape (n, S...)
 // (e.g. 4D-Humans' per-person lists of (1,3,3) global_orient), dtype of the
 // first leaf, charged before it is allocated. An empty List gives shape (0).
-// Errors name `context`: "x.pkl: element 2 is a dict, expected an array",
+// Errors name `context`: "x.pkl: element 2 is None, expected a numeric array",
 // "x.pkl: element 1 has shape (23,3,3); element 0 has (1,3,3)".
 Result<Array> stackList(const DataNode& list, const std::string& context);
 

@@ -49,8 +49,8 @@ JoblibCompression joblibCompression(const uint8_t* data, size_t size);
 // size charged to the memory budget as it grows; a bomb ends with the budget
 // error), then read as parsePickleTree. bz2/lzma/xz/lz4 and zfiles are
 // refused with what to do, e.g. "a bz2-compressed joblib file: decompress it
-// first (python3 -c "import joblib; joblib.dump(joblib.load('x.pkl'),
-// 'x.pkl', compress=('zlib', 3))") or save with compress=('zlib', 3)".
+// first (python3 -c "import joblib; joblib.dump(joblib.load('FILE'),
+// 'FILE', compress=('zlib', 3))"), or save it with compress=('zlib', 3)".
 Result<DataNode> parseJoblib(const uint8_t* data, size_t size, const std::string& context,
                              const PickleLimits& limits = PickleLimits());
 
