@@ -28,8 +28,12 @@ enum ContainerBits : unsigned {
   kNpzFile = 1u << 0,     // .npz / .smpl (zip of .npy members)
   kPickleFile = 1u << 1,  // .pkl (the data-only unpickler)
   kJsonFile = 1u << 2,    // .json
+  kJoblibFile = 1u << 3,  // joblib.dump, plain or zlib/gzip (.pkl, .joblib)
+  kTorchFile = 1u << 4,   // torch.save's zip (.pt, .pth)
+  kNpyFile = 1u << 5,     // np.save: an array or an object (.npy)
 };
-constexpr unsigned kAnyContainer = kNpzFile | kPickleFile | kJsonFile;
+constexpr unsigned kAnyContainer =
+    kNpzFile | kPickleFile | kJsonFile | kJoblibFile | kTorchFile | kNpyFile;
 
 // What a decode function gets besides the file's data.
 struct LayoutInput {

@@ -38,7 +38,10 @@ std::vector<std::string> motionFileExtensions() {
   for (const MotionLayout& row : motionLayouts()) containers |= row.containers;
   std::vector<std::string> out;
   if (containers & kNpzFile) out.insert(out.end(), {".npz", ".smpl"});
-  if (containers & kPickleFile) out.push_back(".pkl");
+  if (containers & (kPickleFile | kJoblibFile)) out.push_back(".pkl");
+  if (containers & kJoblibFile) out.push_back(".joblib");
+  if (containers & kTorchFile) out.insert(out.end(), {".pt", ".pth"});
+  if (containers & kNpyFile) out.push_back(".npy");
   if (containers & kJsonFile) out.push_back(".json");
   return out;
 }

@@ -64,8 +64,9 @@ TEST(MotionLayouts, OnlyTheMatchedRowsKeysAreDecoded) {
 
 TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
   const std::vector<std::string> ext = motionFileExtensions();
-  EXPECT_EQ(std::set<std::string>(ext.begin(), ext.end()),
-            (std::set<std::string>{".npz", ".smpl", ".pkl", ".json"}));
+  EXPECT_EQ(
+      std::set<std::string>(ext.begin(), ext.end()),
+      (std::set<std::string>{".npz", ".smpl", ".pkl", ".joblib", ".pt", ".pth", ".npy", ".json"}));
 }
 
 TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
