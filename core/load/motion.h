@@ -73,11 +73,18 @@ struct Motion {
   MemoryCharge charge;             // `frames` and `translation` against the memory budget
 };
 
+// Which parameters of a tool that writes both a world and a camera version
+// (WHAM pose_world/pose, GVHMR smpl_params_global/incam, TRAM with or without
+// camera.npy) a layout reads: --source-params. Default: the layout's
+// preference (the world one).
+enum class SourceParams { Default, Global, Incam };
+
 // Options of loadMotion.
 struct MotionOptions {
   double source_fps = 0.0;  // --source-fps: the source rate; 0 = stored rate, else the layout's
                             // default (30 fps; AIST++ 60, as documented) with a note
   bool up_given = false;    // --up was given: no note about the layout's default world turn
+  SourceParams source_params = SourceParams::Default;  // --source-params global|incam
 };
 
 // What one file holds: one Motion per person or track (most files hold one)

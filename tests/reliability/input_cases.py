@@ -201,7 +201,7 @@ with zipfile.ZipFile(evil_member, "w") as z:
 # Readers are lazy (issue 11): an unneeded member is never read, so the evil name is only
 # listed; a duplicate of it is refused at listing time, with the name escaped.
 fail("unneeded npz member with an escape sequence in its name", base("--motion", evil_member), 2,
-     ["evil_member.npz", "no pose data", "po\\x1b[31mses\\x0d"], [evil_member])
+     ["evil_member.npz", "keys found", "po\\x1b[31mses\\x0d"], [evil_member])
 evil_dup = work / "evil_dup.npz"
 with zipfile.ZipFile(evil_dup, "w") as z:
     z.writestr("po\x1b[31mses\r.npy", npy_header("<f8", (1,)) + b"\x00" * 8)

@@ -71,6 +71,7 @@ TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
 
 TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
   EXPECT_TRUE(isShapeOnly(names({"betas", "gender", "surface_model_type"})));
+  EXPECT_FALSE(isShapeOnly(names({"pred_cam", "pred_mano_params"})));  // no betas: unknown
   EXPECT_FALSE(isShapeOnly(names({"betas", "pred_rotmat"})));
   Result<Motion> shape = loadMotion(kTable + "shape_only.npz");
   ASSERT_FALSE(shape.ok());

@@ -199,5 +199,63 @@ TEST_F(RunRequestTest, BetasFileIsARunInput) {
       << missing.message();
 }
 
+// --track all: one output per person, <out stem>.track<ID>.<ext>, the file
+// decoded once; --track ID picks one; the sidecar names the track and its
+// source frames (docs/file-contract.md "Metadata").
+TEST_F(RunRequestTest, TrackAllWritesOneOutputPerPerson) {
+  const std::string seq = kFixtures + "/layouts/video/smplerx/smplx";
+  const std::string model = kFixtures + "/models/smplx_small.npz";
+  ExportRequest r = request({"--motion-sequence", seq.c_str(), "--track", "all"}, model.c_str());
+  ModelSource models(r.model);
+  const uint64_t before = motionsDecoded();
+  Result<std::vector<ExportReport>> reports = runTrackExports(r, &models);
+  ASSERT_TRUE(reports.ok()) << reports.message();
+  EXPECT_EQ(motionsDecoded() - before, 1u);
+  ASSERT_EQ(reports->size(), 2u);
+  EXPECT_EQ((*reports)[0].out, dir_ + "/body.track0.glb");
+  EXPECT_EQ((*reports)[1].out, dir_ + "/body.track1.glb");
+  EXPECT_FALSE(exists(out_));
+  Result<std::vector<uint8_t>> text = readFileBytes(dir_ + "/body.track1.glb.smpl.json");
+  ASSERT_TRUE(text.ok());
+  const std::string sidecar(text->begin(), text->end());
+  EXPECT_NE(sidecar.find(R"("track":"1")"), std::string::npos) << sidecar;
+  EXPECT_NE(sidecar.find(R"("first_frame":6)"), std::string::npos) << sidecar;
+  EXPECT_EQ(trackOutput("a/b.c/walk.fbx", "12"), "a/b.c/walk.track12.fbx");
+  EXPECT_EQ(trackOutput("walk", "3"), "walk.track3");
+}
+
+TEST_F(RunRequestTest, TrackChoicesAndFoldersAreChecked) {
+  const std::string seq = kFixtures + "/layouts/video/smplerx/smplx";
+  const std::string model = kFixtures + "/models/smplx_small.npz";
+  ExportRequest one = request({"--motion-sequence", seq.c_str(), "--track", "1"}, model.c_str());
+  Result<ExportReport> picked = run(one);
+  ASSERT_TRUE(picked.ok()) << picked.message();
+  EXPECT_NE(std::find_if(picked->notes.begin(), picked->notes.end(),
+                         [](const std::string& n) {
+                           return n.find("track 1 of 2 (source frames 6-14)") != std::string::npos;
+                         }),
+            picked->notes.end());
+  fs::remove(out_);
+  fs::remove(out_ + ".smpl.json");
+  ExportRequest none = request({"--motion-sequence", seq.c_str(), "--track", "9"}, model.c_str());
+  Result<ExportReport> missing = run(none);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.message().find("no track 9 (tracks: 0, 1)"), std::string::npos)
+      << missing.message();
+  EXPECT_EQ(missing.kind(), ErrorKind::Load);
+  const std::string motion = kFixtures + "/motions/smpl_72.npz";
+  ExportRequest two =
+      request({"--motion", motion.c_str(), "--motion", motion.c_str(), "--track", "all"});
+  Result<ExportReport> refused = run(two);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("give one --motion or --motion-sequence"), std::string::npos);
+  ExportRequest folder = request({"--motion", seq.c_str()}, model.c_str());
+  Result<ExportReport> dir = run(folder);
+  ASSERT_FALSE(dir.ok());
+  EXPECT_NE(dir.message().find("a folder: give --motion-sequence DIR"), std::string::npos)
+      << dir.message();
+  EXPECT_FALSE(exists(out_));
+}
+
 }  // namespace
 }  // namespace smpl
