@@ -152,6 +152,23 @@ void clipNotes(const BodyModel& model, const Asset& asset, const Motion& motion,
   clip->notes.push_back(text);
 }
 
+// The rest mid-point p of Motion::translation_anchor's joints (BEV's hips),
+// J from the export's betas; J_0 when the motion has no anchor.
+Result<Eigen::Vector3d> anchorPoint(const BodyModel& model, const Asset& asset,
+                                    const Motion& motion, const std::string& context) {
+  const Eigen::MatrixXd& joints = asset.skeleton.rest_world;
+  if (motion.translation_anchor.empty()) return Eigen::Vector3d(joints.row(0).transpose());
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (const std::string& name : motion.translation_anchor) {
+    const auto it = std::find(model.joint_names.begin(), model.joint_names.end(), name);
+    if (it == model.joint_names.end())
+      return makeError(context + ": the translation is anchored at the joint '" + name +
+                       "', which the model " + model.name + " does not have");
+    p += joints.row(it - model.joint_names.begin()).transpose();
+  }
+  return Eigen::Vector3d(p / static_cast<double>(motion.translation_anchor.size()));
+}
+
 }  // namespace
 
 Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world) {
@@ -205,6 +222,8 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   const int k = model.numJoints(), t = static_cast<int>(samples.size());
   const int expressions = static_cast<int>(asset.metadata.expression_targets.targets.size());
   const Eigen::Vector3d j0 = asset.skeleton.rest_world.row(0).transpose();
+  Result<Eigen::Vector3d> anchor = anchorPoint(model, asset, motion, context);
+  if (!anchor) return anchor.error();
   clip.name = motion.name;
   clip.fps = fps;
   clip.source = ClipSource{motion.source_layout, motion.track, motion.first_frame + o.first_frame,
@@ -215,6 +234,7 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
       Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
   const std::vector<int> targets = correctiveTargets(asset);
   Rotations local(k);
+  Eigen::Matrix3d source_root = Eigen::Matrix3d::Identity();  // R_0 before the world turn
   for (int i = 0; i < t; ++i) {
     clip.times.push_back(i / fps);
     Eigen::Matrix3d change;  // the layout's per-frame frame change, then the world turn
@@ -225,12 +245,18 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
       const int src = mapping->source_of_joint[j];
       Eigen::Quaterniond q =
           src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
+      if (j == 0) source_root = q.toRotationMatrix();
       if (j == 0) q = Eigen::Quaterniond(turn) * q;
       clip.rotations[j][i] = q;
       local[j] = q.toRotationMatrix();
     }
-    // The root node sits at J_0 + trans in the capture world; rotate it with the world.
-    Eigen::Vector3d root = up * (change * (j0 + translationAt(motion, samples[i])) + shift);
+    // The root node sits at J_0 + trans in the capture world (an anchored
+    // translation places the anchor instead: trans - R_0 (p - J_0)); rotate it with the world.
+    const Eigen::Vector3d node =
+        motion.translation_anchor.empty()
+            ? Eigen::Vector3d(j0 + translationAt(motion, samples[i]))
+            : Eigen::Vector3d(translationAt(motion, samples[i]) - source_root * (*anchor - j0));
+    Eigen::Vector3d root = up * (change * node + shift);
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);

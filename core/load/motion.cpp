@@ -104,7 +104,7 @@ Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& op
   if (set.tracks.empty()) return makeError(path + ": no motion in the file");
   for (Motion& m : set.tracks) {
     m.name = stemOf(path);
-    m.source_layout = row->name;
+    if (m.source_layout.empty()) m.source_layout = row->name;  // a decode may name a variant
     settleFps(options, row->fps_fallback, row->fps_why, &m);
     if (m.world == MotionWorld::CameraYDown && !options.up_given)
       m.notes.push_back(

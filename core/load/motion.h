@@ -30,6 +30,9 @@ namespace smpl {
 // which the model's hands_mean is added (motion_fit.h). Empty otherwise.
 struct PendingHands {
   std::vector<Eigen::VectorXd> left, right;  // T entries of C values each (C = 45: full pose)
+  // Non-empty: a model without hands_mean keeps these hands at rest with this
+  // note instead of failing (GVHMR: its hands are only the model's mean hand).
+  std::string rest_without_mean;
   bool active() const { return !left.empty() || !right.empty(); }
 };
 
@@ -66,6 +69,13 @@ struct Motion {
   // knows J_0: the root becomes A R_0 and the root node A (J_0 + t) + b.
   std::vector<Eigen::Matrix3d> world_rotation;
   std::vector<Eigen::Vector3d> world_translation;
+  // Model joint names whose posed mid-point the translation places (BEV's
+  // root-aligned vertices: {left_hip, right_hip}): with p the mean of their
+  // rest positions J (the export's betas) and R_0 the root rotation, the body
+  // is LBS(pose) + t - (J_0 + R_0 (p - J_0)), so the root node sits at
+  // t - R_0 (p - J_0) (the bake knows J: exporter/animation.cpp). Empty: t is
+  // the usual SMPL transl.
+  std::vector<std::string> translation_anchor;
   std::string hand;    // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
   PendingHands hands;  // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
@@ -85,6 +95,10 @@ struct MotionOptions {
                             // default (30 fps; AIST++ 60, as documented) with a note
   bool up_given = false;    // --up was given: no note about the layout's default world turn
   SourceParams source_params = SourceParams::Default;  // --source-params global|incam
+  // Set by loadMotionSequence: the file is one frame of --motion-sequence
+  // (the sequence numbers its rows from the name; per-frame layouts such as
+  // SMPLer-X apply their conventions only then).
+  bool sequence_file = false;
 };
 
 // What one file holds: one Motion per person or track (most files hold one)

@@ -227,7 +227,9 @@ Status resolveSide(const BodyModel& model, bool flat, const std::string& context
                          model.name + " (it has " + std::to_string(components.rows()) + ")");
       pose = components.topRows(c).transpose() * coefficients[f];
     }
-    if (!flat) {
+    if (!flat && mean.size() != 45 && !m->hands.rest_without_mean.empty()) {
+      // no mean to add: the hand stays as given (rest, for GVHMR's zeros); noted by the caller
+    } else if (!flat) {
       if (mean.size() != 45)
         return makeError(context + ": the hand pose is relative to the mean hand, but the model " +
                          model.name + " has no 'hands_mean" + suffix +
@@ -252,6 +254,9 @@ Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::s
     return Status();
   }
   const int left = m->layout == ModelKind::SmplX ? 25 : 22;
+  if (!flat_hand_mean && !m->hands.rest_without_mean.empty() &&
+      (model.hands_mean_l.size() != 45 || model.hands_mean_r.size() != 45))
+    m->notes.push_back(m->hands.rest_without_mean);
   if (Status s = resolveSide(model, flat_hand_mean, context, "l", model.hands_components_l,
                              model.hands_mean_l, left, m, m->hands.left);
       !s)

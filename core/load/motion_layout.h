@@ -53,7 +53,8 @@ struct MotionLayout {
   // `root` holds the decoded keys. Fills tracks (at least one on success);
   // fps 0 when the file stores no rate (loadMotion then settles it:
   // --source-fps, else fps_fallback with a note). Errors: one line naming
-  // in.path and the key.
+  // in.path and the key. A decode may set Motion::source_layout to a variant's
+  // name (the ROMP row's BEV files), else the row's name is used.
   Status (*decode)(const DataNode& root, const LayoutInput& in, MotionSet* out);
   double fps_fallback = 30.0;                       // rate assumed when the file stores none
   const char* fps_why = "no frame rate is stored";  // the note's reason, with fps_fallback

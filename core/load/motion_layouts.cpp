@@ -7,10 +7,17 @@
 #include "core/load/motion_aist.h"
 #include "core/load/motion_amass.h"
 #include "core/load/motion_beat2.h"
+#include "core/load/motion_easymocap.h"
 #include "core/load/motion_fit.h"
+#include "core/load/motion_gvhmr.h"
 #include "core/load/motion_layout.h"
+#include "core/load/motion_phalp.h"
+#include "core/load/motion_romp.h"
 #include "core/load/motion_smplcodec.h"
+#include "core/load/motion_smplerx.h"
+#include "core/load/motion_vibe.h"
 #include "core/load/motion_vposer.h"
+#include "core/load/motion_wham.h"
 
 namespace smpl {
 
@@ -21,8 +28,15 @@ const std::vector<MotionLayout>& motionLayouts() {
       aistLayout(),       // smpl_poses
       vposerLayout(),  // latent_pose, pose_embedding, latent (refused) before AMASS's root_orient
       beat2Layout(),   // poses + expressions / model, before AMASS's poses
-      amassLayout(),   // poses, root_orient
-      fitLayout(),     // body_pose, global_orient
+      gvhmrLayout(),   // smpl_params_global / smpl_params_incam dicts
+      whamLayout(),    // per-track dicts with pose, trans, frame_ids
+      vibeLayout(),    // per-person dicts with pose, frame_ids, orig_cam, no trans
+      phalpLayout(),   // per-frame dicts with tid, tracked_time, smpl
+      rompLayout(),    // .npz members results + sequence_results (ROMP, BEV)
+      easymocapLayout(),  // a JSON list of persons with Rh, Th, poses
+      smplerxLayout(),    // exactly SMPLer-X's ten fit keys, before the fit row
+      amassLayout(),      // poses, root_orient
+      fitLayout(),        // body_pose, global_orient
   };
   return table;
 }

@@ -66,6 +66,9 @@ Status appendRows(const Motion& from, const std::string& path, Motion* to) {
   if (from.layout != to->layout || from.frames[0].size() != to->frames[0].size())
     return makeError(path + ": a " + modelKindName(from.layout) + " pose among " +
                      modelKindName(to->layout) + " poses of the sequence");
+  if (from.hands.left.empty() != to->hands.left.empty() ||
+      from.hands.right.empty() != to->hands.right.empty())
+    return makeError(path + ": hand poses in some files of the sequence and not in others");
   if (Status st = to->charge.add(from.charge.bytes(), path, "the sequence's frames"); !st)
     return st;
   to->frames.insert(to->frames.end(), from.frames.begin(), from.frames.end());
@@ -74,6 +77,8 @@ Status appendRows(const Motion& from, const std::string& path, Motion* to) {
                             from.world_rotation.end());
   to->world_translation.insert(to->world_translation.end(), from.world_translation.begin(),
                                from.world_translation.end());
+  to->hands.left.insert(to->hands.left.end(), from.hands.left.begin(), from.hands.left.end());
+  to->hands.right.insert(to->hands.right.end(), from.hands.right.begin(), from.hands.right.end());
   if (from.expression.rows() > 0 || to->expression.rows() > 0) {
     const Eigen::Index cols = std::max(from.expression.cols(), to->expression.cols());
     Eigen::MatrixXd joined =
@@ -145,9 +150,13 @@ Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions
   std::vector<std::string> notes;
   std::set<std::string> seen_notes;
   std::string layout;
+  MotionOptions file_options = options;
+  file_options.sequence_file = true;
   for (const FrameFile& f : *files) {
-    Result<MotionSet> set = loadMotionSet(f.path, options);
+    Result<MotionSet> set = loadMotionSet(f.path, file_options);
     if (!set) return set.error();
+    for (const std::string& n : set->notes)  // the file's notes ("read as ..."), once
+      if (seen_notes.insert(n).second) notes.push_back(n);
     for (Motion& m : set->tracks) {
       if (layout.empty()) layout = m.source_layout;
       if (m.source_layout != layout)

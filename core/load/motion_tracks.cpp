@@ -78,6 +78,11 @@ Status assembleTrack(const std::vector<int64_t>& frames, const std::string& path
   if (frames.size() != n || n == 0)
     return makeError(path + ": track " + printable(m->track, 64) + " has " + std::to_string(n) +
                      " poses for " + std::to_string(frames.size()) + " frame numbers");
+  if ((!m->hands.left.empty() && m->hands.left.size() != n) ||
+      (!m->hands.right.empty() && m->hands.right.size() != n))
+    return makeError(path + ": track " + printable(m->track, 64) + " has hand poses for " +
+                     std::to_string(m->hands.left.size()) + " of its " + std::to_string(n) +
+                     " poses");
   std::vector<size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
@@ -107,6 +112,8 @@ Status assembleTrack(const std::vector<int64_t>& frames, const std::string& path
   reorder(rows, &m->translation);
   reorder(rows, &m->world_rotation);
   reorder(rows, &m->world_translation);
+  reorder(rows, &m->hands.left);  // pending fit hands (SMPLer-X), one per row
+  reorder(rows, &m->hands.right);
   reorderMatrix(rows, &m->expression);
   reorderMatrix(rows, &m->dmpls);
   m->first_frame = first;
