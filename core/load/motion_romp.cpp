@@ -150,6 +150,7 @@ Status decodeRomp(const DataNode& root, const LayoutInput& in, MotionSet* out) {
   }
   std::string infants;
   double infant_age = 0;
+  const size_t before = out->tracks.size();
   for (const Person& p : people) {
     Motion m;
     double age = -1;
@@ -165,8 +166,9 @@ Status decodeRomp(const DataNode& root, const LayoutInput& in, MotionSet* out) {
   char text[200];
   std::snprintf(text, sizeof text, "BEV's infant body (SMIL, age coefficient %.3g > %.1f)",
                 infant_age, kInfantAge);
-  if (out->tracks.empty()) return makeError(in.path + ": " + text + " is not an SMPL body");
-  const bool bev = out->tracks[0].source_layout == "bev";
+  if (out->tracks.size() == before)
+    return makeError(in.path + ": " + text + " is not an SMPL body");
+  const bool bev = out->tracks[before].source_layout == "bev";
   out->notes.insert(out->notes.begin(), std::string("read as ") + (bev ? "BEV" : "ROMP") +
                                             " output (video_results.npz; SMPL)");
   if (!infants.empty())
