@@ -15,6 +15,7 @@
 #include "core/load/motion_romp.h"
 #include "core/load/motion_smplcodec.h"
 #include "core/load/motion_smplerx.h"
+#include "core/load/motion_tram.h"
 #include "core/load/motion_vibe.h"
 #include "core/load/motion_vposer.h"
 #include "core/load/motion_wham.h"
@@ -32,6 +33,7 @@ const std::vector<MotionLayout>& motionLayouts() {
       whamLayout(),    // per-track dicts with pose, trans, frame_ids
       vibeLayout(),    // per-person dicts with pose, frame_ids, orig_cam, no trans
       phalpLayout(),   // per-frame dicts with tid, tracked_time, smpl
+      tramLayout(),    // pred_rotmat, pred_trans, frame (.npy of tensors)
       rompLayout(),    // .npz members results + sequence_results (ROMP, BEV)
       easymocapLayout(),  // a JSON list of persons with Rh, Th, poses
       smplerxLayout(),    // exactly SMPLer-X's ten fit keys, before the fit row

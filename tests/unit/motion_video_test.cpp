@@ -11,6 +11,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/io/tree/data_tree.h"
 #include "core/load/model_loader.h"
 #include "core/load/motion.h"
 #include "core/load/motion_amass.h"
@@ -22,6 +23,7 @@
 #include "core/load/motion_read.h"
 #include "core/load/motion_romp.h"
 #include "core/load/motion_sequence.h"
+#include "core/load/motion_tram.h"
 #include "core/load/motion_vibe.h"
 #include "core/load/motion_wham.h"
 
@@ -375,6 +377,55 @@ TEST(VideoLayouts, SmplerxConventionsOnlyInASequence) {
   EXPECT_EQ(m.held_frames, 1);
   EXPECT_EQ(m.hands.left[11 - 3], m.hands.left[10 - 3]);  // frame 11 has no detection
   EXPECT_NE(m.hands.left[12 - 3], m.hands.left[10 - 3]);
+}
+
+// A TRAM track of `t` identity poses at frames first.. (tensors read as Arrays).
+DataNode tramTrack(int64_t t, int64_t first) {
+  std::vector<double> rot(216 * t, 0.0), frames;
+  for (int64_t i = 0; i < 24 * t; ++i)
+    for (int d = 0; d < 3; ++d) rot[9 * i + 4 * d] = 1;
+  for (int64_t f = 0; f < t; ++f) frames.push_back(static_cast<double>(first + f));
+  return dict({{"pred_rotmat", leaf({t, 24, 3, 3}, rot)},
+               {"pred_trans", zeros({t, 1, 3})},
+               {"pred_shape", zeros({t, 10})},
+               {"frame", leaf({t}, frames)}});
+}
+
+TEST(VideoLayouts, TramPlacesTheCameraFromCameraNpy) {
+  // The fixture's camera.npy (30 cameras) sits at <track dir>/../camera.npy.
+  const std::string track = kVideo + "tram/seq/hps/hps_track_9.npy";
+  MotionSet world;
+  ASSERT_TRUE(tramLayout().decode(tramTrack(3, 4), input(track), &world).ok());
+  const Motion& m = world.tracks[0];
+  EXPECT_EQ(m.world, MotionWorld::Y);
+  EXPECT_EQ(m.first_frame, 4);
+  EXPECT_EQ(m.track, "");
+  ASSERT_EQ(m.world_rotation.size(), 3u);
+  Result<DataNode> cam = readDataTree(kVideo + "tram/seq/camera.npy");
+  ASSERT_TRUE(cam.ok()) << cam.message();
+  const Array* t = cam->leaf("world_cam_T");
+  ASSERT_NE(t, nullptr);
+  EXPECT_EQ(m.world_translation[1], Eigen::Vector3d(t->data[15], t->data[16], t->data[17]));
+  MotionSet cam_frame;
+  ASSERT_TRUE(
+      tramLayout().decode(tramTrack(3, 4), input(track, SourceParams::Incam), &cam_frame).ok());
+  EXPECT_EQ(cam_frame.tracks[0].world, MotionWorld::CameraYDown);
+  EXPECT_TRUE(cam_frame.tracks[0].world_rotation.empty());
+  MotionSet bad;
+  Status st = tramLayout().decode(tramTrack(3, 28), input(track), &bad);  // frames 28-30 of 30
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find("frame 30 is beyond the 30 cameras of"), std::string::npos)
+      << st.message();
+  const std::string alone = kVideo + "tram_cam/hps_track_0.npy";  // no camera.npy beside
+  st = tramLayout().decode(tramTrack(2, 0), input(alone, SourceParams::Global), &bad);
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find("--source-params global: no camera.npy beside the track"),
+            std::string::npos)
+      << st.message();
+  MotionSet none;
+  ASSERT_TRUE(tramLayout().decode(tramTrack(2, 0), input(alone), &none).ok());
+  EXPECT_EQ(none.tracks[0].world, MotionWorld::CameraYDown);
+  EXPECT_NE(none.tracks[0].world_why.find("no camera.npy beside the track"), std::string::npos);
 }
 
 }  // namespace
