@@ -32,7 +32,8 @@ import tempfile
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCRIPTS = ["make_models.py", "make_motions.py", "make_motion_formats.py", "make_released_layouts.py"]
+SCRIPTS = ["make_models.py", "make_motions.py", "make_motion_formats.py", "make_released_layouts.py",
+           "make_video_layouts.py"]
 MIN_EXAMPLES = 15  # the README has 19; fewer means the extraction broke
 
 # README name -> fixture (relative to the fixture directory). Folders are copied whole.
@@ -60,6 +61,13 @@ FILES = {
     "run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
     "body_models": "dmpl/amass",
     "amass_dmpl/run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
+    "wham_output.pkl": "layouts/video/wham/wham_output.pkl",
+    "vibe_output.pkl": "layouts/video/vibe/vibe_output.pkl",
+    "demo_video.pkl": "layouts/video/phalp/demo_video.pkl",
+    "hmr4d_results.pt": "layouts/video/gvhmr/hmr4d_results.pt",
+    "video_results.npz": "layouts/video/romp/video_results.npz",
+    "output/smpl": "layouts/video/easymocap/smpl",
+    "demo_out/smplx": "layouts/video/smplerx/smplx",
 }
 
 
@@ -118,7 +126,13 @@ def long_motion(src, dst, frames):
 
 
 def outputs_exist(args, box):
-    """Whether the --out file / some file in --out-dir exists (commands without either pass on exit 0)."""
+    """Whether the --out file / some file in --out-dir exists (commands without either pass on exit 0);
+    with --track all, the per-track outputs <out stem>.track<ID>.<ext>."""
+    if "--track" in args and args[args.index("--track") + 1] == "all" and "--out" in args:
+        stem, ext = os.path.splitext(os.path.join(box, args[args.index("--out") + 1]))
+        folder = os.path.dirname(stem)
+        tracks = [f for f in os.listdir(folder) if f.startswith(os.path.basename(stem) + ".track") and f.endswith(ext)]
+        return "" if tracks else "--out %s: no %s.track<ID>%s outputs (--track all)" % (stem + ext, stem, ext)
     for flag, check in (("--out", os.path.isfile), ("--out-dir", lambda d: os.path.isdir(d) and os.listdir(d))):
         if flag in args:
             target = os.path.join(box, args[args.index(flag) + 1])

@@ -25,6 +25,9 @@ bool matchesSmplerx(const DataNode& root) {
 }
 
 Status decodeSmplerx(const DataNode& root, const LayoutInput& in, MotionSet* out) {
+  if (in.options.sequence_file && in.options.source_params == SourceParams::Global)
+    return makeError(in.path +
+                     ": --source-params global: SMPLer-X output has no world-frame parameters");
   Motion m;
   if (Status s = motion_detail::decodeFit(root, in.path, &m); !s) return s;
   if (!in.options.sequence_file) {

@@ -11,7 +11,8 @@
 // sequence_file): main/SMPLer_X.py get_coord, mesh_cam = vertices + transl,
 // is the camera frame (--up -y), layout "smplerx", and a note says the file
 // suffix is a detection index (non_max_suppression order), not a tracked
-// identity. A single file given to --motion stays a fit (layout "fit", Y up:
+// identity; --source-params global is refused there (no world-frame
+// parameters). A single file given to --motion stays a fit (layout "fit", Y up:
 // give --up -y), since its keys alone do not tell it from other fits.
 #pragma once
 

@@ -377,6 +377,13 @@ TEST(VideoLayouts, SmplerxConventionsOnlyInASequence) {
   EXPECT_EQ(m.held_frames, 1);
   EXPECT_EQ(m.hands.left[11 - 3], m.hands.left[10 - 3]);  // frame 11 has no detection
   EXPECT_NE(m.hands.left[12 - 3], m.hands.left[10 - 3]);
+  MotionOptions global;
+  global.source_params = SourceParams::Global;
+  Result<MotionSet> refused = loadMotionSequence(kVideo + "smplerx/smplx", global);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("SMPLer-X output has no world-frame parameters"),
+            std::string::npos)
+      << refused.message();
 }
 
 // A TRAM track of `t` identity poses at frames first.. (tensors read as Arrays).
