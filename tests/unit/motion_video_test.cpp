@@ -413,6 +413,11 @@ TEST(VideoLayouts, TramPlacesTheCameraFromCameraNpy) {
   const Array* t = cam->leaf("world_cam_T");
   ASSERT_NE(t, nullptr);
   EXPECT_EQ(m.world_translation[1], Eigen::Vector3d(t->data[15], t->data[16], t->data[17]));
+  const Array* r = cam->leaf("world_cam_R");  // row 1 is frame 5
+  ASSERT_NE(r, nullptr);
+  const Eigen::Matrix3d r5 =
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(r->data.data() + 45);
+  EXPECT_TRUE(m.world_rotation[1].isApprox(r5, 1e-6));  // re-orthonormalised float32
   MotionSet cam_frame;
   ASSERT_TRUE(
       tramLayout().decode(tramTrack(3, 4), input(track, SourceParams::Incam), &cam_frame).ok());
