@@ -8,7 +8,11 @@
 #include "core/load/motion_amass.h"
 #include "core/load/motion_beat2.h"
 #include "core/load/motion_fit.h"
+#include "core/load/motion_hamer.h"
 #include "core/load/motion_layout.h"
+#include "core/load/motion_mdm.h"
+#include "core/load/motion_motionx.h"
+#include "core/load/motion_positions.h"
 #include "core/load/motion_smplcodec.h"
 #include "core/load/motion_vposer.h"
 
@@ -18,10 +22,14 @@ const std::vector<MotionLayout>& motionLayouts() {
   // Order: a layout whose keys another layout's files may also carry comes after it.
   static const std::vector<MotionLayout> table = {
       smplCodecLayout(),  // bodyPose (.smpl)
+      motionxLayout(),    // a (T,322) / (T,172) array (.npy)
+      positionsLayout(),  // joint positions (refused): (T,22,3) arrays, MDM results.npy
+      mdmLayout(),        // motion + thetas (MDM smpl_params .npy)
       aistLayout(),       // smpl_poses
       vposerLayout(),  // latent_pose, pose_embedding, latent (refused) before AMASS's root_orient
       beat2Layout(),   // poses + expressions / model, before AMASS's poses
       amassLayout(),   // poses, root_orient
+      hamerLayout(),   // hand_pose + global_orient, no body_pose: before the fit's global_orient
       fitLayout(),     // body_pose, global_orient
   };
   return table;

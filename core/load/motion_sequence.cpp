@@ -145,8 +145,10 @@ Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions
   std::vector<std::string> notes;
   std::set<std::string> seen_notes;
   std::string layout;
+  MotionOptions per_file = options;
+  per_file.frame_file = true;  // a file's rows are that frame's hands or persons (HaMeR)
   for (const FrameFile& f : *files) {
-    Result<MotionSet> set = loadMotionSet(f.path, options);
+    Result<MotionSet> set = loadMotionSet(f.path, per_file);
     if (!set) return set.error();
     for (Motion& m : set->tracks) {
       if (layout.empty()) layout = m.source_layout;
