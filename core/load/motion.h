@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,8 +67,11 @@ struct Motion {
   // knows J_0: the root becomes A R_0 and the root node A (J_0 + t) + b.
   std::vector<Eigen::Matrix3d> world_rotation;
   std::vector<Eigen::Vector3d> world_translation;
-  std::string hand;    // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
-  PendingHands hands;  // fits only: resolved by resolveFitHands()
+  std::string hand;  // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
+  // The body model the file names, when it names one (AMASS `surface_model_type`):
+  // --model DIR picks that kind rather than the one of the joint layout.
+  std::optional<ModelKind> model_kind;
+  PendingHands hands;              // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
   std::string source_layout;       // the table row that read it ("amass", "fit", ...)
   MemoryCharge charge;             // `frames` and `translation` against the memory budget

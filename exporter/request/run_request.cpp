@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <new>
 
@@ -103,15 +105,28 @@ Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSou
 // Betas from the first motion when the run gave none; --betas-from-motion
 // makes a motion without betas an error.
 Status betasFromMotion(const BodyModel& model, const ExportRequest& r,
-                       const std::vector<Motion>& motions, ExportOptions* o) {
+                       const std::vector<Motion>& motions, ExportOptions* o,
+                       std::vector<std::string>* notes) {
   if (motions.empty() || motions[0].betas.empty()) {
     if (r.betas_from_motion && !r.motions.empty())
       return fail(ErrorKind::Load, "loading", r.motions[0],
                   "no betas in the motion (--betas-from-motion)");
     return Status();
   }
-  const size_t n = std::min(motions[0].betas.size(), static_cast<size_t>(model.numBetas()));
-  o->betas.assign(motions[0].betas.begin(), motions[0].betas.begin() + n);
+  const std::vector<double>& betas = motions[0].betas;
+  const size_t n = std::min(betas.size(), static_cast<size_t>(model.numBetas()));
+  o->betas.assign(betas.begin(), betas.begin() + n);
+  double dropped = 0;
+  for (size_t i = n; i < betas.size(); ++i) dropped = std::max(dropped, std::abs(betas[i]));
+  if (dropped > 0) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "%s: the motion has %zu betas; the model %s has %d: betas %zu..%zu are not "
+                  "used (largest |value| %.3g)",
+                  motions[0].name.c_str(), betas.size(), model.name.c_str(), model.numBetas(), n,
+                  betas.size() - 1, dropped);
+    notes->push_back(text);
+  }
   return Status();
 }
 
@@ -137,7 +152,8 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, const Lo
   const BodyModel& model = *loaded.pick.model;
   ExportOptions options = exportOptionsOf(r, inputs.betas);
   if (!inputs.betas_given)
-    if (Status st = betasFromMotion(model, r, loaded.motions, &options); !st) return st.error();
+    if (Status st = betasFromMotion(model, r, loaded.motions, &options, &report->notes); !st)
+      return st.error();
   Result<PreparedDmpl> dmpl = prepareDmpl(model, r, loaded.motions, report);  // dmpl_job.h
   if (!dmpl) return dmpl.error();
   std::vector<std::string> frame_notes;

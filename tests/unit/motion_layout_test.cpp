@@ -65,6 +65,15 @@ TEST(MotionLayouts, OnlyTheMatchedRowsKeysAreDecoded) {
   EXPECT_EQ(m->fps, 50.0);
 }
 
+TEST(MotionLayouts, APoseKeyHoldingADictIsRefused) {
+  Result<Motion> m = loadMotion(kTable + "fit_hand_dict.pkl");
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.message().find("'left_hand_pose' holds dict with keys 'pose', expected an array of "
+                             "poses"),
+            std::string::npos)
+      << m.message();
+}
+
 TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
   const std::vector<std::string> ext = motionFileExtensions();
   EXPECT_EQ(

@@ -133,6 +133,40 @@ TEST_F(RunRequestTest, FolderPickUsesTheDecodedMotion) {
   EXPECT_EQ(fs::path(none->path).filename().string(), "SMPL_NEUTRAL.npz");
 }
 
+// AMASS's surface_model_type names the body model: a folder picks that kind,
+// not the one of the joint layout (an SMPL-X stage-II file that drives SMPL-H).
+TEST_F(RunRequestTest, FolderPickFollowsTheNamedModelKind) {
+  fs::create_directories(dir_ + "/models");
+  fs::copy_file(kFixtures + "/models/smplh_small.npz", dir_ + "/models/SMPLH_NEUTRAL.npz");
+  fs::copy_file(kFixtures + "/models/smplx_small.npz", dir_ + "/models/SMPLX_NEUTRAL.npz");
+  ModelSource models(dir_ + "/models");
+  Motion motion;
+  motion.layout = ModelKind::SmplX;
+  EXPECT_EQ(fs::path(models.forMotion(&motion)->path).filename(), "SMPLX_NEUTRAL.npz");
+  motion.model_kind = ModelKind::SmplH;
+  EXPECT_EQ(fs::path(models.forMotion(&motion)->path).filename(), "SMPLH_NEUTRAL.npz");
+  Result<Motion> amass = loadMotion(kFixtures + "/formats/subject/run_stageii.npz");
+  ASSERT_TRUE(amass.ok()) << amass.message();
+  EXPECT_EQ(amass->model_kind, ModelKind::SmplX);  // surface_model_type "smplx"
+}
+
+// Motion betas beyond the model's count are not used, and a note says so
+// (--betas-file refuses them: the user typed them).
+TEST_F(RunRequestTest, MotionBetasBeyondTheModelAreNoted) {
+  const std::string model = kFixtures + "/models/smpl_small.npz";
+  const std::string motion = kFixtures + "/motions/amass_smplh.npz";  // 16 betas
+  Result<ExportReport> r = run(request({"--motion", motion.c_str()}, model.c_str()));
+  ASSERT_TRUE(r.ok()) << r.message();
+  EXPECT_EQ(r->options.betas.size(), 10u);
+  EXPECT_NE(std::find_if(r->notes.begin(), r->notes.end(),
+                         [](const std::string& n) {
+                           return n.find(
+                                      "the motion has 16 betas; the model smpl_small.npz has "
+                                      "10: betas 10..15 are not used") != std::string::npos;
+                         }),
+            r->notes.end());
+}
+
 // Ranges that need the model are checked once it is known; nothing is written.
 TEST_F(RunRequestTest, ModelChecksRunOnceTheModelIsKnown) {
   Result<ExportReport> r = run(request({"--max-influences", "30"}));
