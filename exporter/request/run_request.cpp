@@ -94,10 +94,10 @@ Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSou
   if (!side) return fail(ErrorKind::Load, "loading", r.motions.front(), side.message());
   loaded.side = std::move(*side);
   if (loaded.side.mirrored) loaded.pick.model = loaded.side.mirrored.get();
-  if (Status st = checkRequestForModel(r, inputs.betas, *pick->model); !st)
-    return usage(st.message());
+  const BodyModel& model = *loaded.pick.model;
+  if (Status st = checkRequestForModel(r, inputs.betas, model); !st) return usage(st.message());
   for (size_t i = 0; i < r.motions.size(); ++i)
-    if (Status st = resolveMotionHands(*pick->model, r, r.motions[i], &loaded.motions[i]); !st)
+    if (Status st = resolveMotionHands(model, r, r.motions[i], &loaded.motions[i]); !st)
       return fail(ErrorKind::Load, "loading", r.motions[i], st.message());
   return loaded;
 }
