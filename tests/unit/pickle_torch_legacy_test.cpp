@@ -152,6 +152,18 @@ TEST(LegacyTorch, ExpansionBoundAndMemoryBudgetApply) {
       << broadcast.message();
 }
 
+TEST(LegacyTorch, RepeatedBytesCountAgainstTheExpansionBound) {
+  // The memo names one 64 KiB byte string 2000 times; each _load_from_bytes reads it again.
+  const std::string bytes = readAll(kLegacy + "bad_repeated.pkl");
+  Result<DataNode> tree = parsePickleTree(bytesOf(bytes), bytes.size(), "bad_repeated.pkl");
+  ASSERT_FALSE(tree.ok());
+  EXPECT_EQ(tree.message().rfind("bad_repeated.pkl: torch legacy storage bytes of 65", 0), 0u)
+      << tree.message();
+  EXPECT_NE(tree.message().find("exceeds the limit of 67108864 bytes for an input of"),
+            std::string::npos)
+      << tree.message();
+}
+
 TEST_F(LegacyTorchBudget, TheTensorsAreChargedToTheMemoryBudget) {
   const uint64_t before = memoryCharged();
   setMemoryLimit(before + 2048);  // the pickle's objects fit; not them and the tensors' doubles

@@ -24,7 +24,9 @@
 // Each pickle runs in the same data-only VM and heap (the outer pickle's
 // limits and budget); the storages view b's bytes, which the outer pickle
 // already charged. A _load_from_bytes inside b is refused (resolveGlobal).
-#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "core/io/pickle/pickle_internal.h"
 #include "core/io/pickle/pickle_tree.h"
@@ -36,6 +38,7 @@ namespace {
 
 constexpr int64_t kLegacyProtocol = 1001;
 constexpr size_t kMagicPickle = 15;  // PROTO 2, LONG1 of 10 bytes, STOP
+constexpr uint64_t kMapEntry = 64;   // what a hash map entry of a key costs, roughly
 
 class LegacyReader {
  public:
@@ -50,7 +53,7 @@ class LegacyReader {
   Result<Ref> next(const char* what);
   Status header();
   Status bindStorages(Ref keys);
-  Status bindOne(const std::string& key, const std::vector<Ref>& storages);
+  Status bindOne(const std::string& key, const std::vector<Ref>& named);
   Error fail(const std::string& message) const {
     return heap_.fail("torch.storage._load_from_bytes: " + message);
   }
@@ -138,16 +141,24 @@ Status LegacyReader::bindStorages(Ref keys) {
   const PyObj& list = heap_.at(keys);
   if (list.kind != Kind::List)
     return fail("the storage keys are a " + typeName(heap_, keys) + ", expected a list");
-  std::vector<std::string> seen;
+  // key -> the storages declared with it (hash maps: a hostile list of many keys stays linear).
+  std::unordered_map<std::string, std::vector<Ref>> declared;
+  for (Ref s : storages_) {
+    const std::string_view key = heap_.at(heap_.at(s).items[0]).bytes();
+    PK_TRY(heap_.charge(kMapEntry + key.size(), "storage key"));
+    declared[std::string(key)].push_back(s);
+  }
+  std::unordered_set<std::string> seen;
   std::string key;
   for (Ref k : list.items) {
     if (!stringValue(heap_, k, &key))
       return fail("a storage key is a " + typeName(heap_, k) + ", expected str");
-    for (const std::string& s : seen)
-      if (s == key) return fail("storage key '" + printable(key) + "' is listed twice");
-    PK_TRY(heap_.charge(sizeof(std::string) + key.size(), "storage key"));
-    seen.push_back(key);
-    PK_TRY(bindOne(key, storages_));
+    if (!seen.insert(key).second)
+      return fail("storage key '" + printable(key) + "' is listed twice");
+    PK_TRY(heap_.charge(kMapEntry + key.size(), "storage key"));
+    auto it = declared.find(key);
+    if (it == declared.end()) return fail("storage key '" + printable(key) + "' names no storage");
+    PK_TRY(bindOne(key, it->second));
   }
   for (Ref s : storages_)
     if (!heap_.at(s).view)
@@ -157,13 +168,9 @@ Status LegacyReader::bindStorages(Ref keys) {
 }
 
 // The element count and elements of storage `key`, bound to every storage
-// the pickle declared with that key.
-Status LegacyReader::bindOne(const std::string& key, const std::vector<Ref>& storages) {
-  std::vector<Ref> named;
-  for (Ref s : storages)
-    if (heap_.at(heap_.at(s).items[0]).bytes() == key) named.push_back(s);
+// the pickle declared with that key (`named`, at least one).
+Status LegacyReader::bindOne(const std::string& key, const std::vector<Ref>& named) {
   const std::string name = "storage '" + printable(key) + "'";
-  if (named.empty()) return fail("storage key '" + printable(key) + "' names no storage");
   if (size_ - pos_ < 8)
     return fail("its bytes end at byte " + std::to_string(size_) +
                 ", before the element count of " + name);
@@ -197,8 +204,12 @@ Result<Ref> loadFromBytes(Heap& heap, Ref args, const PickleLimits& limits) {
     return heap.fail("torch.storage._load_from_bytes needs one bytes argument");
   if (heap.options().inside_load_from_bytes)  // resolveGlobal refuses it first
     return heap.fail("torch.storage._load_from_bytes inside the bytes of another");
-  // The bytes stay where they are (the outer pickle, or this heap's object).
-  LegacyReader reader(heap, heap.at(a.items[0]).bytes(), limits);
+  // The bytes stay where they are (the outer pickle, or this heap's object). Each call
+  // counts them against the pickle's bound: the memo can name one byte string many times,
+  // and its pickles run again each time.
+  const std::string_view bytes = heap.at(a.items[0]).bytes();
+  PK_TRY(heap.count(bytes.size(), "torch legacy storage bytes"));
+  LegacyReader reader(heap, bytes, limits);
   return reader.read();
 }
 
