@@ -114,6 +114,7 @@ TEST(LegacyTorch, MalformedStreamsAreOneLineErrors) {
       {"bad_trailing.npy", in + "3 bytes follow the last storage's data"},
       {"bad_missing_key.npy", in + "storage '0' has no data (its key is not in the key list)"},
       {"bad_unknown_key.npy", in + "storage key '9' names no storage"},
+      {"bad_twice.npy", in + "storage key '0' is listed twice"},
       {"bad_view.npy", in + "in its storage pickle (at byte 137 of its 263): torch storage '0' is "
                             "a view (view_metadata tuple): not supported"},
       {"bad_object.npy", in + "its pickle holds a int, expected a storage"},
