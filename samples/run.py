@@ -33,8 +33,8 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCRIPTS = ["make_models.py", "make_motions.py", "make_motion_formats.py", "make_released_layouts.py",
-           "make_generation_layouts.py"]
-MIN_EXAMPLES = 15  # the README has 19; fewer means the extraction broke
+           "make_generation_layouts.py", "make_dmpl.py"]
+MIN_EXAMPLES = 15  # the README has 27; fewer means the extraction broke
 
 # README name -> fixture (relative to the fixture directory). Folders are copied whole.
 FILES = {
@@ -63,6 +63,7 @@ FILES = {
     "amass_dmpl/run_poses.npz": "dmpl/amass_smplh_dmpl.npz",
     # motion-generation, hand and camera-frame layouts (make_generation_layouts.py)
     "clip.npy": "layouts/generation/motionx/smplx322_walk.npy",
+    "sample00_rep00_smpl_params.npy": "layouts/generation/mdm/sample00_rep00_smpl_params.npy",
     "MANO_RIGHT.pkl": "models/mano_small_p2.pkl",
     "hand.npz": "layouts/generation/hamer/left_hand.npz",
     "hamer_out": "layouts/generation/hamer/hands3",

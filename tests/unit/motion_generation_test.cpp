@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/load/motion.h"
 #include "core/load/motion_hamer.h"
 #include "core/load/motion_layout.h"
 #include "core/load/motion_mdm.h"
@@ -395,6 +396,49 @@ TEST(Hamer, FlattenedNamesAndShapeErrors) {
   Result<MotionSet> side = decode(hamerLayout(), short_side);
   ASSERT_FALSE(side.ok());
   EXPECT_EQ(side.message(), "x.npy: 'is_right' has shape (1,); expected (2,)");
+}
+
+// ---- Through loadMotion (the fixtures of make_generation_layouts.py) -------------------------
+
+const std::string kGeneration = std::string(SMPL_FIXTURE_DIR) + "/layouts/generation/";
+
+// The documented rates settle with their notes; MDM's pickled torch tensor (`vertices`, not
+// read) does not fail the file.
+TEST(GenerationLayouts, FilesLoadWithTheirDocumentedRates) {
+  struct Case {
+    const char* file;
+    const char* layout;
+    size_t frames;
+    double fps;
+    const char* note;
+  } cases[] = {
+      {"motionx/smplx322_walk.npy", "motionx", 24, 30,
+       "Motion-X stores no frame rate; its documentation gives 30 fps; assumed 30 fps"},
+      {"mdm/sample00_rep00_smpl_params.npy", "mdm", 30, 20,
+       "MDM (HumanML3D) stores no frame rate; its documentation gives 20 fps; assumed 20 fps"},
+      {"hamer/left_hand.npz", "hamer", 20, 30, "no frame rate is stored; assumed 30 fps"},
+  };
+  for (const Case& c : cases) {
+    Result<Motion> m = loadMotion(kGeneration + c.file);
+    ASSERT_TRUE(m.ok()) << m.message();
+    EXPECT_EQ(m->source_layout, c.layout);
+    EXPECT_EQ(m->frames.size(), c.frames) << c.file;
+    EXPECT_EQ(m->fps, c.fps) << c.file;
+    EXPECT_TRUE(m->fps_assumed) << c.file;
+    EXPECT_TRUE(hasNote(*m, c.note)) << c.file;
+  }
+  Result<Motion> hand = loadMotion(kGeneration + "hamer/left_hand.npz");
+  ASSERT_TRUE(hand.ok());
+  EXPECT_EQ(hand->hand, "left");
+  EXPECT_TRUE(hasNote(*hand, "HaMeR's pred_cam_t_full places the hand in the camera"));
+  for (const char* file : {"humanml3d/new_joints_000021.npy", "mdm/results.npy"}) {
+    Result<Motion> refused = loadMotion(kGeneration + file);
+    ASSERT_FALSE(refused.ok()) << file;
+    EXPECT_EQ(refused.message(),
+              kGeneration + file +
+                  ": joint positions, no rotations: fit a body first, e.g. with SMPLify (MDM: "
+                  "visualize/render_mesh.py writes *_smpl_params.npy)");
+  }
 }
 
 }  // namespace
