@@ -33,8 +33,8 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCRIPTS = ["make_models.py", "make_motions.py", "make_motion_formats.py", "make_released_layouts.py",
-           "make_video_layouts.py"]
-MIN_EXAMPLES = 15  # the README has 19; fewer means the extraction broke
+           "make_generation_layouts.py", "make_dmpl.py", "make_video_layouts.py"]
+MIN_EXAMPLES = 15  # the README has 34; fewer means the extraction broke
 
 # README name -> fixture (relative to the fixture directory). Folders are copied whole.
 FILES = {
@@ -68,6 +68,15 @@ FILES = {
     "video_results.npz": "layouts/video/romp/video_results.npz",
     "output/smpl": "layouts/video/easymocap/smpl",
     "demo_out/smplx": "layouts/video/smplerx/smplx",
+    # motion-generation, hand and camera-frame layouts (make_generation_layouts.py)
+    "clip.npy": "layouts/generation/motionx/smplx322_walk.npy",
+    "sample00_rep00_smpl_params.npy": "layouts/generation/mdm/sample00_rep00_smpl_params.npy",
+    "MANO_RIGHT.pkl": "models/mano_small_p2.pkl",
+    "hand.npz": "layouts/generation/hamer/left_hand.npz",
+    "hamer_out": "layouts/generation/hamer/hands3",
+    "SMPLX_NEUTRAL_2020.npz": "released/smplx_release.npz",
+    "2_scott_0_1_1.npz": "layouts/generation/beat2/2_scott_0_1_1_output.npz",
+    "smplifyx/000.pkl": "layouts/generation/fits/smplifyx_000.pkl",
 }
 
 

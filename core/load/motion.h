@@ -99,10 +99,10 @@ struct MotionOptions {
                             // default (30 fps; AIST++ 60, as documented) with a note
   bool up_given = false;    // --up was given: no note about the layout's default world turn
   SourceParams source_params = SourceParams::Default;  // --source-params global|incam
-  // Set by loadMotionSequence: the file is one frame of --motion-sequence
-  // (the sequence numbers its rows from the name; per-frame layouts such as
-  // SMPLer-X apply their conventions only then).
-  bool sequence_file = false;
+  // Set by loadMotionSequence (motion_sequence.h): the file is one frame of a
+  // --motion-sequence, so a layout whose rows are that frame's hands (HaMeR)
+  // reads each row as a track instead of as a frame.
+  bool frame_file = false;
 };
 
 // What one file holds: one Motion per person or track (most files hold one)

@@ -75,7 +75,7 @@ Status decodePerson(const DataNode& person, size_t index, const LayoutInput& in,
   // Alone, the file's name gives its frame; in a sequence the sequence numbers it.
   int64_t frame = 0;
   std::string suffix;
-  if (!in.options.sequence_file && parseFrameName(baseName(in.path), &frame, &suffix))
+  if (!in.options.frame_file && parseFrameName(baseName(in.path), &frame, &suffix))
     m->first_frame = frame;
   return Status();
 }

@@ -10,8 +10,12 @@
 #include "core/load/motion_easymocap.h"
 #include "core/load/motion_fit.h"
 #include "core/load/motion_gvhmr.h"
+#include "core/load/motion_hamer.h"
 #include "core/load/motion_layout.h"
+#include "core/load/motion_mdm.h"
+#include "core/load/motion_motionx.h"
 #include "core/load/motion_phalp.h"
+#include "core/load/motion_positions.h"
 #include "core/load/motion_romp.h"
 #include "core/load/motion_smplcodec.h"
 #include "core/load/motion_smplerx.h"
@@ -26,6 +30,9 @@ const std::vector<MotionLayout>& motionLayouts() {
   // Order: a layout whose keys another layout's files may also carry comes after it.
   static const std::vector<MotionLayout> table = {
       smplCodecLayout(),  // bodyPose (.smpl)
+      motionxLayout(),    // a (T,322) / (T,172) array (.npy)
+      positionsLayout(),  // joint positions (refused): (T,22,3) arrays, MDM results.npy
+      mdmLayout(),        // motion + thetas (MDM smpl_params .npy)
       aistLayout(),       // smpl_poses
       vposerLayout(),  // latent_pose, pose_embedding, latent (refused) before AMASS's root_orient
       beat2Layout(),   // poses + expressions / model, before AMASS's poses
@@ -38,6 +45,7 @@ const std::vector<MotionLayout>& motionLayouts() {
       easymocapLayout(),  // a JSON list of persons with Rh, Th, poses
       smplerxLayout(),    // exactly SMPLer-X's ten fit keys, before the fit row
       amassLayout(),      // poses, root_orient
+      hamerLayout(),      // hand_pose + global_orient, no body_pose: before the fit's global_orient
       fitLayout(),        // body_pose, global_orient
   };
   return table;

@@ -150,10 +150,10 @@ Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions
   std::vector<std::string> notes;
   std::set<std::string> seen_notes;
   std::string layout;
-  MotionOptions file_options = options;
-  file_options.sequence_file = true;
+  MotionOptions per_file = options;
+  per_file.frame_file = true;  // a file's rows are that frame's hands or persons (HaMeR)
   for (const FrameFile& f : *files) {
-    Result<MotionSet> set = loadMotionSet(f.path, file_options);
+    Result<MotionSet> set = loadMotionSet(f.path, per_file);
     if (!set) return set.error();
     for (const std::string& n : set->notes)  // the file's notes ("read as ..."), once
       if (seen_notes.insert(n).second) notes.push_back(n);

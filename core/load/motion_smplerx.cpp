@@ -25,12 +25,12 @@ bool matchesSmplerx(const DataNode& root) {
 }
 
 Status decodeSmplerx(const DataNode& root, const LayoutInput& in, MotionSet* out) {
-  if (in.options.sequence_file && in.options.source_params == SourceParams::Global)
+  if (in.options.frame_file && in.options.source_params == SourceParams::Global)
     return makeError(in.path +
                      ": --source-params global: SMPLer-X output has no world-frame parameters");
   Motion m;
   if (Status s = motion_detail::decodeFit(root, in.path, &m); !s) return s;
-  if (!in.options.sequence_file) {
+  if (!in.options.frame_file) {
     m.source_layout = "fit";  // alone: today's fit (Y up), see the header
   } else {
     m.notes.push_back("read as SMPLer-X output (one file per frame and detection; SMPL-X)");

@@ -8,7 +8,7 @@
 // with smplx's default flat_hand_mean=False adds hands_mean to the 45-d
 // hands (--flat-hand-mean turns it off); expression baked with
 // --expression-keys. As one file of a --motion-sequence (MotionOptions::
-// sequence_file): main/SMPLer_X.py get_coord, mesh_cam = vertices + transl,
+// frame_file): main/SMPLer_X.py get_coord, mesh_cam = vertices + transl,
 // is the camera frame (--up -y), layout "smplerx", and a note says the file
 // suffix is a detection index (non_max_suppression order), not a tracked
 // identity; --source-params global is refused there (no world-frame

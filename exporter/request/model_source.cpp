@@ -7,9 +7,7 @@
 #include "core/load/model_loader.h"
 
 namespace smpl {
-namespace {
 
-// Bytes the model's arrays occupy, held against the budget while the model is cached.
 uint64_t modelBytes(const BodyModel& m) {
   const uint64_t doubles = m.v_template.size() + m.shapedirs.size() + m.exprdirs.size() +
                            m.posedirs.size() + m.weights.size() + m.hands_components_l.size() +
@@ -17,8 +15,6 @@ uint64_t modelBytes(const BodyModel& m) {
   return doubles * sizeof(double) + m.j_regressor.nonZeros() * (sizeof(double) + sizeof(int)) +
          (m.faces.size() + m.texcoord_faces.size()) * sizeof(int);
 }
-
-}  // namespace
 
 bool ModelSource::isFolder() const {
   std::error_code ec;

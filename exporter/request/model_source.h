@@ -26,6 +26,10 @@ struct ModelPick {
   std::string note;  // e.g. "no female SMPL-X model in DIR; using SMPLX_NEUTRAL.npz"
 };
 
+// Bytes the model's arrays occupy: what a cached (or job-owned) model holds
+// against the memory budget.
+uint64_t modelBytes(const BodyModel& model);
+
 class ModelSource {
  public:
   explicit ModelSource(std::string option) : option_(std::move(option)) {}

@@ -17,6 +17,7 @@
 #include "exporter/request/check_request.h"
 #include "exporter/request/dmpl_job.h"
 #include "exporter/request/error_line.h"
+#include "exporter/request/hand_side.h"
 #include "exporter/request/motion_notes.h"
 #include "exporter/request/producer.h"
 #include "exporter/request/request_motions.h"
@@ -65,11 +66,13 @@ Error exportFailure(const std::string& out, const Error& e, const std::string& i
   return fail(ErrorKind::Export, "exporting", out, e.message);
 }
 
-// The motions decoded once, the model picked with the first, the model's
-// checks, then the fit hands through the model's basis.
+// The motions decoded once, the model picked with the first (mirrored for a
+// hand of the other side: hand_side.h), the model's checks, then the fit
+// hands through the model's basis.
 struct Loaded {
   std::vector<Motion> motions;
   ModelPick pick;
+  HandSideModel side;  // owns pick.model when it is the mirrored model
 };
 
 Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
@@ -87,10 +90,14 @@ Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSou
   if (!pick) return fail(ErrorKind::Load, "loading", r.model, pick.message());
   stage->set("exporting", r.out, ErrorKind::Export);
   loaded.pick = *pick;
-  if (Status st = checkRequestForModel(r, inputs.betas, *pick->model); !st)
-    return usage(st.message());
+  Result<HandSideModel> side = modelForHandSide(*pick->model, r.motions, &loaded.motions);
+  if (!side) return fail(ErrorKind::Load, "loading", r.motions.front(), side.message());
+  loaded.side = std::move(*side);
+  if (loaded.side.mirrored) loaded.pick.model = loaded.side.mirrored.get();
+  const BodyModel& model = *loaded.pick.model;
+  if (Status st = checkRequestForModel(r, inputs.betas, model); !st) return usage(st.message());
   for (size_t i = 0; i < r.motions.size(); ++i)
-    if (Status st = resolveMotionHands(*pick->model, r, r.motions[i], &loaded.motions[i]); !st)
+    if (Status st = resolveMotionHands(model, r, r.motions[i], &loaded.motions[i]); !st)
       return fail(ErrorKind::Load, "loading", r.motions[i], st.message());
   return loaded;
 }

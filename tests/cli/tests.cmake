@@ -55,3 +55,17 @@ add_test(NAME cli.layouts.video_equivalent
           --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases video --equivalent
           --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_video_equivalent)
 set_tests_properties(cli.layouts.video_equivalent PROPERTIES LABELS web)
+
+# The motion-generation, hand and camera-frame layouts (docs/motions.md "Motion-generation
+# tools, hand and camera-frame fits"): every case of tests/cli/layouts/generation_cases.py
+# exported by the decoders and played by three.js against its numpy reference at 1e-6 m, and
+# the same references through today's exporter (AMASS-style equivalents).
+add_test(NAME cli.layouts.generation
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/layouts/run_cases.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases generation
+          --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_generation)
+add_test(NAME cli.layouts.generation_equivalent
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/layouts/run_cases.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases generation
+          --equivalent --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_generation_equivalent)
+set_tests_properties(cli.layouts.generation cli.layouts.generation_equivalent PROPERTIES LABELS web)

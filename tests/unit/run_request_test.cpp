@@ -20,6 +20,7 @@
 #include "cli/settings.h"
 #include "core/demo/demo_body.h"
 #include "core/io/file_io.h"
+#include "core/load/model_loader.h"
 #include "exporter/metadata_json.h"
 #include "exporter/request/request_motions.h"
 
@@ -289,6 +290,39 @@ TEST_F(RunRequestTest, TrackChoicesAndFoldersAreChecked) {
   EXPECT_NE(dir.message().find("a folder: give --motion-sequence DIR"), std::string::npos)
       << dir.message();
   EXPECT_FALSE(exists(out_));
+}
+
+// A HaMeR left hand on MANO_RIGHT is exported as the model mirrored (the
+// job's own copy: the cached model is unchanged), with the note; a right hand
+// keeps the model.
+TEST_F(RunRequestTest, HandOfTheOtherSidePosesTheMirroredModel) {
+  const std::string model = kFixtures + "/models/mano_small.npz";
+  const std::string hamer = kFixtures + "/layouts/generation/hamer/";
+  for (const char* file : {"left_hand.npz", "right_hand.npz"}) {
+    SCOPED_TRACE(file);
+    const bool left = std::string(file) == "left_hand.npz";
+    const std::string motion = hamer + file;
+    ExportRequest r = request({"--motion", motion.c_str()}, model.c_str());
+    ModelSource models(r.model);
+    Result<ExportReport> report = runExportRequest(r, &models);
+    ASSERT_TRUE(report.ok()) << report.message();
+    const auto note = std::find_if(report->notes.begin(), report->notes.end(), [](auto& n) {
+      return n.find("a left hand on a right MANO model: exported as the mirrored model") !=
+             std::string::npos;
+    });
+    EXPECT_EQ(note != report->notes.end(), left);
+    Result<std::vector<uint8_t>> text = readFileBytes(out_ + ".smpl.json");
+    ASSERT_TRUE(text.ok());
+    const std::string sidecar(text->begin(), text->end());
+    EXPECT_EQ(sidecar.find("\"model_name\":\"mano_small.npz (mirrored)\"") != std::string::npos,
+              left)
+        << sidecar.substr(0, 400);
+    Result<ModelPick> cached = models.forMotion(nullptr);
+    Result<BodyModel> fresh = loadModel(model);
+    ASSERT_TRUE(cached.ok() && fresh.ok());
+    EXPECT_EQ(cached->model->name, "mano_small.npz");
+    EXPECT_TRUE(cached->model->v_template.isApprox(fresh->v_template, 0));
+  }
 }
 
 }  // namespace

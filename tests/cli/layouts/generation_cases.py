@@ -107,7 +107,10 @@ CASES = [
                  "forbid": ["shape file", "body_pose"]}},
     {"name": "hamer_tie_longest", "fixture": G + "hamer/hands_tie", "sequence": True,
      "model": "mano_small", "args": [], "outputs": None, "frames": [0, 4, 9],
-     "notes": ["track 1"], "refusal": None},
+     # The tie goes to the lower id (motion_tracks.cpp selectTracks; the wording of the
+     # video cases, e.g. wham_world's "other tracks: 0 (0-17), 2 (2-26)").
+     "notes": ["track 0 of 2 (source frames 0-9, the longest); other tracks: 1 (3-12)"],
+     "refusal": None},
     # BEAT2 / EMAGE: poses (T,165) with hands relative to hands_mean, expressions (T,100), Y up.
     {"name": "beat2_expr100", "fixture": G + "beat2/2_scott_0_1_1_output.npz",
      "model": "smplx_small", "args": ["--expression-keys", "100"], "outputs": None,
