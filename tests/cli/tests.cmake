@@ -48,13 +48,19 @@ set_tests_properties(cli.docs PROPERTIES LABELS cli)
 # Motion layouts of today's tools (tests/cli/layouts, docs/motions.md): the numpy references of
 # the video-to-motion cases checked through today's exporter, each clip written in our own terms
 # (AMASS-style npz, turned Y up) and played by three.js (node, web/node_modules) against the
-# reference at 1e-6 m. The cases themselves (run_cases.py without --equivalent) need the layout
-# decoders and are registered with them.
+# reference at 1e-6 m.
 add_test(NAME cli.layouts.video_equivalent
   COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/layouts/run_cases.py --exe $<TARGET_FILE:smpl-export>
           --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases video --equivalent
           --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_video_equivalent)
 set_tests_properties(cli.layouts.video_equivalent PROPERTIES LABELS web)
+# The video cases through the layout decoders (WHAM, VIBE, PHALP, GVHMR, TRAM, ROMP/BEV, EasyMocap,
+# SMPLer-X): exports, notes, refusals, the sidecar's clip source, three.js vs numpy at 1e-6 m.
+add_test(NAME cli.layouts.video
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/layouts/run_cases.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases video
+          --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_video)
+set_tests_properties(cli.layouts.video PROPERTIES LABELS web)
 
 # The motion-generation, hand and camera-frame layouts (docs/motions.md "Motion-generation
 # tools, hand and camera-frame fits"): every case of tests/cli/layouts/generation_cases.py

@@ -105,7 +105,9 @@ TEST(VideoLayouts, FixturesAreReadByTheirRowsOnly) {
                                                        {"romp/video_results.npz", "romp"},
                                                        {"bev/video_results.npz", "romp"},
                                                        {"easymocap/smpl/000007.json", "easymocap"},
-                                                       {"smplerx/smplx/00003_0.npz", "smplerx"}};
+                                                       {"smplerx/smplx/00003_0.npz", "smplerx"},
+                                                       {"tram/seq/hps/hps_track_0.npy", "tram"},
+                                                       {"tram_cam/hps_track_0.npy", "tram"}};
   for (const auto& [file, row] : files) {
     Result<MotionFile> f = readMotionFile(kVideo + file);
     ASSERT_TRUE(f.ok()) << f.message();
