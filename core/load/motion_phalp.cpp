@@ -70,7 +70,9 @@ Status readDetection(const DataNode& frame, size_t i, const std::string& ctx, De
     d->betas.insert(d->betas.end(), b->data.begin(), b->data.end());
   }
   Array scratch;
-  const Array* cam = video_rows::elementOf(frame.get("camera"), i, &scratch);
+  Result<const Array*> element = video_rows::elementOf(frame.get("camera"), i, ctx, &scratch);
+  if (!element) return element.error();
+  const Array* cam = *element;
   if (!cam || cam->size() != 3 || cam->data.size() != 3)
     return makeError(ctx + ": 'camera' has no (3,) translation for this entry");
   if (Status s = motion_detail::checkNumbers(*cam, ctx, "camera"); !s) return s;
@@ -94,13 +96,15 @@ Status readFrame(const DataNode& frame, const std::string& name, const std::stri
                      " entries for " + std::to_string(n) + " in 'tid'");
   for (size_t i = 0; i < n; ++i) {
     Array a, b;
-    const Array* id = video_rows::elementOf(tid, i, &a);
-    const Array* late = video_rows::elementOf(since, i, &b);
-    if (!id || id->data.size() != 1 || !late || late->data.size() != 1)
+    Result<const Array*> id = video_rows::elementOf(tid, i, ctx, &a);
+    Result<const Array*> late = video_rows::elementOf(since, i, ctx, &b);
+    if (!id) return id.error();
+    if (!late) return late.error();
+    if (!*id || (*id)->data.size() != 1 || !*late || (*late)->data.size() != 1)
       return makeError(ctx + ": 'tid' / 'tracked_time' entry " + std::to_string(i) +
                        " is not a number");
-    if (late->data[0] != 0) continue;  // not detected here: holds its last detection
-    Result<std::string> key = video_rows::idText(id->data[0], ctx, "tid");
+    if ((*late)->data[0] != 0) continue;  // not detected here: holds its last detection
+    Result<std::string> key = video_rows::idText((*id)->data[0], ctx, "tid");
     if (!key) return key.error();
     Detections& d = (*tracks)[*key];
     if (Status s = readDetection(frame, i, ctx + " track " + *key, &d); !s) return s;

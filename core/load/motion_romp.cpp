@@ -68,11 +68,19 @@ Status firstPersons(const DataNode& results, const std::string& path, Person* p)
     for (int k = 0; k < 3; ++k) {
       DataNode row;
       row.kind = DataNode::Kind::Array;
-      const Array* a = video_rows::elementOf(frame.get(keys[k]), 0, &row.array);
+      Result<const Array*> element = video_rows::elementOf(frame.get(keys[k]), 0, path, &row.array);
+      if (!element) return element.error();
+      const Array* a = *element;
       if (!a)
         return makeError(path + ": frame '" + printable(results.keys[order[pos]], 64) + "': '" +
                          keys[k] + "' has no row for person 0");
-      if (a != &row.array) row.array = *a;
+      if (a != &row.array) {  // a List child: copied, charged first
+        if (Status s = row.array.charge.add(a->data.size() * sizeof(double), path, "a row"); !s)
+          return s;
+        row.array.shape = a->shape;
+        row.array.dtype = a->dtype;
+        row.array.data = a->data;
+      }
       rows[k].children.push_back(std::move(row));
     }
     p->frames.push_back(static_cast<int64_t>(pos));

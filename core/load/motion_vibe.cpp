@@ -23,18 +23,10 @@ bool matchesVibe(const DataNode& root) {
 Status decodePerson(const DataNode& d, const std::string& id, const LayoutInput& in, Motion* m) {
   const std::string ctx = in.path + ": track " + printable(id, 64);
   m->track = id;
-  video_rows::Rows pose, betas, frames;
+  video_rows::Rows pose, frames;
   if (Status s = video_rows::rowsOf(d.get("pose"), ctx, "pose", &pose); !s) return s;
   if (Status s = video_rows::putSmplPoses(pose.get(), ctx, "pose", m); !s) return s;
-  if (has(d, "betas")) {
-    if (Status s = video_rows::rowsOf(d.get("betas"), ctx, "betas", &betas); !s) return s;
-    const Array& b = betas.get();
-    if (b.shape.size() != 2 || b.shape[0] != static_cast<int64_t>(m->frames.size()))
-      return makeError(ctx + ": 'betas' has shape " + shapeString(b.shape) + "; expected (" +
-                       std::to_string(m->frames.size()) + ",10) like 'pose'");
-    if (Status s = video_rows::putBetas(b, ctx, "betas", "track " + m->track + ": ", m); !s)
-      return s;
-  }
+  if (Status s = video_rows::putTrackBetas(d, "betas", ctx, m); !s) return s;
   if (Status s = video_rows::rowsOf(d.get("frame_ids"), ctx, "frame_ids", &frames); !s) return s;
   Result<std::vector<int64_t>> ids =
       video_rows::frameIds(frames.get(), m->frames.size(), ctx, "frame_ids");

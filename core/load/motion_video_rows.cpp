@@ -42,15 +42,18 @@ size_t countOf(const DataNode* node) {
   return 0;
 }
 
-const Array* elementOf(const DataNode* node, size_t i, Array* scratch) {
-  if (!node || i >= countOf(node)) return nullptr;
+Result<const Array*> elementOf(const DataNode* node, size_t i, const std::string& context,
+                               Array* scratch) {
+  if (!node || i >= countOf(node)) return static_cast<const Array*>(nullptr);
   if (node->isList()) {
     const DataNode& c = node->children[i];
     return c.isArray() && !c.array.isString() ? &c.array : nullptr;
   }
   const Array& a = node->array;
-  if (a.isString()) return nullptr;
+  if (a.isString()) return static_cast<const Array*>(nullptr);
   const size_t each = a.data.size() / static_cast<size_t>(a.shape[0]);
+  scratch->charge.release();
+  if (Status s = scratch->charge.add(each * sizeof(double), context, "a row"); !s) return s.error();
   scratch->shape.assign(a.shape.begin() + 1, a.shape.end());
   scratch->dtype = a.dtype;
   scratch->data.assign(a.data.begin() + i * each, a.data.begin() + (i + 1) * each);
@@ -97,6 +100,18 @@ Status putBetas(const Array& a, const std::string& context, const char* key,
   m->betas = rows->betas;
   if (rows->averaged) m->notes.push_back(note_prefix + betasRowsNote(*rows));
   return Status();
+}
+
+Status putTrackBetas(const DataNode& track, const char* key, const std::string& context,
+                     Motion* m) {
+  if (!track.get(key)) return Status();
+  Rows rows;
+  if (Status s = rowsOf(track.get(key), context, key, &rows); !s) return s;
+  const Array& b = rows.get();
+  if (b.shape.size() != 2 || b.shape[0] != static_cast<int64_t>(m->frames.size()))
+    return makeError(context + ": '" + key + "' has shape " + shapeString(b.shape) +
+                     "; expected (" + std::to_string(m->frames.size()) + ",B) like the poses");
+  return putBetas(b, context, key, m->track.empty() ? "" : "track " + m->track + ": ", m);
 }
 
 Result<std::vector<int64_t>> frameIds(const Array& a, size_t t, const std::string& context,

@@ -34,8 +34,15 @@ Status rowsOf(const DataNode* node, const std::string& context, const char* key,
 size_t countOf(const DataNode* node);
 
 // Element `i` of a per-detection list (a List child, or row i of an Array
-// leaf copied into `scratch`); nullptr when out of range or not numeric.
-const Array* elementOf(const DataNode* node, size_t i, Array* scratch);
+// leaf copied into `scratch`, charged to the memory budget first); nullptr
+// when out of range or not numeric. Error: the budget, naming `context`.
+Result<const Array*> elementOf(const DataNode* node, size_t i, const std::string& context,
+                               Array* scratch);
+
+// The child `key` of a track's dict as per-frame betas rows (T,B), T =
+// m->frames.size(): their mean into m->betas (putBetas, the note prefixed
+// "track <id>: "). Absent: nothing. Errors: a shape other than (T,B).
+Status putTrackBetas(const DataNode& track, const char* key, const std::string& context, Motion* m);
 
 // T frames of SMPL (24 joints) rotations from (T,72) or (T,24,3) axis-angle
 // or (T,24,3,3) row-major matrices into m->frames (allocated here, charged;

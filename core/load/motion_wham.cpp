@@ -27,7 +27,7 @@ Status decodeTrack(const DataNode& d, const std::string& id, const LayoutInput& 
   if (want == SourceParams::Global && !world)
     return makeError(ctx + ": --source-params global: no 'pose_world' in this WHAM track");
   m->track = id;
-  video_rows::Rows pose, trans, betas, frames;
+  video_rows::Rows pose, trans, frames;
   if (Status s = video_rows::rowsOf(d.get(world ? "pose_world" : "pose"), ctx,
                                     world ? "pose_world" : "pose", &pose);
       !s)
@@ -37,15 +37,7 @@ Status decodeTrack(const DataNode& d, const std::string& id, const LayoutInput& 
   const char* trans_key = world ? "trans_world" : "trans";
   if (Status s = video_rows::rowsOf(d.get(trans_key), ctx, trans_key, &trans); !s) return s;
   if (Status s = video_rows::putTranslation(trans.get(), ctx, trans_key, m); !s) return s;
-  if (has(d, "betas")) {
-    if (Status s = video_rows::rowsOf(d.get("betas"), ctx, "betas", &betas); !s) return s;
-    const Array& b = betas.get();
-    if (b.shape.size() != 2 || b.shape[0] != static_cast<int64_t>(m->frames.size()))
-      return makeError(ctx + ": 'betas' has shape " + shapeString(b.shape) + "; expected (" +
-                       std::to_string(m->frames.size()) + ",10) like 'pose'");
-    if (Status s = video_rows::putBetas(b, ctx, "betas", "track " + m->track + ": ", m); !s)
-      return s;
-  }
+  if (Status s = video_rows::putTrackBetas(d, "betas", ctx, m); !s) return s;
   if (Status s = video_rows::rowsOf(d.get("frame_ids"), ctx, "frame_ids", &frames); !s) return s;
   Result<std::vector<int64_t>> ids =
       video_rows::frameIds(frames.get(), m->frames.size(), ctx, "frame_ids");

@@ -162,7 +162,8 @@ TEST(VideoLayouts, WhamShapeErrorsNameTrackAndKey) {
     DataNode value;
     const char* message;
   } cases[] = {
-      {"betas", zeros({2, 10}), "w.pkl: track 3: 'betas' has shape (2,10); expected (3,10)"},
+      {"betas", zeros({2, 10}),
+       "w.pkl: track 3: 'betas' has shape (2,10); expected (3,B) like the poses"},
       {"pose_world", zeros({3, 70}), "w.pkl: track 3: 'pose_world' has shape (3,70); expected"},
       {"trans_world", zeros({2, 3}),
        "w.pkl: track 3: 'trans_world' has shape (2,3); expected (3,3)"},
