@@ -142,13 +142,20 @@ Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
       }
     if (!kind) return makeError(folder + ": " + listing(all));
   }
-  std::string want = *kind == ModelKind::Mano ? "right" : normalizeGender(gender);
+  std::string want = *kind != ModelKind::Mano ? normalizeGender(gender)
+                     : gender == "left"       ? "left"  // a left hand (HaMeR): MANO_LEFT
+                                              : "right";
   std::string note;
   if (want.empty()) {
     note = "gender '" + gender + "' is not female, male or neutral; ";
     want = "neutral";
   }
   const Candidate* c = best(all, *kind, want);
+  if (!c && want == "left") {  // the right hand model, mirrored by the export (hand_side.h)
+    note = "no MANO_LEFT model in " + folder + "; ";
+    c = best(all, *kind, "right");
+    want = "right";
+  }
   if (!c && want != "neutral" && *kind != ModelKind::Mano) {
     note = "no " + want + " " + kindLabel(*kind) + " model in " + folder + "; ";
     c = best(all, *kind, "neutral");

@@ -10,7 +10,9 @@
 //   <kind>/<gender>/model.npz (AMASS's body-model layout, e.g. smplh/male/model.npz)
 // Rules: wanted gender, else neutral with a note; when a name exists as both
 // .pkl and .npz, the authors' default extension wins (smplx: npz; smpl,
-// smplh, mano: pkl); MANO means MANO_RIGHT (smplx.create's default is_rhand).
+// smplh, mano: pkl); MANO means MANO_RIGHT (smplx.create's default is_rhand),
+// or MANO_LEFT for gender "left" (a left-hand motion; MANO_RIGHT with a note
+// when the folder has no left model: the export mirrors it).
 // Without a wanted kind (no motion), the preference is SMPL-X, SMPL-H, SMPL,
 // MANO (the most complete body first), neutral gender.
 #pragma once

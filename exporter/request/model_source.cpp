@@ -51,6 +51,7 @@ Result<ModelPick> ModelSource::forMotion(const Motion* motion) {
   std::optional<ModelKind> kind;
   std::string gender;
   if (motion) kind = motion->model_kind.value_or(motion->layout), gender = motion->gender;
+  if (motion && kind == ModelKind::Mano) gender = motion->hand;  // "left": MANO_LEFT
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!listed_) listing_ = listModelFolder(option_), listed_ = true;

@@ -46,6 +46,12 @@ TEST(ModelFolder, KindSubfoldersAndTheAuthorsExtension) {
   EXPECT_EQ(pick(files, ModelKind::SmplX, "female"), "smplx/SMPLX_FEMALE.npz");
   EXPECT_EQ(pick(files, ModelKind::SmplH, "male"), "smplh/SMPLH_MALE.pkl");
   EXPECT_EQ(pick(files, ModelKind::Mano, ""), "mano/MANO_RIGHT.pkl");
+  EXPECT_EQ(pick(files, ModelKind::Mano, "left"), "mano/MANO_LEFT.pkl");  // a left hand (HaMeR)
+  Result<ModelFileChoice> right =
+      chooseModelFile({"mano/MANO_RIGHT.pkl"}, ModelKind::Mano, "left", "M");
+  ASSERT_TRUE(right.ok()) << right.message();  // mirrored by the export (hand_side.h)
+  EXPECT_EQ(right->path, "mano/MANO_RIGHT.pkl");
+  EXPECT_NE(right->note.find("no MANO_LEFT model in M"), std::string::npos) << right->note;
   EXPECT_EQ(pick(files, std::nullopt, "female"),
             "smplx/SMPLX_FEMALE.npz");  // no motion kind: SMPL-X first
 }
