@@ -132,6 +132,22 @@ TEST(PickleTree, LeavesOwnTheirDataAndSharedObjectsGiveIndependentLeaves) {
   EXPECT_NE(two->leaf("a")->data.data(), two->leaf("b")->data.data());
 }
 
+// A dict of arrays that the memo shares between frames (4D-Humans' held
+// entries) reads the same arrays at every reference, not None after the first.
+TEST(PickleTree, ArraysUnderASharedDictAreReadAtEveryReference) {
+  const std::string bytes = readAll(std::string(SMPL_FIXTURE_DIR) + "/table/shared_subdict.pkl");
+  Result<DataNode> t = tree(bytes);
+  ASSERT_TRUE(t.ok()) << t.message();
+  for (const char* frame : {"a", "b", "c"}) {
+    const DataNode* smpl = t->get(frame) ? t->get(frame)->get("smpl") : nullptr;
+    ASSERT_TRUE(smpl && smpl->isList() && smpl->children.size() == 1) << frame;
+    const Array* orient = smpl->children[0].leaf("global_orient");
+    ASSERT_NE(orient, nullptr) << frame;
+    EXPECT_EQ(orient->shape, (std::vector<int64_t>{1, 3, 3})) << frame;
+    EXPECT_EQ(orient->data[8], 8.0) << frame;
+  }
+}
+
 TEST(PickleTree, DefaultdictAndNumpySubclassesOnlyInTrees) {
   // collections.defaultdict(dict) with one item, as WHAM's results.
   const std::string dd =

@@ -54,9 +54,18 @@ class TreeBuilder {
       if (o.state) ++refs_[o.state];
     }
   }
-  Status node(Ref r, int depth, DataNode* out);
+  // A value and its subtree; under an object the memo shares (referenced
+  // more than once), nothing is moved out: every visit copies.
+  Status node(Ref r, int depth, DataNode* out) {
+    const bool shared = refs_[r] > 1;
+    shared_ += shared;
+    Status st = visit(r, depth, out);
+    shared_ -= shared;
+    return st;
+  }
 
  private:
+  Status visit(Ref r, int depth, DataNode* out);
   Status leaf(Ref r, DataNode* out, bool* got);
   Status dict(Ref r, int depth, DataNode* out);
   Status list(const std::vector<Ref>& items, int depth, DataNode* out);
@@ -77,6 +86,7 @@ class TreeBuilder {
   Heap& heap_;
   std::vector<uint32_t> refs_;  // how many objects refer to each object
   std::vector<Ref> ancestors_;
+  int shared_ = 0;    // shared objects on the path from the root to the value visited
   std::string path_;  // "[0]['smpl'][2]": where the builder is, for errors
 };
 
@@ -85,7 +95,7 @@ class TreeBuilder {
 Status TreeBuilder::leaf(Ref r, DataNode* out, bool* got) {
   PyObj& o = heap_.at(r);
   Array a;
-  if (o.kind == Kind::NdArray && o.array && refs_[r] <= 1) {
+  if (o.kind == Kind::NdArray && o.array && refs_[r] <= 1 && shared_ == 0) {
     a = std::move(*o.array);
     o.array.reset();
     o.kind = Kind::None;  // moved: a second visit (the tree root twice) sees None
@@ -104,7 +114,7 @@ Status TreeBuilder::leaf(Ref r, DataNode* out, bool* got) {
   return Status::success();
 }
 
-Status TreeBuilder::node(Ref r, int depth, DataNode* out) {
+Status TreeBuilder::visit(Ref r, int depth, DataNode* out) {
   PK_TRY(countNode(0));
   *out = DataNode();
   for (Ref a : ancestors_)
