@@ -1,9 +1,9 @@
 #include "cli/betas_file.h"
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/io/file_io.h"
 #include "core/io/npy.h"
 #include "core/io/npz.h"
 #include "core/load/betas_rows.h"
@@ -19,13 +19,16 @@ bool endsWith(const std::string& s, const std::string& suffix) {
 }  // namespace
 
 Result<std::vector<double>> readBetasFile(const std::string& path, std::string* note) {
+  // What a betas file is (kBetasInput: .npy/.npz up to 256 MiB, JSON 64 MiB)
+  // is checked from its first bytes and size before it is read.
   if (endsWith(path, ".npy") || endsWith(path, ".npz")) {
     Array a;
     if (endsWith(path, ".npy")) {
-      Result<Array> r = readNpyFile(path);
+      Result<Array> r = readNpyFile(path, kBetasInput);
       if (!r) return r.error();
       a = std::move(*r);
     } else {
+      if (Result<FileFormat> f = checkInputFile(path, kBetasInput); !f) return f.error();
       Result<ArrayDict> d = readNpzFile(path, {"betas"});  // lazy: other members are not read
       if (!d) return d.error();
       auto it = d->find("betas");
@@ -37,9 +40,10 @@ Result<std::vector<double>> readBetasFile(const std::string& path, std::string* 
     if (rows->averaged && note) *note = betasRowsNote(*rows);
     return rows->betas;
   }
-  std::ifstream in(path);
-  if (!in) return makeError(path + ": cannot open");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  Result<std::vector<uint8_t>> text = readFileBytes(path, kBetasInput);
+  if (!text) return text.error();
+  nlohmann::json j = nlohmann::json::parse(text->begin(), text->end(), nullptr,
+                                           /*allow_exceptions=*/false);
   if (j.is_discarded()) return makeError(path + ": not valid JSON");
   if (j.is_object() && j.contains("betas")) j = j["betas"];
   if (!j.is_array())
