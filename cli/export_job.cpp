@@ -128,12 +128,15 @@ void reportMotions(const BodyModel& model, const Settings& s, const ExportJob& j
 }
 
 // The output and its sidecar go together; the sidecar (what produced the
-// output) is renamed last, so it is the commit record (file_io.h).
+// output, and the size and SHA-256 of each file written with it) is renamed
+// last, so it is the commit record (file_io.h).
 Status writeOutputs(const std::string& out, const Writer::Files& files,
-                    const std::string& buffer_path, const std::string& sidecar) {
+                    const std::string& buffer_path, const Asset& asset,
+                    const std::string& producer) {
   std::vector<FileContent> contents = {FileContent{out, files.bytes.data(), files.bytes.size()}};
   if (!buffer_path.empty())
     contents.push_back(FileContent{buffer_path, files.buffer.data(), files.buffer.size()});
+  const std::string sidecar = sidecarJson(asset, producer, contents);
   contents.push_back(FileContent{out + ".smpl.json", sidecar.data(), sidecar.size()});
   return writeFilesTogether(contents);
 }
@@ -149,10 +152,20 @@ Result<std::string> producerHashFor(const Settings& s, const ExportJob& job) {
 
 std::string errorLine(const std::string& verb, const std::string& path,
                       const std::string& message) {
-  // Paths and messages may carry bytes from files or the command line: one printable line.
-  if (message.compare(0, path.size() + 1, path + ":") == 0)
-    return printable("Error " + verb + " " + message, 4096);
-  return printable("Error " + verb + " " + path + ": " + message, 4096);
+  // Paths and messages may carry bytes from files or the command line: one
+  // printable line. A long path loses its middle (each time it appears), and
+  // a line still over 4 KiB loses its middle too: the reason, last, stays.
+  constexpr size_t kPathBytes = 1024, kLineBytes = 4096;
+  const std::string full = printable(path, static_cast<size_t>(-1));
+  const std::string shown = printableMiddle(path, kPathBytes);
+  std::string text = printable(message, static_cast<size_t>(-1));
+  for (size_t at = 0;
+       full != shown && !full.empty() && (at = text.find(full, at)) != std::string::npos;
+       at += shown.size())
+    text.replace(at, full.size(), shown);
+  if (text.compare(0, shown.size() + 1, shown + ":") == 0)
+    return printableMiddle("Error " + verb + " " + text, kLineBytes);
+  return printableMiddle("Error " + verb + " " + shown + ": " + text, kLineBytes);
 }
 
 namespace {
@@ -192,7 +205,7 @@ Result<ExportReport> runExportUnguarded(const BodyModel& model, const Settings& 
   writer_options.buffer_uri = baseName(buffer_path);
   Result<Writer::Files> files = writer->serializeFiles(*asset, writer_options);
   if (!files) return exportFailure(job.out, files.error());
-  if (Status st = writeOutputs(job.out, *files, buffer_path, sidecarJson(*asset, *producer)); !st)
+  if (Status st = writeOutputs(job.out, *files, buffer_path, *asset, *producer); !st)
     return fail(ErrorKind::Write, "saving", job.out, st.message());
   report.options = options;
   report.skin = skinOfAsset(asset->mesh, model.numVertices());

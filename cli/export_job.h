@@ -31,7 +31,10 @@ struct ExportReport {
 };
 
 // "Error <verb> <path>: <reason>", without repeating the path when the reason
-// already starts with it (core errors name their file).
+// already starts with it (core errors name their file). One printable line
+// (core/io/printable.h) of at most 4 KiB: a path over 1 KiB is shortened in
+// its middle wherever it appears, and the reason at the end is always kept
+// ("Error saving /data/aaaa...aaaa/x.glb: cannot create: File name too long").
 std::string errorLine(const std::string& verb, const std::string& path, const std::string& message);
 
 // Returns the report, or an error whose message is the whole line for the
