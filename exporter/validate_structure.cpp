@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "exporter/asset_names.h"
+
 namespace smpl {
 namespace {
 
@@ -144,6 +146,7 @@ Status checkClip(const AnimationClip& c, size_t joints, Eigen::Index targets) {
 }  // namespace
 
 Status validateAssetStructure(const Asset& a) {
+  if (Status st = checkAssetNames(a); !st) return st;  // text every format stores as UTF-8
   if (Status st = checkSkeleton(a.skeleton); !st) return st;
   if (Status st = checkMesh(a.mesh, int(a.skeleton.names.size())); !st) return st;
   for (const AnimationClip& clip : a.animations)
