@@ -145,6 +145,8 @@ Status loadTexcoords(const Arrays& in, BodyModel* m) {
   Result<const Array*> f = in.get("ft", {m->faces.rows(), 3});
   if (!f) return f.error();
   const int64_t u = (*uv)->shape[0];
+  if (Status st = checkTexCoords((*uv)->data.data(), (*uv)->data.size(), in.context, "'vt'"); !st)
+    return st;
   for (double v : (*f)->data)
     if (v < 0 || v >= u || v != std::floor(v))
       return makeError(in.context + ": 'ft' has index " +
