@@ -10,10 +10,11 @@
 #include <thread>
 
 #include "cli/batch_plan.h"
-#include "cli/export_job.h"
 #include "cli/manifest.h"
 #include "cli/sha256.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
+#include "exporter/request/error_line.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
@@ -41,20 +42,42 @@ bool noPoseData(const std::string& motion) {
   }
 }
 
+// ".npz, .smpl, .pkl or .json": the reader table's motion extensions.
+std::string extensionList() {
+  const std::vector<std::string> ext = motionFileExtensions();
+  std::string text;
+  for (size_t i = 0; i < ext.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == ext.size() ? " or " : ", ") + ext[i];
+  return text;
+}
+
 void printHeader(const Settings& s, const BatchPlan& plan) {
   for (const std::string& note : plan.notes) std::printf("note: %s\n", note.c_str());
   for (const std::string& error : plan.errors) std::fprintf(stderr, "%s\n", error.c_str());
   if (plan.listed == 0)
-    std::fprintf(stderr, "Warning: no .npz, .json, .smpl or .pkl motions in %s\n",
-                 s.motion_dir.c_str());
+    std::fprintf(stderr, "Warning: no motions (%s) in %s\n", extensionList().c_str(),
+                 s.request.motion_dir.c_str());
   else if (plan.outputs.empty() && !s.quiet)
     std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index,
-                s.shard_count, plan.listed, s.motion_dir.c_str());
+                s.shard_count, plan.listed, s.request.motion_dir.c_str());
+}
+
+// The request of one planned output: its motion, output and recorded hash;
+// its stale temporaries were removed by planBatch.
+ExportRequest jobRequest(const ExportRequest& base, const PlannedOutput& p, bool one_thread) {
+  ExportRequest job = base;
+  job.out = p.out;
+  job.motions = {p.motion};
+  job.producer_hash = p.producer_hash;
+  job.clean_temporaries = false;
+  if (one_thread) job.threads = 1;
+  return job;
 }
 
 }  // namespace
 
-BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& plan) {
+BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& plan,
+                      const RunInputs& inputs) {
   BatchSummary summary;
   std::error_code ec;
   fs::create_directories(s.out_dir, ec);
@@ -62,14 +85,13 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   summary.failed = static_cast<int>(plan.errors.size());
   const std::vector<PlannedOutput>& motions = plan.outputs;
   std::vector<ManifestEntry> manifest(motions.size());
-  const bool record = !s.manifest.empty();
-  const unsigned threads =
-      s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency());
+  const bool record = !s.request.manifest.empty();
+  const unsigned threads = s.request.threads ? static_cast<unsigned>(*s.request.threads)
+                                             : std::max(1u, std::thread::hardware_concurrency());
   const size_t workers = std::min<size_t>(threads, std::max<size_t>(1, motions.size()));
   // Files in parallel, or one file's FBX arrays in parallel, never both:
   // `workers` jobs each compressing on `threads` cores would run threads^2.
-  Settings job_settings = s;
-  if (workers > 1) job_settings.writer_options.threads = 1;
+  const bool one_thread = workers > 1;
   std::atomic<size_t> next{0};
   std::mutex print;
   auto worker = [&] {
@@ -99,12 +121,9 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
           std::printf("note: skipped %s: %s\n", entry.input.c_str(), entry.message.c_str());
         continue;
       }
-      Result<ModelPick> pick =
-          models.forMotion(motions[i].motion);  // per motion: a folder picks by gender
-      const ExportJob job{out, {motions[i].motion}, false, motions[i].producer_hash};
+      // Per motion: a folder picks the model by the decoded motion's kind and gender.
       Result<ExportReport> r =
-          !pick ? Result<ExportReport>(makeError(errorLine("loading", s.model, pick.message())))
-                : runExport(*pick->model, job_settings, job);
+          runExportJob(jobRequest(s.request, motions[i], one_thread), inputs, &models);
       if (r) describeOutput(out, record, &entry);
       entry.status = r ? "converted" : "failed";
       entry.message = r ? "" : r.message();
@@ -118,8 +137,8 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
       ++summary.converted;
       if (s.quiet) continue;
       std::printf("%s: %d frames, %.2f MB, %.0f ms, model %s%s%s\n", out.c_str(), r->frames,
-                  r->bytes / 1e6, r->seconds * 1e3, pick->path.c_str(),
-                  pick->note.empty() ? "" : "; note: ", pick->note.c_str());
+                  r->bytes / 1e6, r->seconds * 1e3, r->model_path.c_str(),
+                  r->model_note.empty() ? "" : "; note: ", r->model_note.c_str());
       for (const std::string& note : r->notes) std::printf("note: %s\n", note.c_str());
     }
   };
@@ -129,8 +148,8 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n",
               summary.converted, summary.skipped, summary.failed, summary.no_poses);
   if (record)
-    if (Status st = writeManifest(s.manifest, manifest); !st) {
-      std::fprintf(stderr, "%s\n", errorLine("saving", s.manifest, st.message()).c_str());
+    if (Status st = writeManifest(s.request.manifest, manifest); !st) {
+      std::fprintf(stderr, "%s\n", errorLine("saving", s.request.manifest, st.message()).c_str());
       summary.manifest_failed = true;
     }
   return summary;

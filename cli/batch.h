@@ -10,9 +10,9 @@
 #pragma once
 
 #include "cli/batch_plan.h"
-#include "cli/model_source.h"
 #include "cli/settings.h"
-#include "core/body_model.h"
+#include "exporter/request/model_source.h"
+#include "exporter/request/run_request.h"
 
 namespace smpl {
 
@@ -22,9 +22,12 @@ struct BatchSummary {
   bool manifest_failed = false;                // --manifest could not be written
 };
 
-// Converts `plan` (from planBatch with the same settings); prints its notes
-// and per-entry errors (counted as failed) and one line per output. `models`
-// gives each motion its model (one file, or per motion from a folder).
-BatchSummary runBatch(ModelSource& models, const Settings& settings, const BatchPlan& plan);
+// Converts `plan` (from planBatch with the same settings): one export job per
+// output (exporter/request/run_request.h runExportJob, the settings' request
+// with that output and motion), sharing `inputs` (loadRunInputs) and
+// `models` (one file, or per motion from a folder). Prints the plan's notes
+// and per-entry errors (counted as failed) and one line per output.
+BatchSummary runBatch(ModelSource& models, const Settings& settings, const BatchPlan& plan,
+                      const RunInputs& inputs);
 
 }  // namespace smpl

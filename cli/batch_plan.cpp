@@ -8,21 +8,26 @@
 #include <set>
 
 #include "cli/batch_shard.h"
-#include "cli/output_guard.h"
-#include "cli/producer.h"
 #include "core/io/file_io.h"
 #include "core/io/sha256.h"
 #include "core/io/utf8.h"
+#include "core/load/motion_layout.h"
 #include "exporter/metadata_json.h"
+#include "exporter/request/error_line.h"
+#include "exporter/request/producer.h"
+#include "exporter/request/run_paths.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
+// A name with a motion extension of the reader table (core/load/motion_layout.h),
+// not one of our sidecars.
 bool isMotionName(const std::string& name) {
-  return (hasSuffix(name, ".npz") || hasSuffix(name, ".json") || hasSuffix(name, ".smpl") ||
-          hasSuffix(name, ".pkl")) &&
-         !hasSuffix(name, ".smpl.json");
+  if (hasSuffix(name, ".smpl.json")) return false;
+  for (const std::string& ext : motionFileExtensions())
+    if (hasSuffix(name, ext)) return true;
+  return false;
 }
 
 // The motions in `dir`; unreadable entries become errors/notes of `plan`.
@@ -88,7 +93,10 @@ bool upToDate(const Settings& s, const PlannedOutput& p) {
   Result<std::vector<uint8_t>> bytes = readFileBytes(sidecar);
   if (!bytes) return false;
   const std::string text(bytes->begin(), bytes->end());
-  return producerHashOf(text) == p.producer_hash && outputsAsRecorded(outputsOf(s, p.out), text);
+  std::vector<std::string> outputs = {p.out};  // the output and a .gltf's buffer
+  if (const std::string bin = gltfBufferPath(s.request, p.out); !bin.empty())
+    outputs.push_back(bin);
+  return producerHashOf(text) == p.producer_hash && outputsAsRecorded(outputs, text);
 }
 
 Status checkCollisions(const std::vector<PlannedOutput>& outputs) {
@@ -112,7 +120,7 @@ void keepShard(const Settings& s, BatchPlan* plan) {
   std::vector<std::string> all;
   for (const PlannedOutput& p : plan->outputs) all.push_back(p.motion);
   const std::vector<std::string> share =
-      shardMotions(all, s.motion_dir, s.shard_index, s.shard_count);
+      shardMotions(all, s.request.motion_dir, s.shard_index, s.shard_count);
   const std::set<std::string> keep(share.begin(), share.end());
   std::vector<PlannedOutput> kept;
   for (const PlannedOutput& p : plan->outputs)
@@ -124,12 +132,14 @@ void keepShard(const Settings& s, BatchPlan* plan) {
 
 Result<BatchPlan> planBatch(const Settings& s) {
   BatchPlan plan;
-  Result<std::vector<std::string>> motions = listMotions(s.motion_dir, &plan);
+  const WriterFormat* format = outputFormat(s);  // not null: beginRun checked --format
+  Result<std::vector<std::string>> motions = listMotions(s.request.motion_dir, &plan);
   if (!motions) return motions.error();
   for (const std::string& m : *motions) {
     PlannedOutput p;
     p.motion = m;
-    p.out = (fs::path(s.out_dir) / (fs::path(m).stem().string() + "." + s.format)).string();
+    p.out =
+        (fs::path(s.out_dir) / (fs::path(m).stem().string() + format->extensions.front())).string();
     plan.outputs.push_back(p);
   }
   if (Status st = checkCollisions(plan.outputs); !st) return usage(st.message());
@@ -137,15 +147,14 @@ Result<BatchPlan> planBatch(const Settings& s) {
   keepShard(s, &plan);
   std::vector<std::string> outs, names;
   for (const PlannedOutput& p : plan.outputs) {
-    for (const std::string& o : outputsOf(s, p.out)) {
-      outs.push_back(o);
-      names.push_back(baseName(o));
-    }
-    names.push_back(baseName(p.out) + ".smpl.json");
+    outs.push_back(p.out);
+    for (const std::string& name : {p.out, p.out + ".smpl.json", gltfBufferPath(s.request, p.out)})
+      if (!name.empty()) names.push_back(baseName(name));
   }
-  if (Status st = checkOutputsAreNotInputs(outs, runInputs(s, *motions)); !st)
+  // Every path of the run (every listed motion, this share's outputs, the manifest).
+  if (Status st = checkRunPaths(runPaths(s.request, outs, *motions)); !st)
     return usage(st.message());
-  Result<ContentHash> base = producerBase(s);
+  Result<ContentHash> base = producerBase(s.request);
   if (!base)
     return makeError("Error loading " + base.message(), ErrorKind::Load);  // names the input file
   removeStaleTemps(s.out_dir, names);

@@ -1,7 +1,9 @@
 // Batch planning (--motion-dir DIR --out-dir DIR), done before any work:
-// list the motions, map each to its output, refuse name collisions and
-// outputs that are inputs, remove stale temporaries of these outputs, and
-// decide which outputs are up to date. runBatch (batch.h) then converts.
+// list the motions, map each to its output, refuse name collisions, run the
+// path guard over every path of the run (exporter/request/run_paths.h:
+// outputs that are inputs, directories or devices, the manifest), remove
+// stale temporaries of these outputs, and decide which outputs are up to date. runBatch (batch.h)
+// then converts.
 //
 // Rules (README "Batch mode"):
 // - DIR missing or not a folder: error naming it, exit 2.
@@ -25,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/export_job.h"
 #include "cli/settings.h"
+#include "core/result.h"
 
 namespace smpl {
 

@@ -1,13 +1,16 @@
 #include "cli/options.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "cli/settings.h"
-#include "core/load/validate_inputs.h"
 #include "core/memory_budget.h"
 #include "core/number_text.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 namespace {
@@ -48,18 +51,6 @@ Result<int> choice(const std::string& value, const char* option, std::vector<con
   return usageError(std::string(option) + ": expected " + expected + ", got '" + value + "'");
 }
 
-Result<double> rate(const std::string& value, const char* option, double lo, double hi,
-                    const char* lo_bracket) {
-  Result<double> v = parseNumber(value, option);
-  if (!v || *v < lo || *v > hi || (*lo_bracket == '(' && *v == lo)) {
-    std::ostringstream range;
-    range << lo_bracket << lo << ", " << hi << "]";
-    return usageError(std::string(option) + ": expected a rate in " + range.str() + ", got '" +
-                      value + "'");
-  }
-  return *v;
-}
-
 // "v,v,...": each value a decimal number; blanks around a value are allowed
 // ("0.5, -1.2" as a shell user types it), blanks inside one are not.
 Result<std::vector<double>> parseList(const std::string& text, const std::string& option) {
@@ -77,25 +68,39 @@ Result<std::vector<double>> parseList(const std::string& text, const std::string
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  if (Status st = checkCoefficients(values, option, "value"); !st) return usageError(st.message());
   return values;
 }
 
-// "A:B" (B exclusive, either may be empty) -> frame range.
-Status parseFrames(const std::string& value, AnimationOptions* a) {
+// "A:B" (B exclusive, either may be empty) -> frame range (the request
+// checks A >= 0 and B > A).
+Status parseFrames(const std::string& value, ExportRequest* r) {
   size_t colon = value.find(':');
   if (colon == std::string::npos) return usageError("--frames: expected A:B, got '" + value + "'");
   const std::string first = value.substr(0, colon), end = value.substr(colon + 1);
   if (!first.empty()) {
     Result<int> v = parseInt(first, "--frames");
-    if (!v || *v < 0) return usageError("--frames: bad start '" + first + "'");
-    a->first_frame = *v;
+    if (!v) return usageError("--frames: bad start '" + first + "'");
+    r->first_frame = *v;
   }
   if (!end.empty()) {
     Result<int> v = parseInt(end, "--frames");
-    if (!v || *v <= a->first_frame)
-      return usageError("--frames: end must be after start in '" + value + "'");
-    a->end_frame = *v;
+    if (!v) return usageError("--frames: bad end '" + end + "'");
+    r->end_frame = *v;
+  }
+  return Status();
+}
+
+// A number into an optional request field.
+template <class T>
+Status numberInto(const std::string& value, const char* option, std::optional<T>* target) {
+  if constexpr (std::is_same_v<T, int>) {
+    Result<int> v = parseInt(value, option);
+    if (!v) return v.error();
+    *target = *v;
+  } else {
+    Result<double> v = parseNumber(value, option);
+    if (!v) return v.error();
+    *target = *v;
   }
   return Status();
 }
@@ -114,6 +119,8 @@ Status parseShard(const std::string& value, Settings* s) {
 
 using S = Settings;
 using V = const std::string&;
+// Each apply function stores its value into the request (s->request) or, for
+// what only the command line has, into the settings; syntax only.
 
 const std::vector<OptionSpec> kOptions = {
     {"--model", nullptr, "PATH|DIR|builtin", Applies::Any, "",
@@ -121,26 +128,26 @@ const std::vector<OptionSpec> kOptions = {
      "per motion by kind and gender: SMPL_FEMALE.pkl, smplx/SMPLX_MALE.npz, AMASS "
      "smplh/male/model.npz, "
      "...); or the built-in demo body",
-     [](V v, S* s) { return s->model = v, Status(); }, Hashed::Content},
+     [](V v, S* s) { return s->request.model = v, Status(); }, Hashed::Content},
     {"--out", nullptr, "FILE", Applies::Single, nullptr,
-     "output; format from the extension (.glb, .gltf, .fbx). Also writes FILE.smpl.json (metadata)",
-     [](V v, S* s) { return s->out = v, Status(); }, Hashed::No},
+     "output; format from the extension ({extensions}). Also writes FILE.smpl.json (metadata)",
+     [](V v, S* s) { return s->request.out = v, Status(); }, Hashed::No},
     {"--betas", nullptr, "v,v,...", Applies::Any, nullptr,
      "shape coefficients (fewer than the model has are zero-padded)",
      [](V v, S* s) {
        Result<std::vector<double>> list = parseList(v, "--betas");
        if (!list) return Status(list.error());
-       return s->export_options.betas = *list, Status();
+       return s->request.betas = *list, Status();
      }},
     {"--betas-file", nullptr, "FILE", Applies::Any, nullptr,
      "betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas: identical rows -> that "
      "row, else their mean (a note gives the deviation)",
-     [](V v, S* s) { return s->betas_file = v, Status(); }, Hashed::Content},
+     [](V v, S* s) { return s->request.betas_file = v, Status(); }, Hashed::Content},
     {"--expression", nullptr, "v,v,...", Applies::Any, nullptr, "SMPL-X expression coefficients",
      [](V v, S* s) {
        Result<std::vector<double>> list = parseList(v, "--expression");
        if (!list) return Status(list.error());
-       return s->export_options.expression = *list, Status();
+       return s->request.expression = *list, Status();
      }},
     {"--max-influences", nullptr, "N|all", Applies::Any, nullptr,
      "skin influences per vertex, 1..K (the model's joints) or all (default 4); glTF writes "
@@ -149,13 +156,8 @@ const std::vector<OptionSpec> kOptions = {
      "as "
      "the model's vertices use",
      [](V v, S* s) {
-       if (v == "all") return s->export_options.max_influences = kAllInfluences, Status();
-       Result<int> n = parseInt(v, "--max-influences");
-       if (!n) return Status(n.error());
-       if (*n < 1)
-         return Status(
-             usageError("--max-influences: expected a count >= 1 or 'all', got '" + v + "'"));
-       return s->export_options.max_influences = *n, Status();
+       if (v == "all") return s->request.all_influences = true, Status();
+       return intInto(v, "--max-influences", &s->request.max_influences);
      }},
     {"--skin-weights", nullptr, "truncated|optimized", Applies::Any, nullptr,
      "truncated: the N largest weights, renormalised; optimized (default): the best-fitting N "
@@ -164,7 +166,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--skin-weights", {"truncated", "optimized"});
        if (!c) return Status(c.error());
-       return s->export_options.skin_weights =
+       return s->request.skin_weights =
                   *c == 0 ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized,
               Status();
      }},
@@ -173,7 +175,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--correctives", {"all", "none"});
        if (!c) return Status(c.error());
-       return s->export_options.correctives = *c == 0, Status();
+       return s->request.correctives = *c == 0, Status();
      }},
     {"--corrective-weights", nullptr, "signed|unit|split", Applies::Any, nullptr,
      "signed: weight = pose feature f, in [-2, 1] (default without --motion);\n"
@@ -189,62 +191,53 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        const CorrectiveEncoding e[] = {CorrectiveEncoding::Signed, CorrectiveEncoding::Unit,
                                        CorrectiveEncoding::Split};
-       return s->export_options.encoding = e[*c], Status();
+       return s->request.encoding = e[*c], Status();
      }},
     {"--corrective-basis", nullptr, "K", Applies::Any, nullptr,
      "replace the corrective targets by K principal components of posedirs (weights = C f; C in "
      "the "
      "metadata; runtime scripts apply it)",
-     [](V v, S* s) {
-       return intInto(v, "--corrective-basis", &s->export_options.corrective_basis);
-     }},
-    {"--corrective-epsilon", nullptr, "M", Applies::Gltf, nullptr,
+     [](V v, S* s) { return intInto(v, "--corrective-basis", &s->request.corrective_basis); }},
+    {"--corrective-epsilon", nullptr, "M", Applies::Format, nullptr,
      "glTF: drop morph deltas up to M metres, write sparse accessors",
      [](V v, S* s) {
        Result<double> m = parseNumber(v, "--corrective-epsilon");
-       if (!m || *m < 0 || *m > 0.01)
-         return Status(
-             usageError("--corrective-epsilon: expected metres in [0, 0.01], got '" + v + "'"));
-       return s->writer_options.morph_epsilon = *m, Status();
+       if (!m) return Status(m.error());
+       return s->request.corrective_epsilon = *m, Status();
      }},
-    {"--quantize-morphs", nullptr, nullptr, Applies::Gltf, nullptr,
+    {"--quantize-morphs", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: int16 morph deltas (KHR_mesh_quantization)",
-     [](V, S* s) { return s->writer_options.quantize_morphs = true, Status(); }},
-    {"--draco", nullptr, nullptr, Applies::Gltf, nullptr,
+     [](V, S* s) { return s->request.quantize_morphs = true, Status(); }},
+    {"--draco", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
-     [](V, S* s) { return s->writer_options.draco = true, Status(); }},
-    {"--gltf-embed", nullptr, nullptr, Applies::Gltf, nullptr,
+     [](V, S* s) { return s->request.draco = true, Status(); }},
+    {"--gltf-embed", nullptr, nullptr, Applies::Format, nullptr,
      ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); "
      "default: the "
      "buffer is FILE.bin beside FILE.gltf (written and replaced together with it)",
-     [](V, S* s) { return s->gltf_embed = true, Status(); }},
+     [](V, S* s) { return s->request.gltf_embed = true, Status(); }},
     {"--shape-keys", nullptr, "N", Applies::Any, nullptr,
      "also export the first N shape directions as morph targets shape_<i>",
-     [](V v, S* s) { return intInto(v, "--shape-keys", &s->export_options.shape_keys); }},
+     [](V v, S* s) { return intInto(v, "--shape-keys", &s->request.shape_keys); }},
     {"--expression-keys", nullptr, "N", Applies::Any, nullptr,
      "also export the first N expression directions (SMPL-X) as expr_<i>",
-     [](V v, S* s) { return intInto(v, "--expression-keys", &s->export_options.expression_keys); }},
+     [](V v, S* s) { return intInto(v, "--expression-keys", &s->request.expression_keys); }},
     {"--uv", nullptr, "OBJ|NPY|none", Applies::Any, nullptr,
      "UVs (seams split vertices). Default: the model file's own vt/ft if it has them (SMPL-X "
      "release). OBJ sharing the model's vertex order, or a numpy pair <stem>_uv.npy (U,2) + "
      "<stem>_ft.npy (F,3) (give either); none: no UVs",
-     [](V v, S* s) { return s->export_options.uv_obj = v, Status(); }, Hashed::Content},
+     [](V v, S* s) { return s->request.uv = v, Status(); }, Hashed::Content},
     {"--name", nullptr, "NAME", Applies::Any, nullptr, "mesh name (default body)",
-     [](V v, S* s) { return s->export_options.name = v, Status(); }},
+     [](V v, S* s) { return s->request.name = v, Status(); }},
     {"--dmpl", nullptr, "FILE|DIR", Applies::Any, nullptr,
      "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
      "--motion at weight 0. DIR: per motion gender, DIR/dmpls/<gender>/model.npz or "
      "DIR/<gender>/model.npz (AMASS layout)",
-     [](V v, S* s) { return s->dmpl = v, Status(); }, Hashed::Content},
+     [](V v, S* s) { return s->request.dmpl = v, Status(); }, Hashed::Content},
     {"--dmpl-count", nullptr, "N", Applies::Any, nullptr,
      "keep the first N DMPL directions (default all)",
-     [](V v, S* s) {
-       Status st = intInto(v, "--dmpl-count", &s->dmpl_count);
-       if (st && s->dmpl_count < 1)
-         return Status(usageError("--dmpl-count: expected N >= 1, got '" + v + "'"));
-       return st;
-     }},
+     [](V v, S* s) { return numberInto(v, "--dmpl-count", &s->request.dmpl_count); }},
     {"--dmpl-joints", nullptr, "fixed|regressed", Applies::Any, nullptr,
      "fixed (default): keep the betas-only skeleton (the cost is printed); regressed: animate "
      "joint "
@@ -252,31 +245,25 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--dmpl-joints", {"fixed", "regressed"});
        if (!c) return Status(c.error());
-       return s->dmpl_regressed_joints = *c == 1, Status();
+       return s->request.dmpl_regressed_joints = *c == 1, Status();
      }},
-    {"--fbx-units", nullptr, "m|cm", Applies::Fbx, nullptr, "FBX geometry units (default m)",
+    {"--fbx-units", nullptr, "m|cm", Applies::Format, nullptr, "FBX geometry units (default m)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-units", {"m", "cm"});
        if (!c) return Status(c.error());
-       return s->writer_options.fbx_units = v, Status();
+       return s->request.fbx_units = v, Status();
      }},
-    {"--fbx-version", nullptr, "7400|7500", Applies::Fbx, nullptr,
+    {"--fbx-version", nullptr, "7400|7500", Applies::Format, nullptr,
      "FBX binary version (default 7400)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-version", {"7400", "7500"});
        if (!c) return Status(c.error());
-       return s->writer_options.fbx_version = *c == 0 ? 7400 : 7500, Status();
+       return s->request.fbx_version = *c == 0 ? 7400 : 7500, Status();
      }},
-    {"--fbx-compress-level", nullptr, "N", Applies::Fbx, nullptr,
+    {"--fbx-compress-level", nullptr, "N", Applies::Format, nullptr,
      "array compression, as the FBX SDK's EXP_FBX_COMPRESS_LEVEL: 0 = stored uncompressed "
      "(fastest to write and read, largest), 1..12 = deflate level (default 1)",
-     [](V v, S* s) {
-       Status st = intInto(v, "--fbx-compress-level", &s->writer_options.fbx_compress_level);
-       if (st &&
-           (s->writer_options.fbx_compress_level < 0 || s->writer_options.fbx_compress_level > 12))
-         return Status(usageError("--fbx-compress-level: expected 0..12, got '" + v + "'"));
-       return st;
-     }},
+     [](V v, S* s) { return intInto(v, "--fbx-compress-level", &s->request.fbx_compress_level); }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` "
@@ -285,65 +272,58 @@ const std::vector<OptionSpec> kOptions = {
      "ExPose), "
      "AIST++ .pkl):",
      "bake FILE as an animation (repeatable: one animation each)",
-     [](V v, S* s) { return s->motions.push_back(v), Status(); }, Hashed::Content},
+     [](V v, S* s) { return s->request.motions.push_back(v), Status(); }, Hashed::Content},
     {"--source-fps", nullptr, "R", Applies::Motion, nullptr,
      "the motion's frame rate: overrides a stored one; without it a file that stores none is read "
      "at 30 fps (AIST++: 60) and a note says so",
-     [](V v, S* s) {
-       Result<double> r = rate(v, "--source-fps", 1, 1000, "[");
-       if (!r) return Status(r.error());
-       return s->source_fps = *r, Status();
-     }},
+     [](V v, S* s) { return numberInto(v, "--source-fps", &s->request.source_fps); }},
     {"--flat-hand-mean", nullptr, nullptr, Applies::Motion, nullptr,
      "fit hand poses (PCA or 45-d axis-angle) are relative to the flat hand: the model's "
      "hands_mean "
      "is not added (the authors' default adds it)",
-     [](V, S* s) { return s->flat_hand_mean = true, Status(); }},
+     [](V, S* s) { return s->request.flat_hand_mean = true, Status(); }},
     {"--fps", nullptr, "F", Applies::Motion, nullptr,
      "resample to F frames per second (slerp/lerp; default: the motion's rate)",
-     [](V v, S* s) {
-       Result<double> r = rate(v, "--fps", 0, 1000, "(");
-       if (!r) return Status(r.error());
-       return s->animation.fps = *r, Status();
-     }},
+     [](V v, S* s) { return numberInto(v, "--fps", &s->request.fps); }},
     {"--frames", nullptr, "A:B", Applies::Motion, nullptr,
      "bake source frames A (inclusive) to B (exclusive), counted in the motion file before any "
      "resampling; either may be empty (0:300 = the first 300 frames, 100: = from frame 100 on). "
      "A motion shorter than B is baked to its end with a note",
-     [](V v, S* s) { return parseFrames(v, &s->animation); }},
+     [](V v, S* s) { return parseFrames(v, &s->request); }},
     {"--betas-from-motion", nullptr, nullptr, Applies::Motion, nullptr,
      "take the betas from the (first) motion and fail if it has none (without --betas/--betas-file "
      "the motion's betas are used when it has them, else zeros)",
-     [](V, S* s) { return s->betas_from_motion = true, Status(); }},
-    {"--up", nullptr, "y|z", Applies::Motion, nullptr,
-     "up axis of the motion's world (default: z for AMASS files, else y); output is always Y-up",
+     [](V, S* s) { return s->request.betas_from_motion = true, Status(); }},
+    {"--up", nullptr, "y|z|-y", Applies::Motion, nullptr,
+     "up axis of the motion's world (default: what the layout says: z for AMASS files, -y for the "
+     "camera frames of video methods, else y); -y: a camera frame (x right, y down, z forward), "
+     "turned upright by a half turn about x; output is always Y-up",
      [](V v, S* s) {
-       Result<int> c = choice(v, "--up", {"y", "z"});
+       Result<int> c = choice(v, "--up", {"y", "z", "-y"});
        if (!c) return Status(c.error());
-       return s->animation.up = *c == 0 ? UpAxis::Y : UpAxis::Z, Status();
+       const UpAxis axes[] = {UpAxis::Y, UpAxis::Z, UpAxis::NegY};
+       return s->request.up = axes[*c], Status();
      }},
     {"--root-motion", nullptr, "keep|in-place", Applies::Motion, nullptr,
      "keep or drop horizontal root motion (default keep)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--root-motion", {"keep", "in-place"});
        if (!c) return Status(c.error());
-       return s->animation.in_place = *c == 1, Status();
+       return s->request.in_place = *c == 1, Status();
      }},
 
     {"--motion-dir", nullptr, "DIR", Applies::Batch, "Batch mode (--motion-dir DIR --out-dir DIR):",
      "convert every .npz/.json/.smpl/.pkl in DIR, in parallel, skipping outputs made from the same "
      "inputs and options (recorded in the sidecar); per-file errors do not stop the batch; files "
      "with no pose keys (AMASS shape.npz, *_stagei.npz) are skipped with a note",
-     [](V v, S* s) { return s->motion_dir = v, Status(); }, Hashed::No},
+     [](V v, S* s) { return s->request.motion_dir = v, Status(); }, Hashed::No},
     {"--out-dir", nullptr, "DIR", Applies::Batch, nullptr,
      "where batch outputs go (DIR/<motion stem>.<format>)",
      [](V v, S* s) { return s->out_dir = v, Status(); }, Hashed::No},
-    {"--format", nullptr, "glb|gltf|fbx", Applies::Batch, nullptr,
-     "batch output format (default glb)",
-     [](V v, S* s) {
-       Result<int> c = choice(v, "--format", {"glb", "gltf", "fbx"});
-       if (!c) return Status(c.error());
-       return s->format = v, Status();
+    {"--format", nullptr, "{formats}", Applies::Batch, nullptr,
+     "batch output format (default {default-format})",
+     [](V v, S* s) {  // one of the writer table's rows: checked by the request
+       return s->request.format = v, Status();
      }},
     {"--force", nullptr, nullptr, Applies::Batch, nullptr,
      "rebuild every output, even when up to date",
@@ -351,14 +331,7 @@ const std::vector<OptionSpec> kOptions = {
     {"--threads", nullptr, "N", Applies::Any, nullptr,
      "worker threads: batch files converted at once (each compressing on one), or the FBX arrays "
      "of a single file compressed at once (default: all cores; the output does not depend on it)",
-     [](V v, S* s) {
-       Status st = intInto(v, "--threads", &s->threads);
-       if (st && (s->threads < 1 || s->threads > 1024))
-         return Status(usageError("--threads: expected 1..1024, got '" + v + "'"));
-       s->writer_options.threads = s->threads;
-       return st;
-     },
-     Hashed::No},
+     [](V v, S* s) { return numberInto(v, "--threads", &s->request.threads); }, Hashed::No},
     {"--shard", nullptr, "I/N", Applies::Batch, nullptr,
      "convert only share I of N (0 <= I < N): the motions sorted by path relative to DIR, the one "
      "at position p belongs to shard p mod N",
@@ -366,7 +339,7 @@ const std::vector<OptionSpec> kOptions = {
     {"--manifest", nullptr, "FILE", Applies::Batch, nullptr,
      "write one JSON line per motion (input, output, bytes, sha256, seconds, status); shards' "
      "manifests concatenate",
-     [](V v, S* s) { return s->manifest = v, Status(); }, Hashed::No},
+     [](V v, S* s) { return s->request.manifest = v, Status(); }, Hashed::No},
 
     {"--memory-limit", nullptr, "SIZE", Applies::Any, "General:",
      "memory budget for everything the run reads or builds, e.g. 512M, 4G (default: the smaller of "
@@ -376,7 +349,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<uint64_t> m = parseMemorySize(v);
        if (!m) return Status(usageError(m.message()));
-       return s->memory_limit = *m, Status();
+       return s->request.memory_limit = *m, Status();
      },
      Hashed::No},
     {"--quiet", "-q", nullptr, Applies::Any, nullptr, "no summary",
@@ -406,14 +379,37 @@ std::vector<std::string> wrap(const std::string& text, size_t width) {
   return lines;
 }
 
+// The writer table's words in usage text (plugins/writer.h): {formats}
+// "glb|gltf|fbx", {default-format} "glb", {extensions} ".glb, .gltf, .fbx",
+// {extensions|} ".glb|.gltf|.fbx".
+std::string expand(std::string text) {
+  std::string names, extensions, bars;
+  for (const WriterFormat& row : writerFormats()) {
+    names += (names.empty() ? "" : "|") + row.name;
+    for (const std::string& ext : row.extensions) {
+      extensions += (extensions.empty() ? "" : ", ") + ext;
+      bars += (bars.empty() ? "" : "|") + ext;
+    }
+  }
+  const std::pair<const char*, std::string> words[] = {
+      {"{formats}", names},
+      {"{default-format}", writerFormats().front().name},
+      {"{extensions}", extensions},
+      {"{extensions|}", bars}};
+  for (const auto& [word, value] : words)
+    for (size_t at; (at = text.find(word)) != std::string::npos;)
+      text.replace(at, std::string(word).size(), value);
+  return text;
+}
+
 // "  --name VALUE" then the help text in a column; a long name puts the help
 // on the next line.
 void appendUsage(const OptionSpec& o, std::string* out) {
   std::string left = std::string("  ") + o.name;
   if (o.alias) left += std::string(", ") + o.alias;
-  if (o.value) left += std::string(" ") + o.value;
+  if (o.value) left += " " + expand(o.value);
   bool first = true;
-  for (const std::string& line : wrap(o.help, kWidth - kHelpColumn)) {
+  for (const std::string& line : wrap(expand(o.help), kWidth - kHelpColumn)) {
     if (first && left.size() + 1 <= kHelpColumn) {
       *out += left + std::string(kHelpColumn - left.size(), ' ') + line + "\n";
     } else {
@@ -434,18 +430,22 @@ const OptionSpec* findOption(const std::string& name) {
   return nullptr;
 }
 
-const char* appliesRule(Applies applies) {
-  switch (applies) {
+std::string appliesRule(const OptionSpec& option) {
+  switch (option.applies) {
     case Applies::Single:
       return "conflicts with batch mode (--motion-dir)";
     case Applies::Motion:
       return "needs --motion or --motion-dir";
     case Applies::Batch:
       return "applies only to batch mode (--motion-dir)";
-    case Applies::Gltf:
-      return "applies only to glTF output (.glb, .gltf)";
-    case Applies::Fbx:
-      return "applies only to .fbx output";
+    case Applies::Format: {
+      std::string extensions;
+      for (const WriterFormat& row : writerFormats())
+        if (std::find(row.options.begin(), row.options.end(), option.name) != row.options.end())
+          for (const std::string& ext : row.extensions)
+            extensions += (extensions.empty() ? "" : ", ") + ext;
+      return "applies only to " + extensions + " output";
+    }
     default:
       return "";
   }
@@ -454,7 +454,8 @@ const char* appliesRule(Applies applies) {
 std::string usageText() {
   std::string out =
       "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose correctives\n\n"
-      "Usage: smpl-export --model PATH|builtin --out FILE.glb|.gltf|.fbx [options]\n"
+      "Usage: smpl-export --model PATH|builtin --out FILE" +
+      expand("{extensions|}") + " [options]\n" +
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
   for (const OptionSpec& o : kOptions) {
     if (o.heading && *o.heading)

@@ -19,11 +19,11 @@ enum class Applies {
   Single,  // one export (--out), not batch mode
   Motion,  // needs --motion or --motion-dir
   Batch,   // only batch mode (--motion-dir)
-  Gltf,    // only glTF output (.glb/.gltf, or --format glb|gltf)
-  Fbx,     // only FBX output (.fbx, or --format fbx)
+  Format,  // only the output formats whose writer row lists it (plugins/writer.h
+           // WriterFormat::options: --draco for .glb/.gltf, --fbx-units for .fbx, ...)
 };
 
-// How an option enters the producer hash (cli/producer.h), which decides
+// How an option enters the producer hash (exporter/request/producer.h), which decides
 // whether an existing output is up to date.
 enum class Hashed {
   Value,    // as given: it changes the bytes written
@@ -49,10 +49,13 @@ const std::vector<OptionSpec>& optionTable();
 // The entry for a name or alias, or nullptr.
 const OptionSpec* findOption(const std::string& name);
 
-// "needs --motion or --motion-dir", "applies only to batch mode (--motion-dir)", ...
-const char* appliesRule(Applies applies);
+// "needs --motion or --motion-dir", "applies only to batch mode (--motion-dir)",
+// "applies only to .glb, .gltf output" (Applies::Format: the extensions of
+// the writer rows that list the option), ...
+std::string appliesRule(const OptionSpec& option);
 
-// The --help text, generated from the table.
+// The --help text, generated from this table and the writer table (the
+// formats' names and extensions: --format's choices, --out's extensions).
 std::string usageText();
 
 }  // namespace smpl

@@ -1,85 +1,51 @@
 // parseSettings: every option through the one table (cli/options.h), then the
-// rules that involve several options. Nothing here touches a file.
+// rules of where options apply. Nothing here touches a file, and no value is
+// range-checked here: the request does that (exporter/request/check_request.h).
 #include "cli/settings.h"
 
 #include <algorithm>
 
 #include "cli/options.h"
 #include "core/io/printable.h"
+#include "exporter/request/check_request.h"
 
 namespace smpl {
 namespace {
 
 Error usageError(const std::string& message) { return makeError(message, ErrorKind::Usage); }
 
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() &&
-         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 bool given(const Settings& s, const char* name) {
   return std::any_of(s.given_options.begin(), s.given_options.end(),
                      [&](const auto& o) { return o.first == name; });
 }
 
+// Whether the output format's writer row lists a format-only option; an
+// unknown format lists everything (the request refuses the format itself).
+bool formatTakes(const WriterFormat* format, const std::string& option) {
+  return !format ||
+         std::find(format->options.begin(), format->options.end(), option) != format->options.end();
+}
+
 // An option used where its table entry says it does not apply.
-Status checkApplies(const Settings& s, bool batch, bool fbx) {
-  const bool animated = !s.motions.empty() || batch;
+Status checkApplies(const Settings& s, bool batch) {
+  const bool animated = !s.request.motions.empty() || batch;
+  const WriterFormat* format = outputFormat(s);
   for (const auto& [name, value] : s.given_options) {
     const OptionSpec* o = findOption(name);
     const bool ok = o->applies == Applies::Any || (o->applies == Applies::Single && !batch) ||
                     (o->applies == Applies::Motion && animated) ||
                     (o->applies == Applies::Batch && batch) ||
-                    (o->applies == Applies::Gltf && !fbx) || (o->applies == Applies::Fbx && fbx);
-    if (!ok) return usageError(name + " " + appliesRule(o->applies));
+                    (o->applies == Applies::Format && formatTakes(format, name));
+    if (!ok) return usageError(name + " " + appliesRule(*o));
   }
   return Status();
 }
 
-// Size options that would otherwise be silently ignored together (issue 13 item 6).
-Status checkSizeOptionPairs(const Settings& s) {
-  const ExportOptions& e = s.export_options;
-  if (given(s, "--corrective-weights") && !e.correctives)
-    return usageError(
-        "--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
-  if (given(s, "--quantize-morphs") && !e.correctives)
-    return usageError(
-        "--quantize-morphs quantizes corrective targets; with --correctives none there are none");
-  if (given(s, "--corrective-epsilon") && !e.correctives && e.shape_keys == 0 &&
-      e.expression_keys == 0)
-    return usageError(
-        "--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
-        "--expression-keys there are none");
-  if (given(s, "--corrective-basis") && e.encoding == CorrectiveEncoding::Split)
-    return usageError(
-        "--corrective-basis conflicts with --corrective-weights split (basis weights are signed or "
-        "unit)");
-  return Status();
-}
-
-Status checkConflicts(const Settings& s) {
-  if (s.model.empty())
-    return usageError("missing --model PATH (use --model builtin for the demo body)");
-  if (given(s, "--betas") && given(s, "--betas-file"))
-    return usageError("--betas and --betas-file conflict: give one");
-  if (s.betas_from_motion && s.betas_given)
-    return usageError("--betas-from-motion conflicts with --betas/--betas-file");
-  if (given(s, "--corrective-basis") && !s.export_options.correctives)
-    return usageError("--corrective-basis conflicts with --correctives none");
-  for (const char* o : {"--dmpl-count", "--dmpl-joints"})
-    if (given(s, o) && s.dmpl.empty()) return usageError(std::string(o) + " needs --dmpl");
-  if (Status st = checkSizeOptionPairs(s); !st) return st;
-  const bool batch = given(s, "--motion-dir") || given(s, "--out-dir");
-  if (batch && (s.motion_dir.empty() || s.out_dir.empty()))
+Status checkRules(const Settings& s) {
+  const bool batch = isBatch(s);
+  if (batch && (s.request.motion_dir.empty() || s.out_dir.empty()))
     return usageError("batch mode needs both --motion-dir and --out-dir");
-  if (!batch && s.out.empty()) return usageError("missing --out FILE (.glb, .gltf or .fbx)");
-  const bool fbx = batch ? s.format == "fbx" : endsWith(s.out, ".fbx");
-  if (!batch && !fbx && !endsWith(s.out, ".glb") && !endsWith(s.out, ".gltf"))
-    return usageError("--out " + s.out + ": unknown format (expected .glb, .gltf or .fbx)");
-  if (Status st = checkApplies(s, batch, fbx); !st) return st;
-  if (given(s, "--gltf-embed") && (batch ? s.format != "gltf" : !endsWith(s.out, ".gltf")))
-    return usageError("--gltf-embed applies only to .gltf output");
-  return Status();
+  return checkApplies(s, batch);
 }
 
 // The option at argv[*i] and its value ("--name=value", "--name value", or a
@@ -111,14 +77,22 @@ Status takeOption(int argc, const char* const* argv, int* i, Settings* s) {
 
 }  // namespace
 
+bool isBatch(const Settings& s) { return given(s, "--motion-dir") || given(s, "--out-dir"); }
+
+const WriterFormat* outputFormat(const Settings& s) {
+  if (!isBatch(s)) return writerFormatForPath(s.request.out);
+  return batchFormat(s.request);
+}
+
 Result<Settings> parseSettings(int argc, const char* const* argv) {
   Settings s;
   for (int i = 1; i < argc; ++i)
     if (Status st = takeOption(argc, argv, &i, &s); !st) return st.error();
-  s.betas_given = given(s, "--betas") || given(s, "--betas-file");
-  s.writer_options.binary = !endsWith(s.out, ".gltf") && s.format != "gltf";
+  for (const auto& option : s.given_options)  // the producer hash: options that change the bytes
+    if (findOption(option.first)->hashed == Hashed::Value)
+      s.request.hashed_options.push_back(option);
   if (s.help || s.version) return s;
-  if (Status st = checkConflicts(s); !st) return st.error();
+  if (Status st = checkRules(s); !st) return st.error();
   return s;
 }
 

@@ -39,6 +39,43 @@ DataNode nodeOf(ArrayDict arrays) {
   return node;
 }
 
+Status chargeNode(DataNode* node, uint64_t bytes, const std::string& context) {
+  return node->array.charge.add(bytes, context, "the tree's nodes");
+}
+
+Result<Array> stackList(const DataNode& list, const std::string& context) {
+  if (list.kind != DataNode::Kind::List)
+    return makeError(context + ": " + describeNode(list) + ", expected a list of arrays");
+  Array out;
+  const std::vector<int64_t>* shape = nullptr;
+  for (size_t i = 0; i < list.children.size(); ++i) {
+    const DataNode& c = list.children[i];
+    if (c.kind != DataNode::Kind::Array || c.array.isString() || !c.array.strings.empty())
+      return makeError(context + ": element " + std::to_string(i) + " is " + describeNode(c) +
+                       ", expected a numeric array");
+    if (shape && c.array.shape != *shape)
+      return makeError(context + ": element " + std::to_string(i) + " has shape " +
+                       shapeString(c.array.shape) + "; element 0 has " + shapeString(*shape));
+    shape = &c.array.shape;
+  }
+  out.shape = {static_cast<int64_t>(list.children.size())};
+  if (!shape) {
+    out.dtype = "<f8";
+    return out;
+  }
+  out.shape.insert(out.shape.end(), shape->begin(), shape->end());
+  out.dtype = list.children[0].array.dtype;
+  const size_t each = list.children[0].array.data.size();
+  if (Status st = out.charge.add(list.children.size() * each * sizeof(double), context,
+                                 "stacking " + std::to_string(list.children.size()) + " arrays");
+      !st)
+    return st.error();
+  out.data.reserve(list.children.size() * each);
+  for (const DataNode& c : list.children)
+    out.data.insert(out.data.end(), c.array.data.begin(), c.array.data.end());
+  return out;
+}
+
 std::string describeNode(const DataNode& node, size_t max_keys) {
   switch (node.kind) {
     case DataNode::Kind::None:

@@ -4,7 +4,7 @@
 // (GVHMR), an `np.save`d dict in a `.npy` (TRAM), an object array inside an
 // `.npz` (ROMP's `results`). Leaves are Arrays (core/array.h: numbers widened
 // to double, C order); inner nodes are dicts (keys in file order) and lists.
-// The container readers build it (core/io/data_tree.h); the motion layouts
+// The container readers build it (core/io/tree/data_tree.h); the motion layouts
 // read it (core/load/motion_layouts.h). It owns its data: each leaf holds
 // its own memory charge (core/memory_budget.h).
 //
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/array.h"
+#include "core/result.h"
 
 namespace smpl {
 
@@ -29,6 +30,9 @@ struct DataNode {
             // numbers)
   };
   Kind kind = Kind::None;
+  // A leaf's data; for a Dict or List, only `array.charge` is used: it holds
+  // the node's own bytes (its children and keys, chargeNode below), so a
+  // whole tree's memory is charged while it lives.
   Array array;
   std::vector<std::string> keys;
   std::vector<DataNode> children;
@@ -50,6 +54,18 @@ ArrayDict arraysOf(const DataNode& dict);
 
 // Wraps a flat dict of arrays as a Dict node (keys sorted, as ArrayDict keeps them).
 DataNode nodeOf(ArrayDict arrays);
+
+// Charges `bytes` of a Dict's or List's own memory (children, keys) to the
+// memory budget, held by node->array.charge; readers call it before they
+// allocate them. Error: "<context>: the tree's nodes would need ...".
+Status chargeNode(DataNode* node, uint64_t bytes, const std::string& context);
+
+// A List of numeric Array leaves of one shape S -> one Array of shape (n, S...)
+// (e.g. 4D-Humans' per-person lists of (1,3,3) global_orient), dtype of the
+// first leaf, charged before it is allocated. An empty List gives shape (0).
+// Errors name `context`: "x.pkl: element 2 is None, expected a numeric array",
+// "x.pkl: element 1 has shape (23,3,3); element 0 has (1,3,3)".
+Result<Array> stackList(const DataNode& list, const std::string& context);
 
 // "dict with keys 'pose', 'trans', 'betas'", "list of 12", "array (T,72)",
 // "None": what a node is, for errors and refusals. Keys and text from the

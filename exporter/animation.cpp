@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 
 #include "core/joint_names.h"
 #include "exporter/dmpl_targets.h"
+#include "exporter/expression_targets.h"
 
 namespace smpl {
 namespace {
@@ -60,6 +62,18 @@ Eigen::Vector3d translationAt(const Motion& m, const Sample& s) {
   return (1 - s.t) * m.translation[s.frame] + s.t * m.translation[s.frame + 1];
 }
 
+// The frame change of the sample (Motion::world_rotation/world_translation):
+// slerp / lerp between source frames; identity when the motion has none.
+void frameChangeAt(const Motion& m, const Sample& s, Eigen::Matrix3d* a, Eigen::Vector3d* b) {
+  *a = Eigen::Matrix3d::Identity();
+  *b = Eigen::Vector3d::Zero();
+  if (m.world_rotation.empty()) return;
+  const int next = std::min(s.frame + 1, static_cast<int>(m.world_rotation.size()) - 1);
+  const Eigen::Quaterniond q0(m.world_rotation[s.frame]), q1(m.world_rotation[next]);
+  *a = q0.normalized().slerp(s.t, q1.normalized()).toRotationMatrix();
+  *b = (1 - s.t) * m.world_translation[s.frame] + s.t * m.world_translation[next];
+}
+
 // Quaternion sign continuity keeps LINEAR interpolation in engines on the short path.
 void makeContinuous(std::vector<Eigen::Quaterniond>* track) {
   for (size_t i = 1; i < track->size(); ++i)
@@ -74,7 +88,6 @@ Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::s
     return makeError(context + ": --frames " + std::to_string(o.first_frame) + ":" +
                      std::to_string(*end) + " is outside the motion's " + std::to_string(total) +
                      " frames");
-  if (o.fps < 0 || o.fps > 1000) return makeError("--fps must be in (0, 1000]");
   return Status();
 }
 
@@ -111,7 +124,42 @@ void fillMorphWeights(const Asset& asset, const std::vector<int>& targets,
         static_cast<float>(basis.scale[k] * w[k] + basis.offset[k]);
 }
 
+// "y", "z", "-y": how the clip's world was turned (the metadata's clip source).
+const char* worldName(UpAxis up, MotionWorld world) {
+  if (up == UpAxis::Auto)
+    up = world == MotionWorld::Z             ? UpAxis::Z
+         : world == MotionWorld::CameraYDown ? UpAxis::NegY
+                                             : UpAxis::Y;
+  return up == UpAxis::Z ? "z" : up == UpAxis::NegY ? "-y" : "y";
+}
+
+// The notes that concern the clip as baked: the expression (what was dropped,
+// what fixed joints cost).
+void clipNotes(const BodyModel& model, const Asset& asset, const Motion& motion,
+               AnimationClip* clip) {
+  const int baked = static_cast<int>(asset.metadata.expression_targets.targets.size());
+  int exported = 0;
+  for (const MorphTarget& t : asset.mesh.morph_targets) exported += t.name.rfind("expr_", 0) == 0;
+  for (std::string& note : expressionNotes(motion, exported, model.numExpressions()))
+    clip->notes.push_back(std::move(note));
+  if (baked == 0 || motion.expression.rows() == 0) return;
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "%s: the expression is baked with the betas-only skeleton (fixed joints); against "
+                "the authors' math, where the joints follow the expression, this costs up to "
+                "%.3f mm",
+                clip->name.c_str(), clip->expression_joint_error * 1000);
+  clip->notes.push_back(text);
+}
+
 }  // namespace
+
+Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world) {
+  const std::string name = worldName(up, world);
+  if (name == "z") return Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  if (name == "-y") return Eigen::Vector3d(1, -1, -1).asDiagonal();
+  return Eigen::Matrix3d::Identity();
+}
 
 Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion,
                                 const std::string& context) {
@@ -152,15 +200,16 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
       !st)
     return st.error();
   const std::vector<Sample> samples = resampleTimes(o.first_frame, end, motion.fps, fps);
-  const bool z_up = o.up == UpAxis::Z || (o.up == UpAxis::Auto && motion.amass);
-  // Z-up capture world -> Y-up output: rotate the whole body -90 degrees about X.
-  const Eigen::Matrix3d up =
-      z_up ? Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix()
-           : Eigen::Matrix3d::Identity();
+  // A Z-up capture world or a camera frame -> Y-up output: the whole body turns.
+  const Eigen::Matrix3d up = worldTurn(o.up, motion.world);
   const int k = model.numJoints(), t = static_cast<int>(samples.size());
+  const int expressions = static_cast<int>(asset.metadata.expression_targets.targets.size());
   const Eigen::Vector3d j0 = asset.skeleton.rest_world.row(0).transpose();
   clip.name = motion.name;
   clip.fps = fps;
+  clip.source = ClipSource{motion.source_layout, motion.track, motion.first_frame + o.first_frame,
+                           motion.first_frame + end, worldName(o.up, motion.world)};
+  clip.dropped_joints = mapping->dropped;
   clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));
   clip.morph_weights =
       Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
@@ -168,28 +217,38 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   Rotations local(k);
   for (int i = 0; i < t; ++i) {
     clip.times.push_back(i / fps);
+    Eigen::Matrix3d change;  // the layout's per-frame frame change, then the world turn
+    Eigen::Vector3d shift;
+    frameChangeAt(motion, samples[i], &change, &shift);
+    const Eigen::Matrix3d turn = up * change;
     for (int j = 0; j < k; ++j) {
       const int src = mapping->source_of_joint[j];
       Eigen::Quaterniond q =
           src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
-      if (j == 0) q = Eigen::Quaterniond(up) * q;
+      if (j == 0) q = Eigen::Quaterniond(turn) * q;
       clip.rotations[j][i] = q;
       local[j] = q.toRotationMatrix();
     }
     // The root node sits at J_0 + trans in the capture world; rotate it with the world.
-    Eigen::Vector3d root = up * (j0 + translationAt(motion, samples[i]));
+    Eigen::Vector3d root = up * (change * (j0 + translationAt(motion, samples[i])) + shift);
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
     if (const int d = static_cast<int>(asset.metadata.dmpl.targets.size());
         d > 0)  // DMPL soft tissue (dmpl_targets.h)
       if (Status st = applyDmplFrame(asset, dmplAt(motion, samples[i].frame, samples[i].t, d),
-                                     local, up, i, &clip);
+                                     local, turn, i, &clip);
           !st)
         return st.error();
+    if (expressions > 0)  // animated SMPL-X expression (expression_targets.h)
+      applyExpressionFrame(asset,
+                           expressionAt(motion, samples[i].frame, samples[i].t,
+                                        model.numExpressions(), asset.metadata.expression),
+                           local, turn, i, &clip);
     if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
   }
   for (auto& track : clip.rotations) makeContinuous(&track);
+  clipNotes(model, asset, motion, &clip);
   return clip;
 }
 

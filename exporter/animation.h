@@ -6,6 +6,7 @@
 // back with no runtime script.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <string>
 #include <vector>
@@ -17,10 +18,23 @@
 
 namespace smpl {
 
-enum class UpAxis { Auto, Y, Z };  // Auto: Z for AMASS files, else Y
+// The motion world's up axis (--up); the output is always Y-up.
+//   Auto  what the motion's layout says (Motion::world): Z for AMASS, -y for
+//         the camera frames of video methods, else Y
+//   Z     a Z-up world, turned -90 degrees about x
+//   NegY  a camera frame (OpenCV: y down, z forward), turned upright by one
+//         half turn about x: (x, y, z) -> (x, -y, -z), about the world origin
+//         (camera-relative translations stay camera-relative)
+enum class UpAxis { Auto, Y, Z, NegY };
 
+// The rotation that turns a motion's world Y-up (identity for Y).
+Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world);
+
+// The request checks the ranges (exporter/request/check_request.h); here
+// they are preconditions: fps >= 0, and a frame range outside a motion is
+// that motion's export error.
 struct AnimationOptions {
-  double fps = 0.0;     // output rate; 0 keeps the motion's rate
+  double fps = 0.0;     // output rate (fps); 0 keeps the motion's rate
   int first_frame = 0;  // --frames A:B, source frames, B exclusive
   int end_frame = -1;   // -1: to the end
   UpAxis up = UpAxis::Auto;
@@ -39,7 +53,8 @@ Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion,
 // Progress callback: fraction in [0, 1].
 using Progress = std::function<void(double)>;
 
-// `asset` supplies the rest joints and the morph target order.
+// `asset` supplies the rest joints and the morph target order. The clip
+// records the joints the mapping dropped (AnimationClip::dropped_joints).
 Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
                                     const Motion& motion, const AnimationOptions& options,
                                     const std::string& context, const Progress& progress = nullptr);

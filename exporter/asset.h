@@ -78,6 +78,35 @@ struct DmplInfo {
       joint_directions;  // 3K x D: J_regressor * direction d, row 3k + c (not serialised)
 };
 
+// Animated SMPL-X expressions (exporter/expression_targets.h): the expr_<i>
+// target of expression coefficient `index` is driven by
+// weight = scale * (psi_index(t) - psi_index_rest) + offset, in [0, 1] over the
+// baked motions (importers that clamp play it exactly); psi_rest is the
+// static --expression (AssetMetadata::expression).
+struct ExpressionLayout {
+  int index = 0;
+  std::string target;  // expr_<index>
+  double scale = 1.0;
+  double offset = 0.0;
+};
+
+struct ExpressionInfo {
+  std::vector<ExpressionLayout> targets;  // empty: expr_<i> weights are the coefficients (static)
+  Eigen::MatrixXd joint_directions;       // 3K x E: J_regressor * exprdirs column i, row 3k + c
+                                          // (the joints' motion, for the cost; not serialised)
+};
+
+// Where a clip came from, recorded in the metadata: the motion layout that
+// read it, the person/track of a multi-person file, the source frames baked
+// ([first_frame, end_frame) in the file's own numbering) and how its world
+// was turned to Y-up.
+struct ClipSource {
+  std::string layout;  // motion reader table row ("amass", "fit", ...)
+  std::string track;   // "" for a single-person file
+  int64_t first_frame = 0, end_frame = 0;
+  std::string world = "y";  // "y", "z" (turned -90 degrees about x) or "-y" (a half turn about x)
+};
+
 struct AnimationClip {
   std::string name;
   double fps = 30.0;
@@ -87,8 +116,14 @@ struct AnimationClip {
   Eigen::MatrixXf morph_weights;                           // T x (#morph targets), in target order
   // [joint][frame] local translations of every joint (--dmpl-joints regressed); empty = rest_local
   std::vector<std::vector<Eigen::Vector3d>> joint_translations;
-  double dmpl_joint_error = 0.0;  // max vertex error (m) that betas-only joints cost (DMPL)
-  MemoryCharge charge;            // the arrays above, against the memory budget
+  double dmpl_joint_error = 0.0;        // max vertex error (m) that betas-only joints cost (DMPL)
+  double expression_joint_error = 0.0;  // the same for an animated expression (m)
+  ClipSource source;
+  std::vector<std::string> notes;  // for the user, one line each (what was dropped or assumed)
+  // Motion joints the model lacks, dropped by the mapping this clip was baked
+  // with (MotionMapping::dropped, animation.h), for the run's notes; not written.
+  std::vector<std::string> dropped_joints;
+  MemoryCharge charge;  // the arrays above, against the memory budget
 };
 
 struct AssetMetadata {
@@ -106,6 +141,7 @@ struct AssetMetadata {
   std::string skin_weights = "truncated";      // "truncated" or "optimized" (export_skin.h)
   std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (pipeline.h)
   DmplInfo dmpl{};  // DMPL soft-tissue targets (empty without --dmpl); last, as above
+  ExpressionInfo expression_targets{};  // animated expressions (empty: static); last, as above
 };
 
 struct Asset {
@@ -114,6 +150,10 @@ struct Asset {
   SkinnedMesh mesh;
   std::vector<AnimationClip> animations;
   AssetMetadata metadata;
+  // A skeleton-only asset (for a writer without a mesh, plugins/writer.h
+  // needs_mesh = false): `mesh` is empty and validateAssetStructure does not
+  // require one. Last: keeps aggregate initialisers of the fields above valid.
+  bool skeleton_only = false;
 };
 
 }  // namespace smpl

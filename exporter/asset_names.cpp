@@ -15,6 +15,7 @@ void visitNames(A& a, F&& f) {
   for (auto& n : a.skeleton.names) f(n, "joint name");
   for (auto& t : a.mesh.morph_targets) f(t.name, "morph target name");
   for (auto& c : a.animations) f(c.name, "animation name");
+  for (auto& c : a.animations) f(c.source.track, "animation track");  // a person id from the file
   f(a.metadata.model_name, "model_name");
   for (auto& c : a.metadata.correctives) f(c.target, "corrective target");
   for (auto& t : a.metadata.corrective_basis.targets) f(t, "corrective basis target");

@@ -17,7 +17,7 @@ namespace smpl {
 
 // Escapes, in place, every name of `asset`: mesh name, joint names, morph
 // target names, animation names, metadata model_name, corrective and basis
-// target names, DMPL basis file and target names.
+// target names, DMPL basis file and target names, animation tracks.
 void escapeAssetNames(Asset* asset);
 
 // Error naming the first name that is not valid UTF-8:

@@ -6,46 +6,9 @@
 #include <map>
 
 #include "core/load/validate_inputs.h"
+#include "exporter/joint_shift_cost.h"
 
 namespace smpl {
-namespace {
-
-// World rotation/translation of every joint for rest joints `x` (K x 3) and
-// the translation part a_k = t_k - Rw_k x_k of the skin transform A_k. The
-// root's rotation local[0] includes the up-axis rotation `up`, so its
-// translation is up * x_0 (the root translation itself cancels in differences).
-Eigen::MatrixXd skinTranslations(const std::vector<int>& parents, const Eigen::MatrixXd& x,
-                                 const Rotations& local, const Eigen::Matrix3d& up) {
-  const int k = static_cast<int>(parents.size());
-  std::vector<Eigen::Matrix3d> rw(k);
-  Eigen::MatrixXd t(k, 3), a(k, 3);
-  for (int j = 0; j < k; ++j) {
-    const int p = parents[j];
-    if (p < 0) {
-      rw[j] = local[j];
-      t.row(j) = (up * x.row(j).transpose()).transpose();
-    } else {
-      rw[j] = rw[p] * local[j];
-      t.row(j) = t.row(p) + (rw[p] * (x.row(j) - x.row(p)).transpose()).transpose();
-    }
-    a.row(j) = t.row(j) - (rw[j] * x.row(j).transpose()).transpose();
-  }
-  return a;
-}
-
-// max_i |sum_m w_im da_{joint_im}| over the asset's (pruned) skin.
-double maxSkinError(const SkinnedMesh& mesh, const Eigen::MatrixXd& da) {
-  double worst = 0.0;
-  for (Eigen::Index i = 0; i < mesh.joints.rows(); ++i) {
-    Eigen::RowVector3d e = Eigen::RowVector3d::Zero();
-    for (Eigen::Index m = 0; m < mesh.joints.cols(); ++m)
-      e += double(mesh.weights(i, m)) * da.row(mesh.joints(i, m));
-    worst = std::max(worst, e.norm());
-  }
-  return worst;
-}
-
-}  // namespace
 
 std::vector<DmplLayout> dmplLayout(int directions,
                                    const std::vector<const Eigen::MatrixXd*>& coefficients) {
@@ -125,9 +88,8 @@ Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotati
   const Eigen::MatrixXd delta =
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(flat.data(), k,
                                                                                   3);
-  const Eigen::MatrixXd da = skinTranslations(s.parents, s.rest_world + delta, local, up) -
-                             skinTranslations(s.parents, s.rest_world, local, up);
-  clip->dmpl_joint_error = std::max(clip->dmpl_joint_error, maxSkinError(asset.mesh, da));
+  clip->dmpl_joint_error =
+      std::max(clip->dmpl_joint_error, jointShiftCost(s, asset.mesh, delta, local, up));
   if (!info.animate_joints) return Status();
   if (clip->joint_translations.empty()) {
     const uint64_t bytes = static_cast<uint64_t>(k) *

@@ -1,6 +1,7 @@
 #include "exporter/export_asset.h"
 
 #include "exporter/asset_names.h"
+#include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
 #include "exporter/validate_asset.h"
 
@@ -19,8 +20,15 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
       resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
   Result<Asset> asset = buildAsset(model, resolved);
   if (!asset) return asset;
-  if (dmpl && dmpl->basis)
+  if (dmpl && dmpl->basis && !asset->skeleton_only)  // DMPL targets need a mesh
     addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
+  std::vector<const Eigen::MatrixXd*> expressions;  // animated SMPL-X expressions
+  for (const MotionInput& m : motions)
+    if (m.motion && m.motion->expression.rows() > 0) expressions.push_back(&m.motion->expression);
+  if (!expressions.empty() && resolved.expression_keys > 0)
+    encodeExpressionTargets(
+        model, expressionLayout(resolved.expression_keys, asset->metadata.expression, expressions),
+        &*asset);
   for (const MotionInput& m : motions) {
     if (!m.motion) return makeError(m.context + ": no motion given");
     Result<AnimationClip> clip =

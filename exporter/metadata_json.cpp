@@ -13,7 +13,7 @@
 // The sidecar <out>.smpl.json adds, last,
 //   "producer": {"hash": "<16 hex digits>",
 //                "outputs": [{"file": "walk.glb", "bytes": N, "sha256": "<64 hex digits>"}]}
-// a hash of everything that produced the output pair (cli/producer.h: exporter
+// a hash of everything that produced the output pair (exporter/request/producer.h: exporter
 // version, options, model and input identities) and the size and SHA-256 of
 // every file of the output (a .gltf's .bin included); batch mode rebuilds an
 // output whose sidecar hash differs or whose files are not the recorded ones.
@@ -78,6 +78,39 @@ Json dmplJson(const DmplInfo& dmpl) {
   return o;
 }
 
+Json expressionTargetsJson(const ExpressionInfo& info) {
+  Json list = Json::array();
+  for (const ExpressionLayout& e : info.targets) {
+    Json entry = Json::object();
+    entry["index"] = e.index;
+    entry["target"] = e.target;
+    entry["scale"] = e.scale;
+    entry["offset"] = e.offset;
+    list.push_back(std::move(entry));
+  }
+  return list;
+}
+
+// Each clip's name and where it came from (asset.h ClipSource).
+Json animationsJson(const std::vector<AnimationClip>& clips) {
+  Json list = Json::array();
+  for (const AnimationClip& c : clips) {
+    Json source = Json::object();
+    source["layout"] = c.source.layout;
+    if (!c.source.track.empty()) source["track"] = c.source.track;
+    source["first_frame"] = c.source.first_frame;
+    source["end_frame"] = c.source.end_frame;
+    source["world"] = c.source.world;
+    Json entry = Json::object();
+    entry["name"] = c.name;
+    entry["fps"] = c.fps;
+    entry["frames"] = c.times.size();
+    entry["source"] = std::move(source);
+    list.push_back(std::move(entry));
+  }
+  return list;
+}
+
 Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
   Json names = Json::array();
   for (const MorphTarget& t : targets) names.push_back(t.name);
@@ -102,6 +135,9 @@ Json metadataObject(const Asset& asset) {
   o["correctives"] = correctivesJson(m.correctives);
   if (!m.corrective_basis.targets.empty()) o["corrective_basis"] = basisJson(m.corrective_basis);
   if (!m.dmpl.targets.empty()) o["dmpl"] = dmplJson(m.dmpl);
+  if (!m.expression_targets.targets.empty())
+    o["expression_targets"] = expressionTargetsJson(m.expression_targets);
+  if (!asset.animations.empty()) o["animations"] = animationsJson(asset.animations);
   o["morph_targets"] = morphTargetNamesJson(asset.mesh.morph_targets);
   return o;
 }

@@ -1,6 +1,7 @@
 #include "exporter/pipeline.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <numeric>
 #include <optional>
 
@@ -15,46 +16,6 @@ namespace {
 
 Eigen::VectorXd toVector(const std::vector<double>& v) {
   return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
-}
-
-// Options that do not fit the model: usage errors (exit 1 in the CLI).
-Status checkOptions(const BodyModel& model, const ExportOptions& o) {
-  if (static_cast<int>(o.betas.size()) > model.numBetas())
-    return makeError("betas: " + std::to_string(o.betas.size()) + " values given; the model " +
-                         model.name + " has " + std::to_string(model.numBetas()),
-                     ErrorKind::Usage);
-  if (static_cast<int>(o.expression.size()) > model.numExpressions())
-    return makeError("expression: " + std::to_string(o.expression.size()) +
-                         " values given; the model " + model.name + " has " +
-                         std::to_string(model.numExpressions()),
-                     ErrorKind::Usage);
-  if (o.max_influences != kAllInfluences &&
-      (o.max_influences < 1 || o.max_influences > model.numJoints()))
-    return makeError("--max-influences must be between 1 and " + std::to_string(model.numJoints()) +
-                         " (the model's joints) or 'all', got " + std::to_string(o.max_influences),
-                     ErrorKind::Usage);
-  if (o.shape_keys < 0 || o.shape_keys > model.numBetas())
-    return makeError("--shape-keys " + std::to_string(o.shape_keys) + ": the model has " +
-                         std::to_string(model.numBetas()) + " shape directions",
-                     ErrorKind::Usage);
-  if (o.expression_keys < 0 || o.expression_keys > model.numExpressions())
-    return makeError("--expression-keys " + std::to_string(o.expression_keys) + ": the model has " +
-                         std::to_string(model.numExpressions()) + " expression directions",
-                     ErrorKind::Usage);
-  if (o.corrective_basis < 0 || o.corrective_basis > model.numPoseFeatures())
-    return makeError("--corrective-basis " + std::to_string(o.corrective_basis) + ": expected 1.." +
-                         std::to_string(model.numPoseFeatures()) + " (the model has " +
-                         std::to_string(model.numPoseFeatures()) + " pose correctives)",
-                     ErrorKind::Usage);
-  if (o.corrective_basis > 0 && !o.correctives)
-    return makeError("--corrective-basis needs correctives (conflicts with --correctives none)",
-                     ErrorKind::Usage);
-  if (o.corrective_basis > 0 && o.encoding == CorrectiveEncoding::Split)
-    return makeError(
-        "--corrective-basis drives its targets with signed or unit weights; it conflicts with "
-        "--corrective-weights split",
-        ErrorKind::Usage);
-  return Status();
 }
 
 Skeleton buildSkeleton(const BodyModel& model, const Eigen::MatrixXd& joints) {
@@ -191,9 +152,11 @@ Status addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* as
   } else if (o.correctives) {
     addCorrectives(model, o, asset);
   }
-  for (int i = 0; i < o.shape_keys; ++i)
+  // Counts beyond the model's directions are clamped (a precondition: the
+  // request refuses them first, exporter/request/check_request.h).
+  for (int i = 0; i < std::min(o.shape_keys, model.numBetas()); ++i)
     targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
-  for (int i = 0; i < o.expression_keys; ++i)
+  for (int i = 0; i < std::min(o.expression_keys, model.numExpressions()); ++i)
     targets.push_back(directionTarget("expr_" + std::to_string(i), model.exprdirs, i, src));
   return Status();
 }
@@ -225,6 +188,31 @@ void buildMesh(const BodyModel& model, const Eigen::MatrixXd& v_shaped, const Sp
   }
 }
 
+// The model-level metadata of every asset.
+void fillMetadata(const BodyModel& model, const ExportOptions& o, AssetMetadata* meta) {
+  meta->model_kind = modelKindName(model.kind);
+  meta->model_name = model.name;
+  meta->exporter_version = SMPL_EXPORT_VERSION;
+  meta->betas = o.betas;
+  meta->betas.resize(model.numBetas(), 0.0);
+  meta->expression = o.expression;
+  meta->expression.resize(model.numExpressions(), 0.0);
+  meta->skin_weights = skinWeightMethodName(o.skin_weights);
+  meta->corrective_encoding = correctiveEncodingName(o.encoding);
+}
+
+// Options::mesh false: the subject's skeleton and metadata only; nothing of
+// the mesh is computed (no skin fit, no morph targets).
+Asset skeletonAsset(const BodyModel& model, const ExportOptions& o, const Eigen::MatrixXd& joints) {
+  Asset asset;
+  asset.name = o.name;
+  asset.skeleton = buildSkeleton(model, joints);
+  asset.skeleton_only = true;
+  fillMetadata(model, o, &asset.metadata);
+  asset.metadata.max_influences = 0;
+  return asset;
+}
+
 }  // namespace
 
 const char* correctiveEncodingName(CorrectiveEncoding encoding) {
@@ -244,9 +232,9 @@ std::string correctiveTargetName(const BodyModel& model, int feature) {
 }
 
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
-  if (Status s = checkOptions(model, o); !s) return s.error();
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
+  if (!o.mesh) return skeletonAsset(model, o, body->joints);
   Result<std::optional<UvLayout>> uv =
       resolveUvLayout(o.uv_obj, model);  // model UVs, --uv FILE or none
   if (!uv)
@@ -257,17 +245,8 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   const SparseSkin skin = exportSkin(model, *body, o);
   const int m = static_cast<int>(skin.joints.cols());  // influencesFor(), or fewer with "all"
   buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
-  AssetMetadata& meta = asset.metadata;
-  meta.model_kind = modelKindName(model.kind);
-  meta.model_name = model.name;
-  meta.exporter_version = SMPL_EXPORT_VERSION;
-  meta.betas = o.betas;
-  meta.betas.resize(model.numBetas(), 0.0);
-  meta.expression = o.expression;
-  meta.expression.resize(model.numExpressions(), 0.0);
-  meta.max_influences = m;
-  meta.skin_weights = skinWeightMethodName(o.skin_weights);
-  meta.corrective_encoding = correctiveEncodingName(o.encoding);
+  fillMetadata(model, o, &asset.metadata);
+  asset.metadata.max_influences = m;
   if (Status s = addMorphTargets(model, o, &asset); !s) return s.error();
   return asset;
 }

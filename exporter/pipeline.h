@@ -48,7 +48,7 @@ constexpr int kAllInfluences = 0;
 struct ExportOptions {
   std::vector<double> betas;       // zero-padded to the model's count; more is an error
   std::vector<double> expression;  // SMPL-X only
-  int max_influences = 4;          // 1..K, or kAllInfluences
+  int max_influences = 4;          // 1..K (clamped), or kAllInfluences
   SkinWeightMethod skin_weights = SkinWeightMethod::Optimized;  // --skin-weights
   bool correctives = true;                                      // one morph target per pose feature
   CorrectiveEncoding encoding =
@@ -62,8 +62,20 @@ struct ExportOptions {
   std::string name = "body";
   bool quantize_morphs = false;  // --quantize-morphs: exportAsset folds each corrective's peak
                                  // into its weights and marks it quantized (morph_scales.h)
+  // false: a skeleton-only asset (the writer has no mesh, plugins/writer.h):
+  // no UVs, no skin (nothing fitted), no morph targets.
+  bool mesh = true;
 };
 
+// The rest asset: skeleton, mesh, skin (exportSkin), morph targets. The
+// options' ranges are checked before, once, by the request
+// (exporter/request/check_request.h checkRequestForModel); here they are
+// preconditions: counts beyond the model are clamped (max_influences by
+// influencesFor, shape/expression keys to B/E), a corrective basis without
+// correctives is not built, and a basis with Split weights is signed. Errors:
+// more betas or expression values than the model has (shapeBody), an
+// unreadable --uv file (kind Load), a basis that cannot be fitted. With
+// options.mesh false: the skeleton and metadata only (Asset::skeleton_only).
 Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& options);
 
 // Morph target name for pose feature n: pose_<joint>_<r><c> (docs/file-contract.md).

@@ -148,7 +148,14 @@ Status checkClip(const AnimationClip& c, size_t joints, Eigen::Index targets) {
 Status validateAssetStructure(const Asset& a) {
   if (Status st = checkAssetNames(a); !st) return st;  // text every format stores as UTF-8
   if (Status st = checkSkeleton(a.skeleton); !st) return st;
-  if (Status st = checkMesh(a.mesh, int(a.skeleton.names.size())); !st) return st;
+  if (a.skeleton_only && (a.mesh.positions.rows() != 0 || !a.mesh.morph_targets.empty()))
+    return makeError("skeleton-only asset has " + std::to_string(a.mesh.positions.rows()) +
+                     " mesh vertices and " + std::to_string(a.mesh.morph_targets.size()) +
+                     " morph targets; expected none");
+  if (a.skeleton_only) {
+  } else if (Status st = checkMesh(a.mesh, int(a.skeleton.names.size())); !st) {
+    return st;
+  }
   for (const AnimationClip& clip : a.animations)
     if (Status st =
             checkClip(clip, a.skeleton.names.size(), Eigen::Index(a.mesh.morph_targets.size()));

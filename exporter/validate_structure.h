@@ -16,10 +16,11 @@ namespace smpl {
 //   skeleton: K > 0 names, K parents; joint 0 the only root (parent -1) and
 //     0 <= parent(j) < j for j > 0 (one skin root, no loops); rest_local and
 //     rest_world K x 3 (metres);
-//   mesh: V > 0; positions, normals V x 3; uvs 0 rows or V x 2; triangles
-//     F x 3, F > 0, indices in [0, V); joints and weights V x M, M > 0; joint
-//     indices in [0, K); weights >= 0 with a positive sum per vertex; each
-//     morph target V x 3, and |delta| <= 1 when marked quantized;
+//   mesh (none for a skeleton-only asset, Asset::skeleton_only: then no
+//     vertices and no morph targets): V > 0; positions, normals V x 3; uvs 0 rows or V x 2;
+//     triangles F x 3, F > 0, indices in [0, V); joints and weights V x M, M > 0; joint indices in
+//     [0, K); weights >= 0 with a positive sum per vertex; each morph target V x 3, and |delta| <=
+//     1 when marked quantized;
 //   each animation: T > 0 frames; fps > 0; key times (seconds) >= 0 and
 //     strictly increasing as float32 (what the files store); K rotation tracks
 //     of T non-zero quaternions; root translations 0 or T; morph weights

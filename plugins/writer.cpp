@@ -1,33 +1,78 @@
-// Output format registry: picks the writer from the output file extension.
+// The writer table (writer.h): one row per output format.
 #include "plugins/writer.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "plugins/gltf/gltf_writer.h"
-#if __has_include("plugins/fbx/fbx_writer.h")
 #include "plugins/fbx/fbx_writer.h"
-#define SMPL_HAVE_FBX_WRITER 1
-#endif
+#include "plugins/gltf/gltf_writer.h"
 
 namespace smpl {
 namespace {
 
-bool endsWith(const std::string& text, const std::string& suffix) {
+bool endsWithNoCase(const std::string& text, const std::string& suffix) {
   if (text.size() < suffix.size()) return false;
   return std::equal(suffix.rbegin(), suffix.rend(), text.rbegin(), [](char a, char b) {
-    return a == std::tolower(static_cast<unsigned char>(b));
+    return std::tolower(static_cast<unsigned char>(a)) ==
+           std::tolower(static_cast<unsigned char>(b));
   });
+}
+
+std::deque<WriterFormat>& table() {
+  static std::deque<WriterFormat> rows = [] {
+    const std::vector<std::string> gltf_options = {"--corrective-epsilon", "--quantize-morphs",
+                                                   "--draco"};
+    std::vector<std::string> gltf_text_options = gltf_options;
+    gltf_text_options.push_back("--gltf-embed");
+    return std::deque<WriterFormat>{
+        {"glb", {".glb"}, gltf_options, true, true, false, &gltfWriter()},
+        {"gltf", {".gltf"}, gltf_text_options, true, false, true, &gltfWriter()},
+        {"fbx",
+         {".fbx"},
+         {"--fbx-units", "--fbx-version", "--fbx-compress-level"},
+         true,
+         true,
+         false,
+         &fbxWriter()},
+    };
+  }();
+  return rows;
 }
 
 }  // namespace
 
-const Writer* writerForPath(const std::string& path) {
-  if (endsWith(path, ".glb") || endsWith(path, ".gltf")) return &gltfWriter();
-#ifdef SMPL_HAVE_FBX_WRITER
-  if (endsWith(path, ".fbx")) return &fbxWriter();
-#endif
+const std::deque<WriterFormat>& writerFormats() { return table(); }
+
+const WriterFormat* writerFormatForPath(const std::string& path) {
+  for (const WriterFormat& row : table())
+    for (const std::string& ext : row.extensions)
+      if (endsWithNoCase(path, ext)) return &row;
   return nullptr;
 }
+
+const WriterFormat* writerFormatByName(const std::string& name) {
+  for (const WriterFormat& row : table())
+    if (row.name == name) return &row;
+  return nullptr;
+}
+
+const Writer* writerForPath(const std::string& path) {
+  const WriterFormat* row = writerFormatForPath(path);
+  return row ? row->writer : nullptr;
+}
+
+std::string writerExtensionList(const std::string& last) {
+  std::vector<std::string> all;
+  for (const WriterFormat& row : table())
+    all.insert(all.end(), row.extensions.begin(), row.extensions.end());
+  std::string text;
+  for (size_t i = 0; i < all.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == all.size() ? last : ", ") + all[i];
+  return text;
+}
+
+ScopedWriterFormat::ScopedWriterFormat(WriterFormat row) { table().push_back(std::move(row)); }
+
+ScopedWriterFormat::~ScopedWriterFormat() { table().pop_back(); }
 
 }  // namespace smpl

@@ -1,7 +1,9 @@
-// One interface for every output format. A writer serialises an Asset to bytes
-// (deterministic: same asset, same bytes); the caller writes them atomically.
+// One interface for every output format, and the table of formats. A writer
+// serialises an Asset to bytes (deterministic: same asset, same bytes); the
+// caller writes them atomically.
 #pragma once
 
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -11,7 +13,7 @@
 namespace smpl {
 
 struct WriterOptions {
-  bool binary = true;  // glTF: .glb vs .gltf
+  bool binary = true;  // glTF: .glb vs .gltf (the format row's `binary`)
   // .gltf only: "" embeds the buffer as a base64 data URI; else the buffer is a
   // separate file of this name beside the output (the JSON's buffer "uri").
   std::string buffer_uri;
@@ -48,7 +50,53 @@ struct Writer {
   }
 };
 
-// Writers by output file extension (".glb", ".gltf", ".fbx"); null if none.
+// The writer table: one row per output format, and everything the rest of
+// the program knows about a format (issue 24 item 1). The command line reads
+// it for --format's choices, the --out extension check, which format-only
+// options apply and the usage text; the export request for the writer, the
+// WriterOptions container flag, the .gltf buffer file and whether a mesh is
+// built at all. Adding a writer is one file under plugins/<name>/ and one row
+// (docs/architecture.md "Adding a writer").
+struct WriterFormat {
+  std::string name;                     // "glb": --format value; batch outputs <stem>.<name>
+  std::vector<std::string> extensions;  // ".glb": --out FILE ends with one (any case)
+  // The format-only options that apply to this format ("--draco"); an option
+  // listed by some rows is refused for the others (cli/options.h Applies::Format).
+  std::vector<std::string> options;
+  // false: a skeleton-only format (e.g. BVH): the request builds no mesh, so
+  // no skin is fitted and no morph target computed, and the asset check does
+  // not require a mesh (exporter/validate_structure.h).
+  bool needs_mesh = true;
+  bool binary = true;            // WriterOptions::binary (glTF: GLB, else the JSON .gltf)
+  bool external_buffer = false;  // writes <stem>.bin beside the output unless --gltf-embed
+  const Writer* writer = nullptr;
+};
+
+// Every row, in usage order (glb, gltf, fbx; test rows last). Rows stay where
+// they are while the table grows (pointers to them remain valid).
+const std::deque<WriterFormat>& writerFormats();
+
+// The row whose extension `path` ends with (any case), or null.
+const WriterFormat* writerFormatForPath(const std::string& path);
+
+// The row named `name` (--format), or null.
+const WriterFormat* writerFormatByName(const std::string& name);
+
+// The row's writer for `path`'s extension, or null.
 const Writer* writerForPath(const std::string& path);
+
+// Every row's extensions for messages: ".glb, .gltf or .fbx" (`last`
+// joins the final pair; ", " the others).
+std::string writerExtensionList(const std::string& last = " or ");
+
+// Test hook: adds `row` to the table while it lives (rows are read without
+// a lock: construct and destroy it only while no export runs).
+class ScopedWriterFormat {
+ public:
+  explicit ScopedWriterFormat(WriterFormat row);
+  ~ScopedWriterFormat();
+  ScopedWriterFormat(const ScopedWriterFormat&) = delete;
+  ScopedWriterFormat& operator=(const ScopedWriterFormat&) = delete;
+};
 
 }  // namespace smpl

@@ -22,7 +22,7 @@ def help_options(help_text):
     for line in help_text.splitlines():
         if line.startswith("  -"):
             left = line[2:].split("  ")[0]  # "--quiet, -q", "--max-influences N"
-            names.update(re.findall(r"(?<![\w-])(--[a-z][a-z0-9-]*|-[a-zA-Z])\b", left))
+            names.update(re.findall(r"(?<![\w|-])(--[a-z][a-z0-9-]*|-[a-zA-Z])\b", left))
     return names
 
 

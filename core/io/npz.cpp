@@ -117,6 +117,11 @@ std::vector<std::string> NpzArchive::keys() const { return keys_; }
 
 bool NpzArchive::has(const std::string& key) const { return find(key) != nullptr; }
 
+std::string NpzArchive::memberName(const std::string& key) const {
+  const ZipMember* m = find(key);
+  return m ? m->name : std::string();
+}
+
 const ZipMember* NpzArchive::find(const std::string& key) const {
   for (size_t i = 0; i < keys_.size(); ++i)
     if (keys_[i] == key) return &members_[i];

@@ -37,6 +37,8 @@ class NpzArchive {
   const std::string& context() const { return context_; }
   std::vector<std::string> keys() const;  // member names without ".npy", archive order
   bool has(const std::string& key) const;
+  // The member's name in the archive ("shapedirs.npy"), for errors; "" if absent.
+  std::string memberName(const std::string& key) const;
 
   // The member's raw .npy bytes (inflated, CRC-checked; `data`), charged to
   // the memory budget while the entry lives.

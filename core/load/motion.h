@@ -1,18 +1,16 @@
-// Pose sequences, recognised by their keys (not by the extension):
-//   AMASS .npz (SMPL-H release: poses (T,156); SMPL-X release: poses (T,165)
-//   or the split keys root_orient/pose_body/pose_hand/pose_jaw/pose_eye),
-//   SMPL (T,72), plain .npz / .json with `poses` as axis-angle (T,3J) /
-//   (T,J,3) or rotation matrices (T,J,3,3); frame rate from
-//   `mocap_framerate`, `mocap_frame_rate` or `fps`;
-//   Meshcapade SMPLCodec `.smpl` (motion_smplcodec.h);
-//   SMPL-X / SMPL fits as fitters write them, .pkl or .npz (motion_fit.h);
-//   AIST++ .pkl (motion_aist.h).
-// The container is chosen by content: zip magic -> npz, pickle opcodes ->
-// data-only unpickler, else JSON. Every frame is validated (finite numbers,
-// consistent lengths) before anything is exported.
+// Pose sequences, recognised by their keys (not by the extension), through
+// the motion reader table (core/load/motion_layout.h; one row per layout:
+// AMASS and plain poses (motion_amass.h), Meshcapade SMPLCodec `.smpl`
+// (motion_smplcodec.h), SMPL-X / SMPL fits (motion_fit.h), AIST++
+// (motion_aist.h); docs/motions.md lists them with the tools that write them).
+// The container is chosen by content (core/load/motion_read.h). Every frame
+// is validated (finite numbers, consistent lengths, rotations) before
+// anything is exported.
 // A file with no pose keys at all (AMASS `shape.npz`, `*_stagei.npz`, a
 // shape-only .smpl) is "no pose data": loadMotion fails on it and
-// hasPoseData() says so without failing (batch mode skips such files).
+// hasPoseData() says so without failing (batch mode skips such files); a
+// file with pose-like keys of a layout no row reads fails with the keys it
+// has and a pointer to docs/motions.md.
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +33,14 @@ struct PendingHands {
   bool active() const { return !left.empty() || !right.empty(); }
 };
 
+// The world a motion's root rotations and translations are expressed in;
+// the export is always Y-up (exporter/animation.h turns the whole body).
+//   Y            a Y-up world (most fitters and generators)
+//   Z            a Z-up capture world (AMASS)
+//   CameraYDown  a camera frame as OpenCV has it: x right, y down, z forward
+//                (the output of video methods in camera coordinates)
+enum class MotionWorld { Y, Z, CameraYDown };
+
 struct Motion {
   std::string name;                          // file stem
   ModelKind layout = ModelKind::Smpl;        // joint layout of `rotations`
@@ -47,25 +53,49 @@ struct Motion {
   Eigen::MatrixXd dmpls;  // T x D DMPL soft-tissue coefficients (AMASS `dmpls`); 0 x 0 if absent
   std::string dmpls_problem;  // "<path>: 'dmpls' ..." when present but unusable (shape, NaN); the
                               // error of an export that needs them (core/load/dmpl.h)
-  bool amass = false;         // AMASS-style file (Z-up world)
-  PendingHands hands;         // fits only: resolved by resolveFitHands()
+  MotionWorld world = MotionWorld::Y;  // what the layout says of the file's world (--up overrides)
+  std::string world_why;  // for a camera frame: the note saying so ("WHAM 'pose' is in the camera
+                          // frame"), printed when no --up is given
+  Eigen::MatrixXd expression;  // T x E SMPL-X expression coefficients per frame; 0 x 0 if absent
+  std::string track;           // the person or track id in a multi-person file; "" if it has one
+  int64_t first_frame = 0;     // source frame number of frames[0] (a track that starts later)
+  int64_t held_frames = 0;     // frames without a detection, holding the previous one (tracks)
+  // Per-frame frame change applied to the whole posed body about the world
+  // origin, before the world turn: v -> world_rotation[f] v + world_translation[f]
+  // (EasyMocap's Rh/Th, TRAM's camera-to-world). Empty: identity. The bake
+  // knows J_0: the root becomes A R_0 and the root node A (J_0 + t) + b.
+  std::vector<Eigen::Matrix3d> world_rotation;
+  std::vector<Eigen::Vector3d> world_translation;
+  std::string hand;    // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
+  PendingHands hands;  // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
+  std::string source_layout;       // the table row that read it ("amass", "fit", ...)
   MemoryCharge charge;             // `frames` and `translation` against the memory budget
 };
 
 // Options of loadMotion.
 struct MotionOptions {
-  double source_fps = 0.0;     // --source-fps: the source rate; 0 = stored rate, else a default
-  double fps_fallback = 30.0;  // rate assumed when none is stored (AIST++: 60, as documented)
+  double source_fps = 0.0;  // --source-fps: the source rate; 0 = stored rate, else the layout's
+                            // default (30 fps; AIST++ 60, as documented) with a note
+  bool up_given = false;    // --up was given: no note about the layout's default world turn
 };
 
-// `path` names the file in errors. Errors: unreadable file, no pose data,
-// wrong shapes, NaN/Inf.
-Result<Motion> loadMotion(const std::string& path, const MotionOptions& options);
-Result<Motion> loadMotion(const std::string& path, double fps_fallback = 30.0);
+// What one file holds: one Motion per person or track (most files hold one)
+// and the notes that concern the file as a whole.
+struct MotionSet {
+  std::vector<Motion> tracks;
+  std::vector<std::string> notes;
+};
 
-// The file's arrays (npz, pickle or JSON by content).
-Result<ArrayDict> readMotionArrays(const std::string& path);
+// Every track of the file at `path` (which names it in errors), each named
+// after the file's stem, its frame rate settled (MotionOptions) and its
+// values checked (validate_inputs.h). Errors: unreadable file, no pose data,
+// an unknown layout, wrong shapes, NaN/Inf; one line naming the file.
+Result<MotionSet> loadMotionSet(const std::string& path,
+                                const MotionOptions& options = MotionOptions());
+
+// The file's first track, with the file's notes first among its notes.
+Result<Motion> loadMotion(const std::string& path, const MotionOptions& options = MotionOptions());
 
 // False for a readable file without pose keys (a shape file); an error if
 // the file cannot be read at all.

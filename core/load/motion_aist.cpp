@@ -7,7 +7,7 @@
 namespace smpl {
 namespace motion_detail {
 
-Status decodeAist(const ArrayDict& d, const std::string& path, Motion* m) {
+Status decodeAist(const DataNode& d, const std::string& path, Motion* m) {
   const Array* poses = find(d, "smpl_poses");
   if (poses->shape.size() != 2 || poses->shape[1] != 72 || poses->shape[0] < 1)
     return makeError(path + ": 'smpl_poses' has shape " + shapeString(poses->shape) +
@@ -44,4 +44,20 @@ Status decodeAist(const ArrayDict& d, const std::string& path, Motion* m) {
 }
 
 }  // namespace motion_detail
+namespace {
+bool matchesAist(const DataNode& root) { return motion_detail::has(root, "smpl_poses"); }
+}  // namespace
+
+const MotionLayout& aistLayout() {
+  static const MotionLayout row{"aist",
+                                "AIST++ (smpl_poses, smpl_trans, smpl_scaling)",
+                                kAnyContainer,
+                                matchesAist,
+                                {"smpl_poses", "smpl_trans", "smpl_scaling"},
+                                motion_detail::oneTrack<motion_detail::decodeAist>,
+                                60.0,
+                                "AIST++ stores no frame rate; its documentation gives 60 fps"};
+  return row;
+}
+
 }  // namespace smpl

@@ -12,15 +12,21 @@
 
 #include <string>
 
-#include "core/array.h"
+#include "core/data_node.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
 #include "core/result.h"
 
 namespace smpl {
 namespace motion_detail {
 
-// Called by loadMotion for files with `smpl_poses`; fps is left 0.
-Status decodeAist(const ArrayDict& d, const std::string& path, Motion* m);
+// The row's decode for files with `smpl_poses`; fps is left 0.
+Status decodeAist(const DataNode& d, const std::string& path, Motion* m);
 
 }  // namespace motion_detail
+
+// The table row (core/load/motion_layout.h): matches `smpl_poses`; 60 fps assumed
+// (AIST++'s documented rate) when no --source-fps is given.
+const MotionLayout& aistLayout();
+
 }  // namespace smpl

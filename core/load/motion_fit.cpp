@@ -48,7 +48,7 @@ int64_t framesOf(const std::vector<int64_t>& s, int joints, bool* matrices) {
 }
 
 // Optional part with `joints` joints and T frames into joints [first, ...).
-Status putPart(const ArrayDict& d, const std::string& path, const char* key, int joints, int first,
+Status putPart(const DataNode& d, const std::string& path, const char* key, int joints, int first,
                Motion* m) {
   const Array* a = find(d, key);
   if (!a) return Status();
@@ -68,7 +68,7 @@ Status putPart(const ArrayDict& d, const std::string& path, const char* key, int
 
 // A hand: matrices go in directly; axis-angle (full 45 or C < 45 PCA
 // coefficients) waits for the model in `pending`.
-Status putHand(const ArrayDict& d, const std::string& path, const char* key, int first, Motion* m,
+Status putHand(const DataNode& d, const std::string& path, const char* key, int first, Motion* m,
                std::vector<Eigen::VectorXd>* pending) {
   const Array* a = find(d, key);
   if (!a) return Status();
@@ -107,7 +107,7 @@ std::vector<double> oneRow(const Array& a, const char* key, Motion* m) {
   return mean;
 }
 
-Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
+Status readExtras(const DataNode& d, const std::string& path, Motion* m) {
   const int64_t t = static_cast<int64_t>(m->frames.size());
   m->translation.assign(t, Eigen::Vector3d::Zero());
   if (const Array* a = find(d, "transl")) {
@@ -123,9 +123,8 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
     m->betas = oneRow(*b, "betas", m);
   }
   if (const Array* g = find(d, "gender"); g && !g->strings.empty()) m->gender = g->strings[0];
-  if (const Array* e = find(d, "expression"))
-    m->notes.push_back("'expression' " + shapeString(e->shape) +
-                       " is not baked (the export has a fixed expression)");
+  if (const Array* e = find(d, "expression"))  // baked with --expression-keys
+    if (Status s = readExpression(*e, path, "expression", m); !s) return s;
   m->fps = 0.0;
   for (const char* key : {"fps", "frame_rate", "mocap_framerate"})
     if (const Array* r = find(d, key); r && !r->isString() && r->data.size() == 1) {
@@ -138,10 +137,52 @@ Status readExtras(const ArrayDict& d, const std::string& path, Motion* m) {
 
 }  // namespace
 
-Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m) {
+// SMPLify-X results place the body in the camera (smplifyx/fit_single_frame.py
+// `camera_rotation` (1,3,3), `camera_translation` (1,3); smplifyx/camera.py
+// p_cam = R p + t, OpenCV axes): a per-frame frame change in a camera frame.
+Status readCamera(const DataNode& d, const std::string& path, Motion* m) {
+  const Array* t = find(d, "camera_translation");
+  if (!t || find(d, "transl")) return Status();
+  const size_t frames = m->frames.size();
+  if (Status s = checkNumbers(*t, path, "camera_translation"); !s) return s;
+  if (t->size() != 3 && t->size() != static_cast<int64_t>(3 * frames))
+    return makeError(path + ": 'camera_translation' has shape " + shapeString(t->shape) +
+                     "; expected (1,3) or (" + std::to_string(frames) + ",3)");
+  const Array* r = find(d, "camera_rotation");
+  if (r && r->size() != 9 && r->size() != static_cast<int64_t>(9 * frames))
+    return makeError(path + ": 'camera_rotation' has shape " + shapeString(r->shape) +
+                     "; expected (1,3,3) or (" + std::to_string(frames) + ",3,3)");
+  if (r)
+    if (Status s = checkNumbers(*r, path, "camera_rotation"); !s) return s;
+  for (size_t f = 0; f < frames; ++f) {
+    const size_t tf = t->size() == 3 ? 0 : f, rf = r && r->size() == 9 ? 0 : f;
+    m->world_translation.push_back(Eigen::Map<const Eigen::Vector3d>(t->data.data() + 3 * tf));
+    Rotations one(1);
+    if (r)
+      putMatrices(r->data.data() + 9 * rf, 1, 0, &one);
+    else
+      one[0].setIdentity();
+    m->world_rotation.push_back(one[0]);
+  }
+  m->world = MotionWorld::CameraYDown;
+  m->world_why = "SMPLify-X places the body in the camera: a camera frame";
+  return Status();
+}
+
+// SMPLify-X with use_vposer writes the latent as 'body_pose' (32 values).
+Status refuseLatent(const Array& body, const std::string& path) {
+  const int64_t last = body.shape.empty() ? 0 : body.shape.back();
+  if (last != 32) return Status();
+  return makeError(path +
+                   ": a VPoser latent: decode it with VPoser first ('body_pose' has 32 values "
+                   "per frame)");
+}
+
+Status decodeFit(const DataNode& d, const std::string& path, Motion* m) {
   const Array* body = find(d, "body_pose");
   if (!body)
     return makeError(path + ": missing key 'body_pose' (a fit with 'global_orient' needs it)");
+  if (Status s = refuseLatent(*body, path); !s) return s;
   bool matrices = false;
   int64_t t = framesOf(body->shape, 21, &matrices);
   int joints = 21;
@@ -162,7 +203,8 @@ Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m) {
     if (Status s = putHand(d, path, "left_hand_pose", 25, m, &m->hands.left); !s) return s;
     if (Status s = putHand(d, path, "right_hand_pose", 40, m, &m->hands.right); !s) return s;
   }
-  return readExtras(d, path, m);
+  if (Status s = readExtras(d, path, m); !s) return s;
+  return readCamera(d, path, m);
 }
 
 }  // namespace motion_detail
@@ -220,6 +262,25 @@ Status resolveFitHands(const BodyModel& model, bool flat_hand_mean, const std::s
     return s;
   m->hands = PendingHands();
   return Status();
+}
+
+namespace {
+bool matchesFit(const DataNode& root) {
+  return motion_detail::has(root, "body_pose") || motion_detail::has(root, "global_orient");
+}
+}  // namespace
+
+const MotionLayout& fitLayout() {
+  static const MotionLayout row{
+      "fit",
+      "SMPL-X / SMPL fit (SMPLify-X, PIXIE, ExPose)",
+      kAnyContainer,
+      matchesFit,
+      {"global_orient", "body_pose", "left_hand_pose", "right_hand_pose", "jaw_pose", "leye_pose",
+       "reye_pose", "expression", "betas", "transl", "gender", "fps", "frame_rate",
+       "mocap_framerate", "camera_translation", "camera_rotation"},
+      motion_detail::oneTrack<motion_detail::decodeFit>};
+  return row;
 }
 
 }  // namespace smpl

@@ -10,7 +10,12 @@
 //                  PCA coefficients of the model's hands_componentsl/r (first
 //                  C rows), or (T,15,3,3) rotation matrices
 //   jaw_pose, leye_pose, reye_pose  (T,3) or (T,1,3,3)
-//   betas (1,B) or (B,); transl (T,3); expression (T,E) (not baked: a note)
+//   betas (1,B) or (B,); transl (T,3); expression (T,E) (baked with --expression-keys)
+//   camera_translation (1,3) / camera_rotation (1,3,3) without transl
+//                  (SMPLify-X results): the body in camera coordinates,
+//                  R_c v + t_c (a per-frame frame change, MotionWorld::CameraYDown)
+//   body_pose with 32 values per frame (SMPLify-X with use_vposer): a VPoser
+//                  latent, refused ("decode it with VPoser first")
 // T comes from body_pose (every leading dimension multiplied); every other
 // pose key must have T frames too. Absent parts stay at rest.
 //
@@ -26,18 +31,22 @@
 
 #include <string>
 
-#include "core/array.h"
 #include "core/body_model.h"
+#include "core/data_node.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
 #include "core/result.h"
 
 namespace smpl {
 namespace motion_detail {
 
-// Called by loadMotion for files with `body_pose` / `global_orient`.
-Status decodeFit(const ArrayDict& d, const std::string& path, Motion* m);
+// The row's decode for files with `body_pose` / `global_orient`.
+Status decodeFit(const DataNode& d, const std::string& path, Motion* m);
 
 }  // namespace motion_detail
+
+// The table row (core/load/motion_layout.h): matches `body_pose` or `global_orient`.
+const MotionLayout& fitLayout();
 
 // Turns Motion::hands into the hand joints' rotations with the model's PCA
 // components and mean (see above); flat_hand_mean: the poses are relative to

@@ -13,7 +13,7 @@ std::string expected(int64_t t, int64_t j) {
 }
 
 // Joint layout and body joint count (with root) from smplVersion.
-Status versionLayout(const ArrayDict& d, const std::string& path, ModelKind* kind, int* body) {
+Status versionLayout(const DataNode& d, const std::string& path, ModelKind* kind, int* body) {
   int version = 2;
   if (const Array* v = find(d, "smplVersion")) {
     if (v->isString() || v->data.size() != 1 || !(v->data[0] >= 0 && v->data[0] <= 100))
@@ -44,7 +44,7 @@ Status versionLayout(const ArrayDict& d, const std::string& path, ModelKind* kin
 }
 
 // Optional (T,J,3) part pose into joints [first, first+J) of every frame.
-Status putPart(const ArrayDict& d, const std::string& path, const char* key, int joints, int first,
+Status putPart(const DataNode& d, const std::string& path, const char* key, int joints, int first,
                Motion* m) {
   const Array* a = find(d, key);
   if (!a) return Status();
@@ -58,7 +58,7 @@ Status putPart(const ArrayDict& d, const std::string& path, const char* key, int
   return Status();
 }
 
-Status readScalars(const ArrayDict& d, const std::string& path, Motion* m) {
+Status readScalars(const DataNode& d, const std::string& path, Motion* m) {
   static const char* kGenders[] = {"neutral", "male", "female"};
   if (const Array* g = find(d, "gender")) {
     if (!g->strings.empty())
@@ -79,13 +79,11 @@ Status readScalars(const ArrayDict& d, const std::string& path, Motion* m) {
     if (Status s = checkFrameRate(r->data[0], path, "'frameRate'"); !s) return s;
     m->fps = r->data[0];
   }
-  if (const Array* e = find(d, "expressionParameters"))
-    m->notes.push_back("'expressionParameters' " + shapeString(e->shape) +
-                       " are not baked (the export has a fixed expression)");
+
   return Status();
 }
 
-Status readTranslation(const ArrayDict& d, const std::string& path, Motion* m) {
+Status readTranslation(const DataNode& d, const std::string& path, Motion* m) {
   const int64_t t = static_cast<int64_t>(m->frames.size());
   m->translation.assign(t, Eigen::Vector3d::Zero());
   const Array* a = find(d, "bodyTranslation");
@@ -100,7 +98,7 @@ Status readTranslation(const ArrayDict& d, const std::string& path, Motion* m) {
 }
 
 // Root from `globalOrient` (T,3) / (T,1,3) when bodyPose lacks it.
-Status putRoot(const ArrayDict& d, const std::string& path, Motion* m) {
+Status putRoot(const DataNode& d, const std::string& path, Motion* m) {
   const Array* a = find(d, "globalOrient");
   const int64_t t = static_cast<int64_t>(m->frames.size());
   if (!a) {
@@ -118,7 +116,7 @@ Status putRoot(const ArrayDict& d, const std::string& path, Motion* m) {
 
 }  // namespace
 
-Status decodeSmplCodec(const ArrayDict& d, const std::string& path, Motion* m) {
+Status decodeSmplCodec(const DataNode& d, const std::string& path, Motion* m) {
   int body = 0;
   if (Status s = versionLayout(d, path, &m->layout, &body); !s) return s;
   const Array* pose = find(d, "bodyPose");
@@ -151,8 +149,27 @@ Status decodeSmplCodec(const ArrayDict& d, const std::string& path, Motion* m) {
     if (Status s = putPart(d, path, "rightHandPose", 15, hands + 15, m); !s) return s;
   }
   if (Status s = readTranslation(d, path, m); !s) return s;
+  if (const Array* e = find(d, "expressionParameters"))  // baked with --expression-keys
+    if (Status s = readExpression(*e, path, "expressionParameters", m); !s) return s;
   return readScalars(d, path, m);
 }
 
 }  // namespace motion_detail
+namespace {
+bool matchesSmplCodec(const DataNode& root) { return motion_detail::has(root, "bodyPose"); }
+}  // namespace
+
+const MotionLayout& smplCodecLayout() {
+  static const MotionLayout row{
+      "smplcodec",
+      "Meshcapade SMPLCodec (.smpl)",
+      kNpzFile,
+      matchesSmplCodec,
+      {"smplVersion", "gender", "shapeParameters", "frameCount", "frameRate", "bodyTranslation",
+       "bodyPose", "headPose", "leftHandPose", "rightHandPose", "expressionParameters",
+       "globalOrient"},
+      motion_detail::oneTrack<motion_detail::decodeSmplCodec>};
+  return row;
+}
+
 }  // namespace smpl

@@ -14,23 +14,29 @@
 //                 (with a note). The joint count decides; nothing else does.
 //   headPose      (T,3,3) axis-angle of jaw, left eye, right eye (SMPL-X)
 //   leftHandPose / rightHandPose (T,15,3) axis-angle, index1..thumb3
-//   expressionParameters (T,E)  not baked (a note says so)
+//   expressionParameters (T,E)  SMPL-X expression coefficients per frame, baked
+//                 as expr_<i> weights with --expression-keys (exporter/expression_targets.h)
 // Missing part poses are zeros (rest), as the codec's full_pose fills them.
 // A file without bodyPose is a body shape only (no pose data).
 #pragma once
 
 #include <string>
 
-#include "core/array.h"
+#include "core/data_node.h"
 #include "core/load/motion.h"
+#include "core/load/motion_layout.h"
 #include "core/result.h"
 
 namespace smpl {
 namespace motion_detail {
 
-// Called by loadMotion for files with `bodyPose`: fills frames, layout,
+// The row's decode for files with `bodyPose`: fills frames, layout,
 // translation, betas, gender, fps (0 when `frameRate` is absent), notes.
-Status decodeSmplCodec(const ArrayDict& d, const std::string& path, Motion* m);
+Status decodeSmplCodec(const DataNode& d, const std::string& path, Motion* m);
 
 }  // namespace motion_detail
+
+// The table row (core/load/motion_layout.h): matches `bodyPose`.
+const MotionLayout& smplCodecLayout();
+
 }  // namespace smpl

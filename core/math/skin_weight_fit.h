@@ -39,7 +39,7 @@
 namespace smpl {
 
 struct SkinFitOptions {
-  int max_influences = 4;           // M, 1..K
+  int max_influences = 4;           // M, 1..K (a precondition: clamped to it, not checked)
   int training_poses = 48;          // poses of the fit (axis-angle, uniform in +-pose_scale rad)
   uint64_t seed = 0x5157a11f17ull;  // training set; differs from the report's held-out seed
   double pose_scale = 0.6;          // radians, as samplePoses

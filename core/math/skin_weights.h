@@ -12,6 +12,9 @@ struct SparseSkin {
   Eigen::MatrixXd weights;  // N x M, rows sum to 1; unused slots are joint 0, weight 0
 };
 
+// M = max_influences; a precondition, not a user-facing check (the export
+// request checks --max-influences once, exporter/request/check_request.h):
+// M < 1 is taken as 1.
 SparseSkin pruneWeights(const Eigen::MatrixXd& weights, int max_influences);
 
 // Back to a dense N x K matrix (for the forward pass with pruned weights).

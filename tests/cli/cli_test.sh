@@ -48,7 +48,7 @@ expect_failure too-many-betas 1 "Error in arguments: betas: 11 values given" --m
 expect_failure too-many-influences 1 "Error in arguments: --max-influences must be between 1 and 24 (the model's joints) or 'all'" --model "$models/smpl_small.npz" --out "$work/out.glb" --max-influences 25
 expect_failure too-many-shape-keys 1 "Error in arguments: --shape-keys 100" --model "$models/smpl_small.npz" --out "$work/out.glb" --shape-keys 100
 expect_failure missing-uv 2 "Error loading $work/no_such.obj: cannot open: No such file or directory" --model "$models/smpl_small.npz" --out "$work/out.glb" --uv "$work/no_such.obj"
-expect_failure glb-option-in-fbx-batch 1 "--draco applies only to glTF output" --model builtin --motion-dir "$work" --out-dir "$work/b" --format fbx --draco
+expect_failure glb-option-in-fbx-batch 1 "--draco applies only to .glb, .gltf output" --model builtin --motion-dir "$work" --out-dir "$work/b" --format fbx --draco
 expect_failure flag-with-value 1 "option --draco takes no value" --model builtin --out "$work/out.glb" --draco=yes
 expect_failure alias-twice 1 "option --quiet given twice" --model builtin --out "$work/out.glb" -q --quiet
 expect_failure frames-after-motion 3 "--frames 70:100 is outside the motion's 60 frames" --model builtin --out "$work/out.glb" --motion "$fixtures/motions/smpl_72.npz" --frames 70:100

@@ -44,3 +44,14 @@ add_test(NAME cli.docs
   COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check-cli-docs.py $<TARGET_FILE:smpl-export>
   ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.docs PROPERTIES LABELS cli)
+
+# Motion layouts of today's tools (tests/cli/layouts, docs/motions.md): the numpy references of
+# the video-to-motion cases checked through today's exporter, each clip written in our own terms
+# (AMASS-style npz, turned Y up) and played by three.js (node, web/node_modules) against the
+# reference at 1e-6 m. The cases themselves (run_cases.py without --equivalent) need the layout
+# decoders and are registered with them.
+add_test(NAME cli.layouts.video_equivalent
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/layouts/run_cases.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases video --equivalent
+          --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_video_equivalent)
+set_tests_properties(cli.layouts.video_equivalent PROPERTIES LABELS web)

@@ -1,6 +1,8 @@
-"""Reliability cases for outputs and batch mode (issue 16, kinds 2, 3, 4, 6, 7, 9, 10):
-inputs are never overwritten (same path, symbolic link, hard link; model, motion,
-betas, UV file, sidecar), NaN/Inf never reach a file, batch name collisions and
+"""Reliability cases for outputs and batch mode (issue 16, kinds 2, 3, 4, 6, 7, 9, 10;
+issue 23 item 1): inputs are never overwritten (same path, symbolic link, hard link;
+model, motion, betas, UV file, DMPL basis, sidecar, the batch manifest), directories
+and devices are refused as outputs and as the manifest, a manifest inside the motion
+folder is refused, NaN/Inf never reach a file, batch name collisions and
 a missing motion folder are refused before work, a symbolic-link loop in the
 motion folder is reported per file, a SIGKILLed run leaves only dot-prefixed
 temporaries that the next run removes, output and sidecar are committed
@@ -90,6 +92,66 @@ def inputs_protected():
     expect_failure("protect.batch_output", [exe, "--model", model, "--motion-dir", mdir, "--out-dir", odir],
                    exit_code=1, names=[str(odir / "smpl_72.glb"), str(model)], inputs=[model, mdir],
                    out_dirs=[odir], forbidden=[odir / "plain.glb"])
+    # the DMPL basis is an input too (loaders recognise it by content, not by name)
+    dmpl_dir = fixtures / "dmpl" / "amass"
+    basis = d / "d.glb"
+    shutil.copy(dmpl_dir / "dmpls" / "female" / "model.npz", basis)
+    expect_failure("protect.dmpl_basis", [exe, "--model", dmpl_dir / "smplh" / "female" / "model.npz",
+                                          "--dmpl", basis, "--out", basis],
+                   exit_code=1, names=[str(basis)], inputs=[basis], out_dirs=[d],
+                   forbidden=[f"{basis}.smpl.json"])
+
+
+# -- issue 23 item 1: directories, devices and the batch manifest as outputs --
+
+def output_kinds():
+    d = fresh("kinds")
+    folder = d / "folder.glb"
+    folder.mkdir()
+    expect_failure("kinds.out_is_a_folder", [exe, "--model", "builtin", "--out", folder],
+                   exit_code=1, names=[str(folder), "is a directory"], inputs=[folder], out_dirs=[d],
+                   forbidden=[f"{folder}.smpl.json"])
+    for device in ("/dev/full", "/dev/null"):  # no format extension: refused as such
+        expect_failure(f"kinds.out_is_{device[5:]}", [exe, "--model", "builtin", "--out", device],
+                       exit_code=1, names=[device], out_dirs=[d])
+        link = d / f"{device[5:]}.glb"  # a device under an output's name
+        os.symlink(device, link)
+        expect_failure(f"kinds.out_links_to_{device[5:]}", [exe, "--model", "builtin", "--out", link],
+                       exit_code=1, names=[str(link), "character device"], out_dirs=[d],
+                       forbidden=[f"{link}.smpl.json"])
+    gltf_side = d / "b.bin"  # the buffer of b.gltf
+    gltf_side.mkdir()
+    expect_failure("kinds.gltf_buffer_is_a_folder", [exe, "--model", "builtin", "--out", d / "b.gltf"],
+                   exit_code=1, names=[str(gltf_side), "is a directory"], out_dirs=[d],
+                   forbidden=[d / "b.gltf", d / "b.gltf.smpl.json"])
+    model = d / "model.npz"
+    shutil.copy(models / "smpl_small.npz", model)
+    mdir, odir = fresh("kinds/motions"), work / "kinds" / "out"
+    for f in ("smpl_72.npz", "plain.json"):
+        shutil.copy(motions / f, mdir / f)
+    batch = [exe, "--model", model, "--motion-dir", mdir, "--out-dir", odir, "-q", "--manifest"]
+    outputs = [odir / "smpl_72.glb", odir / "plain.glb"]
+    expect_failure("manifest.is_the_model", batch + [model], exit_code=1, names=[str(model)],
+                   inputs=[model, mdir], out_dirs=[d], forbidden=outputs)
+    expect_failure("manifest.is_a_motion", batch + [mdir / "plain.json"], exit_code=1,
+                   names=[str(mdir / "plain.json"), "would overwrite the input"], inputs=[model, mdir],
+                   out_dirs=[d], forbidden=outputs)
+    expect_failure("manifest.is_an_output", batch + [odir / "plain.glb"], exit_code=1,
+                   names=[str(odir / "plain.glb"), "(--manifest) are the same file"], inputs=[model, mdir],
+                   out_dirs=[d], forbidden=outputs)
+    # /dev/full through a link: were the guard broken, the atomic write would
+    # replace the link, not the device node (the tests may run as root)
+    full = d / "full.jsonl"
+    os.symlink("/dev/full", full)
+    expect_failure("manifest.is_dev_full", batch + [full], exit_code=1,
+                   names=[str(full), "character device"], inputs=[model, mdir], out_dirs=[d],
+                   forbidden=outputs)
+    check("manifest.dev_full_untouched", os.path.islink(full) and pathlib.Path("/dev/full").is_char_device())
+    expect_failure("manifest.in_the_motion_folder", batch + [mdir / "run.jsonl"], exit_code=1,
+                   names=[str(mdir / "run.jsonl"), str(mdir), "--motion-dir"], inputs=[model, mdir],
+                   out_dirs=[d], forbidden=outputs + [mdir / "run.jsonl"])
+    expect_success("manifest.elsewhere_is_written", batch + [d / "run.jsonl"],
+                   outputs=outputs + [d / "run.jsonl"], inputs=[model, mdir])
 
 
 # -- kind 4: NaN / Inf / float overflow never reach a file --
@@ -275,20 +337,22 @@ def pair_commit():
     old_out = _sha(out)
     side.unlink()
     side.mkdir()
-    (side / "keep").write_text("x")  # a non-empty folder where the sidecar goes: its rename fails
-    expect_failure("pair.sidecar_fails_keeps_old_output",
+    (side / "keep").write_text("x")  # a folder where the sidecar goes: refused before any work
+    # (a rename that fails after that check, and the pair's rollback, are the
+    # unit tests FileIo.* of writeFilesTogether)
+    expect_failure("pair.sidecar_is_a_folder_keeps_old_output",
                    [exe, "--model", "builtin", "--max-influences", "2", "--out", out, "-q"],
-                   exit_code=4, names=[str(side)], inputs=[out], out_dirs=[d])
+                   exit_code=1, names=[str(side), "is a directory"], inputs=[out], out_dirs=[d])
     check("pair.old_output_unchanged", os.path.isfile(out) and _sha(out) == old_out)
     out2 = d / "b.glb"
     side2 = pathlib.Path(f"{out2}.smpl.json")
     expect_success("pair.second_export", [exe, "--model", "builtin", "--out", out2, "-q"], outputs=[out2, side2])
     out2.unlink()
     out2.mkdir()
-    (out2 / "keep").write_text("x")  # the output's rename fails: the old sidecar must stay
-    expect_failure("pair.output_fails_keeps_old_sidecar",
+    (out2 / "keep").write_text("x")  # a folder where the output goes: the old sidecar must stay
+    expect_failure("pair.output_is_a_folder_keeps_old_sidecar",
                    [exe, "--model", "builtin", "--max-influences", "2", "--out", out2, "-q"],
-                   exit_code=4, names=[str(out2)], inputs=[side2], out_dirs=[d])
+                   exit_code=1, names=[str(out2), "is a directory"], inputs=[side2], out_dirs=[d])
 
 
 # -- kind 10: batch up to date = same inputs and same options --
@@ -340,6 +404,7 @@ def up_to_date():
 
 
 inputs_protected()
+output_kinds()
 non_finite()
 batch_refusals()
 symlink_loop()

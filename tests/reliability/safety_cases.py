@@ -310,8 +310,12 @@ def not_what_they_claim():
     np.save(d / "big_ft.npy", np.zeros((1, 3)))  # the pair's partner, so big_uv.npy is read
     for name, extra, what in cases:
         path = str(extra[1])
+        before = os.stat(path)  # size and time: hashing 3 GB twice per case would cost minutes
         expect_failure(f"claims.sparse_3GB_{name}", [exe, "--model", MODEL, "--out", out] + extra + FAST,
-                       exit_code=2, names=[path, what], inputs=[extra[1]], **common)
+                       exit_code=2, names=[path, what], **common)
+        after = os.stat(path)
+        check(f"claims.sparse_3GB_{name}_unchanged",
+              (after.st_size, after.st_mtime_ns) == (before.st_size, before.st_mtime_ns), path)
     expect_failure("claims.sparse_3GB_model", [exe, "--model", sparse(d / "m.npz", g3), "--out", out] + FAST,
                    exit_code=2, names=[str(d / "m.npz"), "not a model file"], **common)
     # --model /dev/stdin with a pipe on stdin: not a model (both model readers map the file).

@@ -98,7 +98,7 @@ TEST(Animation, SlerpBetweenFramesAndFrameRange) {
   ASSERT_EQ(clip->times.size(), 19u);
   Eigen::Quaterniond a(l.motion.frames[12][3]), b(l.motion.frames[13][3]);
   EXPECT_LT(clip->rotations[3][5].angularDistance(a.slerp(0.5, b)), 1e-12);
-  EXPECT_FALSE(l.motion.amass);
+  EXPECT_EQ(l.motion.world, MotionWorld::Y);
   EXPECT_LT(
       (clip->rotations[0][0].toRotationMatrix() - l.motion.frames[10][0]).cwiseAbs().maxCoeff(),
       1e-12);
@@ -121,6 +121,59 @@ TEST(Animation, InPlaceKeepsHeightOnly) {
   const Eigen::Matrix3d up =
       Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
   EXPECT_NEAR(clip->root_translation[200].y(), (up * (j0 + l.motion.translation[200])).y(), 1e-12);
+}
+
+// A camera frame (OpenCV: y down, z forward) is turned upright by one half
+// turn about x, about the world origin: --up -y, or the layout's default.
+TEST(Animation, CameraFrameTurnsUprightByAHalfTurnAboutX) {
+  Loaded l = load("smpl_small.npz", "smpl_72.npz");
+  l.motion.world = MotionWorld::CameraYDown;
+  const Eigen::Matrix3d half = Eigen::Vector3d(1, -1, -1).asDiagonal();
+  const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
+  for (UpAxis up : {UpAxis::Auto, UpAxis::NegY, UpAxis::Y}) {
+    AnimationOptions o;
+    o.up = up;
+    Result<AnimationClip> clip = bakeAnimation(l.model, l.asset, l.motion, o, "m.npz");
+    ASSERT_TRUE(clip.ok()) << clip.message();
+    const Eigen::Matrix3d turn = up == UpAxis::Y ? Eigen::Matrix3d::Identity() : half;
+    EXPECT_EQ(clip->source.world, up == UpAxis::Y ? "y" : "-y");
+    for (int i : {0, 7, 29}) {
+      const Rotations& src = l.motion.frames[i];
+      EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - turn * src[0]).cwiseAbs().maxCoeff(),
+                1e-12);
+      EXPECT_LT((clip->root_translation[i] - turn * (j0 + l.motion.translation[i])).norm(), 1e-12);
+    }
+  }
+  EXPECT_LT((worldTurn(UpAxis::Auto, MotionWorld::Z) -
+             Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix())
+                .norm(),
+            1e-15);
+}
+
+// A per-frame frame change (EasyMocap's Rh/Th) turns and moves the whole
+// posed body about the world origin: root A R_0, root node A (J_0 + t) + b.
+TEST(Animation, FrameChangeMovesTheBodyAboutTheOrigin) {
+  Loaded l = load("smpl_small.npz", "smpl_72.npz");
+  const size_t t = l.motion.frames.size();
+  for (size_t f = 0; f < t; ++f) {
+    l.motion.world_rotation.push_back(
+        Eigen::AngleAxisd(0.05 * f, Eigen::Vector3d(0.3, 1, 0.2).normalized()).toRotationMatrix());
+    l.motion.world_translation.emplace_back(0.1 * f, 1.0, -2.0);
+  }
+  Result<AnimationClip> clip = bakeAnimation(l.model, l.asset, l.motion, AnimationOptions(), "m");
+  ASSERT_TRUE(clip.ok()) << clip.message();
+  const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
+  for (int i : {0, 11, 29}) {
+    const Eigen::Matrix3d& a = l.motion.world_rotation[i];
+    EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - a * l.motion.frames[i][0])
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-12);
+    EXPECT_LT((clip->root_translation[i] -
+               (a * (j0 + l.motion.translation[i]) + l.motion.world_translation[i]))
+                  .norm(),
+              1e-12);
+  }
 }
 
 }  // namespace

@@ -13,8 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/export_job.h"
-#include "core/demo/demo_body.h"
+#include "exporter/request/run_request.h"
 
 namespace smpl {
 namespace {
@@ -44,13 +43,21 @@ class BatchPlanTest : public ::testing::Test {
   // Plans, converts what is not up to date, and returns whether the (one)
   // output was up to date.
   bool planAndConvert(const Settings& s) {
+    EXPECT_TRUE(beginRun(s.request).ok());
     Result<BatchPlan> plan = planBatch(s);
     EXPECT_TRUE(plan.ok()) << plan.message();
     EXPECT_EQ(plan->outputs.size(), 1u);
     const PlannedOutput& p = plan->outputs[0];
-    if (!p.up_to_date) {
-      Result<ExportReport> r =
-          runExport(demoBody(), s, ExportJob{p.out, {p.motion}, false, p.producer_hash});
+    if (!p.up_to_date) {  // as cli/batch.cpp runs a planned output
+      ModelSource models(s.request.model);
+      Result<RunInputs> inputs = loadRunInputs(s.request, &models);
+      EXPECT_TRUE(inputs.ok()) << inputs.message();
+      ExportRequest job = s.request;
+      job.out = p.out;
+      job.motions = {p.motion};
+      job.producer_hash = p.producer_hash;
+      job.clean_temporaries = false;
+      Result<ExportReport> r = runExportJob(job, *inputs, &models);
       EXPECT_TRUE(r.ok()) << r.message();
     }
     return p.up_to_date;

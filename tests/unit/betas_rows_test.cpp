@@ -5,10 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/betas_file.h"
-#include "cli/options.h"
-#include "cli/settings.h"
 #include "core/io/npz.h"
+#include "core/load/betas_file.h"
 #include "core/load/motion.h"
 #include "tests/unit/test_util.h"
 

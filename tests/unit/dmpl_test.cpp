@@ -18,6 +18,7 @@
 #include "exporter/dmpl_targets.h"
 #include "exporter/pipeline.h"
 #include "plugins/writer.h"
+#include "tests/unit/test_asset.h"
 
 namespace smpl {
 namespace {
@@ -99,37 +100,6 @@ TEST(DmplLayout, WeightsSpanZeroToOneAndStaticIsRest) {
   EXPECT_EQ(rest[0].offset, 0.0);
 }
 
-// Engine playback of frame `f`: LBS of (base + sum w_t d_t) with node world
-// transforms from the clip and inverse bind matrices translation(-J_k).
-Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip, int f) {
-  const Skeleton& s = a.skeleton;
-  const size_t k = s.parents.size();
-  std::vector<Eigen::Affine3d> world(k);
-  for (size_t j = 0; j < k; ++j) {
-    Eigen::Vector3d t =
-        j == 0 ? clip.root_translation[f]
-               : (clip.joint_translations.empty() ? Eigen::Vector3d(s.rest_local.row(j).transpose())
-                                                  : clip.joint_translations[j][f]);
-    Eigen::Affine3d local = Eigen::Translation3d(t) * clip.rotations[j][f];
-    world[j] = s.parents[j] < 0 ? local : world[s.parents[j]] * local;
-  }
-  Eigen::MatrixXd v = a.mesh.positions.cast<double>();
-  for (size_t t = 0; t < a.mesh.morph_targets.size(); ++t)
-    v += double(clip.morph_weights(f, t)) * a.mesh.morph_targets[t].deltas.cast<double>();
-  Eigen::MatrixXd out(v.rows(), 3);
-  for (Eigen::Index i = 0; i < v.rows(); ++i) {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    for (Eigen::Index m = 0; m < a.mesh.joints.cols(); ++m) {
-      const int j = a.mesh.joints(i, m);
-      p += double(a.mesh.weights(i, m)) *
-           (world[j] * (Eigen::Vector3d(v.row(i).transpose()) -
-                        Eigen::Vector3d(s.rest_world.row(j).transpose())));
-    }
-    out.row(i) = p.transpose();
-  }
-  return out;
-}
-
 // The published math at source frame f (no resampling: same rate), Y-up.
 Eigen::MatrixXd published(const BodyModel& model, const Asset& a, const Motion& m,
                           const DmplBasis& b, int f, const Eigen::MatrixXd& pruned) {
@@ -171,7 +141,7 @@ double bakeAndCompare(bool regressed, double* joint_error, Asset* baked = nullpt
   double worst = 0;
   for (int f = 0; f < 90; f += 7) {
     const Eigen::MatrixXd e =
-        enginePlayback(*a, *clip, f) - published(*model, *a, *m, *b, f, pruned);
+        test::enginePlayback(*a, *clip, f) - published(*model, *a, *m, *b, f, pruned);
     worst = std::max(worst, e.rowwise().norm().maxCoeff());
   }
   *joint_error = clip->dmpl_joint_error;

@@ -55,7 +55,11 @@ TEST(MotionFormats, SmplCodecWithRoot) {
     EXPECT_LT(rotationError(m->frames[f][25 + 4], stored(raw->at("leftHandPose"), f, 4)), 1e-12);
     EXPECT_LT(rotationError(m->frames[f][40 + 14], stored(raw->at("rightHandPose"), f, 14)), 1e-12);
   }
-  EXPECT_TRUE(hasNote(*m, "expressionParameters"));
+  // expressionParameters (T,E): per-frame coefficients, baked with --expression-keys
+  const Array& expression = raw->at("expressionParameters");
+  ASSERT_EQ(m->expression.rows(), 40);
+  ASSERT_EQ(m->expression.cols(), expression.shape[1]);
+  EXPECT_EQ(m->expression(17, 3), expression.data[17 * expression.shape[1] + 3]);
 }
 
 TEST(MotionFormats, SmplCodecWithoutRoot) {
@@ -189,7 +193,7 @@ TEST(MotionFormats, AistTranslationIsDividedByTheScaling) {
   EXPECT_EQ(m->fps, 60.0);
   EXPECT_TRUE(m->fps_assumed);
   EXPECT_TRUE(hasNote(*m, "AIST++"));
-  EXPECT_FALSE(m->amass);  // Y-up world
+  EXPECT_EQ(m->world, MotionWorld::Y);  // Y-up world
 }
 
 TEST(MotionFormats, FrameRateAssumedOrStated) {

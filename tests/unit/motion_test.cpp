@@ -16,7 +16,7 @@ TEST(Motion, AmassSmplh) {
   EXPECT_EQ(m->fps, 120.0);
   EXPECT_EQ(m->betas.size(), 16u);
   EXPECT_EQ(m->gender, "female");
-  EXPECT_TRUE(m->amass);
+  EXPECT_EQ(m->world, MotionWorld::Z);
   EXPECT_NEAR(m->translation[100].x(), 0.2, 1e-12);
 }
 
@@ -26,7 +26,7 @@ TEST(Motion, AmassSmplxSplitKeys) {
   EXPECT_EQ(m->layout, ModelKind::SmplX);
   EXPECT_EQ(m->frames[0].size(), 55u);
   EXPECT_EQ(m->fps, 60.0);
-  EXPECT_TRUE(m->amass);
+  EXPECT_EQ(m->world, MotionWorld::Z);
 }
 
 TEST(Motion, MatricesEqualAxisAngle) {
@@ -34,7 +34,7 @@ TEST(Motion, MatricesEqualAxisAngle) {
   Result<Motion> mats = loadMotion(kMotions + "matrices.npz");
   ASSERT_TRUE(aa.ok()) << aa.message();
   ASSERT_TRUE(mats.ok()) << mats.message();
-  EXPECT_FALSE(aa->amass);
+  EXPECT_EQ(aa->world, MotionWorld::Y);
   ASSERT_EQ(aa->frames.size(), mats->frames.size());
   for (size_t f = 0; f < aa->frames.size(); f += 7)
     for (int j = 0; j < 24; ++j)

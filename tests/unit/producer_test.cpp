@@ -1,6 +1,7 @@
 // producerBase: which options and which input files change the producer hash
-// (cli/producer.h), read from the option table's Hashed column.
-#include "cli/producer.h"
+// (exporter/request/producer.h); the command line fills the hashed options
+// from its option table's Hashed column.
+#include "exporter/request/producer.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -10,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/settings.h"
+
 namespace smpl {
 namespace {
 
@@ -18,7 +21,7 @@ std::string hashOf(std::vector<const char*> argv) {
   Result<Settings> s = parseSettings(static_cast<int>(argv.size()), argv.data());
   EXPECT_TRUE(s.ok()) << s.message();
   if (!s) return "";
-  Result<ContentHash> h = producerBase(*s);
+  Result<ContentHash> h = producerBase(s->request);
   EXPECT_TRUE(h.ok()) << h.message();
   return h ? h->hex() : "";
 }

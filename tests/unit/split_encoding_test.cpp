@@ -75,14 +75,9 @@ TEST(SplitEncoding, OtherEncodingsAreNotRectified) {
   EXPECT_EQ(metadataJson(*asset).find("rectified"), std::string::npos);
 }
 
-TEST(SplitEncoding, RefusedWithACorrectiveBasis) {
-  ExportOptions o;
-  o.encoding = CorrectiveEncoding::Split;
-  o.corrective_basis = 8;
-  Result<Asset> asset = buildAsset(demoBody(), o);
-  ASSERT_FALSE(asset.ok());
-  EXPECT_NE(asset.message().find("conflicts with --corrective-weights split"), std::string::npos);
-}
+// The split encoding with a corrective basis is refused by the request
+// (check_request_test.cpp: "--corrective-basis conflicts with
+// --corrective-weights split"), before buildAsset.
 
 // Sum of every basis target's weight times delta for feature vector f.
 Eigen::MatrixXd basisOffset(const Asset& a, const Eigen::VectorXd& f) {

@@ -122,4 +122,35 @@ inline Asset makeAsset(const AssetSpec& spec) {
   return a;
 }
 
+// Engine playback of frame `f`: LBS of (base + sum w_t d_t) with node world
+// transforms from the clip and inverse bind matrices translation(-J_k).
+inline Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip, int f) {
+  const Skeleton& s = a.skeleton;
+  const size_t k = s.parents.size();
+  std::vector<Eigen::Affine3d> world(k);
+  for (size_t j = 0; j < k; ++j) {
+    Eigen::Vector3d t =
+        j == 0 ? clip.root_translation[f]
+               : (clip.joint_translations.empty() ? Eigen::Vector3d(s.rest_local.row(j).transpose())
+                                                  : clip.joint_translations[j][f]);
+    Eigen::Affine3d local = Eigen::Translation3d(t) * clip.rotations[j][f];
+    world[j] = s.parents[j] < 0 ? local : world[s.parents[j]] * local;
+  }
+  Eigen::MatrixXd v = a.mesh.positions.cast<double>();
+  for (size_t t = 0; t < a.mesh.morph_targets.size(); ++t)
+    v += double(clip.morph_weights(f, t)) * a.mesh.morph_targets[t].deltas.cast<double>();
+  Eigen::MatrixXd out(v.rows(), 3);
+  for (Eigen::Index i = 0; i < v.rows(); ++i) {
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (Eigen::Index m = 0; m < a.mesh.joints.cols(); ++m) {
+      const int j = a.mesh.joints(i, m);
+      p += double(a.mesh.weights(i, m)) *
+           (world[j] * (Eigen::Vector3d(v.row(i).transpose()) -
+                        Eigen::Vector3d(s.rest_world.row(j).transpose())));
+    }
+    out.row(i) = p.transpose();
+  }
+  return out;
+}
+
 }  // namespace smpl::test

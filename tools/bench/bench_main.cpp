@@ -130,7 +130,7 @@ void benchAnimation(const BodyModel& model, double minutes) {
   motion.name = "synthetic";
   motion.layout = ModelKind::SmplH;
   motion.fps = 120;
-  motion.amass = true;
+  motion.world = MotionWorld::Z;
   std::vector<Eigen::VectorXd> poses = samplePoses(52, 64, 5, 0.5);
   for (int f = 0; f < frames; ++f) motion.frames.push_back(rotationsFromAxisAngle(poses[f % 64]));
   motion.translation.assign(frames, Eigen::Vector3d::Zero());

@@ -17,6 +17,13 @@
 // vertices_full (P,N,3), v_shaped (N,3), rest_joints (K,3), skin_weights (N,K)
 // (the exported skin, dense); the header also names "skin_weights"; with --dump-model also posedirs
 // (N,3,9(K-1)) and weights (N,K), for models that have no file (builtin).
+//
+// --model, --betas, --max-influences and --skin-weights are the export's own
+// options: they are parsed by smpl-export's option table (cli/options.h) into
+// an ExportRequest, checked by the request's checks and the model loaded by
+// its ModelSource (exporter/request/), so this tool takes exactly what
+// smpl-export takes, with the same messages. --poses, --seed, --dump-model
+// and --out (a prefix) are this tool's own.
 #include <Eigen/Core>
 #include <cstdint>
 #include <cstdio>
@@ -27,22 +34,25 @@
 #include <string>
 #include <vector>
 
-#include "core/demo/demo_body.h"
-#include "core/load/model_loader.h"
+#include "cli/options.h"
+#include "cli/settings.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
 #include "exporter/export_skin.h"
+#include "exporter/request/check_request.h"
+#include "exporter/request/model_source.h"
+#include "exporter/request/request_options.h"
 
 namespace {
 
 struct Options {
-  std::string model, out;
-  std::vector<double> betas;
-  int max_influences = 4, poses = 20;
+  smpl::Settings export_settings;  // request: --model, --betas, --max-influences, --skin-weights
+  std::string out;
+  int poses = 20;
   uint64_t seed = 1;
   bool dump_model = false;
-  smpl::SkinWeightMethod skin_weights = smpl::ExportOptions().skin_weights;  // the CLI's default
+  const smpl::ExportRequest& request() const { return export_settings.request; }
 };
 
 struct Output {
@@ -66,50 +76,34 @@ struct Output {
   }
 };
 
-bool parseList(const char* text, std::vector<double>* out) {
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    char* end = nullptr;
-    double v = std::strtod(item.c_str(), &end);
-    if (item.empty() || *end != '\0') return false;
-    out->push_back(v);
-  }
-  return true;
-}
-
+// The export options through smpl-export's own table; this tool's flags here.
 bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
     bool needs = a != "--dump-model";
     if (needs && !v) return *error = a + ": missing value", false;
-    if (a == "--model")
-      o->model = v;
-    else if (a == "--out")
+    if (a == "--model" || a == "--betas" || a == "--max-influences" || a == "--skin-weights") {
+      smpl::Status st = smpl::findOption(a)->apply(v, &o->export_settings);
+      if (!st) return *error = st.message(), false;
+    } else if (a == "--out") {
       o->out = v;
-    else if (a == "--betas") {
-      if (!parseList(v, &o->betas)) return *error = "--betas: bad list", false;
-    } else if (a == "--max-influences")
-      o->max_influences = std::strcmp(v, "all") ? std::atoi(v) : smpl::kAllInfluences;
-    else if (a == "--skin-weights") {
-      if (std::strcmp(v, "truncated") && std::strcmp(v, "optimized"))
-        return *error = "--skin-weights: bad value", false;
-      o->skin_weights = std::strcmp(v, "truncated") ? smpl::SkinWeightMethod::Optimized
-                                                    : smpl::SkinWeightMethod::Truncated;
-    } else if (a == "--poses")
+    } else if (a == "--poses") {
       o->poses = std::atoi(v);
-    else if (a == "--seed")
+    } else if (a == "--seed") {
       o->seed = std::strtoull(v, nullptr, 10);
-    else if (a == "--dump-model")
+    } else if (a == "--dump-model") {
       o->dump_model = true;
-    else
+    } else {
       return *error = "unknown option " + a, false;
+    }
     if (needs) ++i;
   }
-  if (o->model.empty() || o->out.empty()) return *error = "--model and --out are required", false;
-  if ((o->max_influences < 1 && o->max_influences != smpl::kAllInfluences) || o->poses < 1)
-    return *error = "--max-influences (a count or all) and --poses must be >= 1", false;
+  if (o->request().model.empty() || o->out.empty())
+    return *error = "--model and --out are required", false;
+  if (o->poses < 1) return *error = "--poses must be >= 1", false;
+  if (smpl::Status st = smpl::checkRequestOptions(o->request()); !st)
+    return *error = st.message(), false;
   return true;
 }
 
@@ -126,9 +120,9 @@ bool writeFiles(const Options& o, const smpl::BodyModel& model, const Output& ou
     json << (k ? "," : "") << quoted(model.joint_names[k]);
   json << "],\"parents\":[";
   for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << model.parents[k];
-  json << "],\"max_influences\":"
-       << (o.max_influences == smpl::kAllInfluences ? model.numJoints() : o.max_influences)
-       << ",\"skin_weights\":" << quoted(smpl::skinWeightMethodName(o.skin_weights))
+  const smpl::ExportRequest& r = o.request();
+  json << "],\"max_influences\":" << (r.all_influences ? model.numJoints() : r.max_influences)
+       << ",\"skin_weights\":" << quoted(smpl::skinWeightMethodName(r.skin_weights))
        << ",\"num_vertices\":" << model.numVertices() << ",\"num_joints\":" << model.numJoints()
        << ",\"arrays\":{" << out.arrays.str() << "}}\n";
   return bin.good() && json.good();
@@ -143,19 +137,23 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "smpl-reference: %s\n", error.c_str());
     return 2;
   }
-  smpl::Result<smpl::BodyModel> model = o.model == "builtin"
-                                            ? smpl::Result<smpl::BodyModel>(smpl::demoBody())
-                                            : smpl::loadModel(o.model);
-  if (!model) {
-    std::fprintf(stderr, "smpl-reference: %s\n", model.message().c_str());
+  const smpl::ExportRequest& request = o.request();
+  smpl::ModelSource models(request.model);  // a file, builtin, or a folder's neutral pick
+  smpl::Result<smpl::ModelPick> pick = models.forMotion(nullptr);
+  if (!pick) {
+    std::fprintf(stderr, "smpl-reference: %s\n", pick.message().c_str());
     return 3;
   }
+  const smpl::BodyModel* model = pick->model;
+  if (smpl::Status st = smpl::checkRequestForModel(request, request.betas, *model); !st) {
+    std::fprintf(stderr, "smpl-reference: %s\n", st.message().c_str());
+    return 2;
+  }
   const int n = model->numVertices(), k = model->numJoints(), p = o.poses;
-  smpl::ExportOptions export_options;
-  export_options.max_influences = o.max_influences;
-  export_options.skin_weights = o.skin_weights;
+  const smpl::ExportOptions export_options = smpl::exportOptionsOf(request, request.betas);
+  const std::vector<double>& beta_values = request.betas;
   const Eigen::VectorXd betas =
-      Eigen::Map<const Eigen::VectorXd>(o.betas.data(), Eigen::Index(o.betas.size()));
+      Eigen::Map<const Eigen::VectorXd>(beta_values.data(), Eigen::Index(beta_values.size()));
   smpl::Result<smpl::ShapedBody> body = smpl::shapeBody(*model, betas);
   if (!body) {
     std::fprintf(stderr, "smpl-reference: %s\n", body.message().c_str());
@@ -168,8 +166,7 @@ int main(int argc, char** argv) {
   Eigen::MatrixXd v_pruned(p, 3 * n), v_full(p, 3 * n), v_shaped, rest_joints;
   for (int i = 0; i < p; ++i) {
     smpl::ForwardInput in;
-    in.betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(),
-                                                 static_cast<Eigen::Index>(o.betas.size()));
+    in.betas = betas;
     in.rotations = smpl::rotationsFromAxisAngle(poses[i]);
     in.weights = &pruned;
     smpl::Result<smpl::ForwardResult> a = smpl::forward(*model, in);

@@ -171,7 +171,7 @@ Result<bool> toArray(Heap& heap, Ref r, Array* out) { return convert(heap, r, ou
 Result<ArrayDict> parsePickle(const uint8_t* data, size_t size, const std::string& context,
                               const PickleLimits& limits) {
   using namespace pickle;
-  Heap heap(context, limits.max_total_bytes);
+  Heap heap(context, limits, size);
   Result<Ref> root = runPickle(heap, data, size, limits);
   if (!root) return root.error();
   if (heap.at(*root).kind != Kind::Dict) {

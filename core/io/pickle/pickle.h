@@ -11,7 +11,9 @@
 //   containers      dict, list, tuple, str, bytes, int, float, bool, None
 // The top level must be a dict; entries whose value is an array-like
 // (ndarray, sparse, Ch, list of numbers, string) become Arrays, the rest are
-// dropped.
+// dropped. The readers of tools' containers (joblib, torch .pt, nested
+// values as trees) are in pickle_tree.h; they extend this allow-list only
+// for their own containers.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +28,16 @@ struct PickleLimits {
   uint64_t max_memo = 1u << 20;         // memo entries
   uint64_t max_stack_depth = 1u << 16;  // nesting
   uint64_t max_total_bytes = 4ull << 30;
+  // What the objects built from one input (and the arrays converted from
+  // them) may take in all: max(expansion_floor, expansion x the input's
+  // bytes), and never more than max_total_bytes. Building from the data
+  // itself stays far below 256 bytes per input byte (one opcode byte makes at
+  // most one object; uint8 arrays widen 8x to doubles, 16x with their copy);
+  // beyond it the objects can only come from sharing: memo references that
+  // repeat one list or array thousands of times. So a 16 KiB pickle is
+  // refused at 64 MiB instead of reaching gigabytes first.
+  uint64_t expansion = 256;
+  uint64_t expansion_floor = 64ull << 20;
 };
 
 Result<ArrayDict> parsePickle(const uint8_t* data, size_t size, const std::string& context,

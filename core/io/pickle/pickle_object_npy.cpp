@@ -3,8 +3,11 @@
 // data-only VM, then the array's elements turned into one Array: numbers and
 // strings element-wise, or for a 0-d array its one value (an array-like, or a
 // dict of string -> number such as a joint-name -> index map).
+// parseNpyTree: the same payload as a tree (pickle_tree.h), e.g. TRAM's and
+// MDM's np.save of a dict; a numeric .npy as one leaf.
 #include "core/io/npy.h"
 #include "core/io/pickle/pickle_internal.h"
+#include "core/io/pickle/pickle_tree.h"
 
 namespace smpl {
 namespace pickle {
@@ -68,7 +71,7 @@ Result<Array> parseObjectNpy(const uint8_t* data, size_t size, const std::string
   if (!h) return h.error();
   if (!isObjectDescr(h->descr))
     return makeError(context + ": dtype '" + h->descr + "' is not an object array");
-  Heap heap(context, limits.max_total_bytes);
+  Heap heap(context, limits, size);
   Result<Ref> root = runPickle(heap, data + h->data_offset, size - h->data_offset, limits);
   if (!root) return root.error();
   const PyObj& o = heap.at(*root);
@@ -89,6 +92,34 @@ Result<Array> parseObjectNpy(const uint8_t* data, size_t size, const std::string
     return a;
   }
   return elementsToArray(heap, o);
+}
+
+Result<DataNode> parseNpyTree(const uint8_t* data, size_t size, const std::string& context,
+                              const PickleLimits& limits) {
+  using namespace pickle;
+  Result<NpyHeaderInfo> h = parseNpyHeader(data, size, context);
+  if (!h) return h.error();
+  if (!isObjectDescr(h->descr)) {
+    Result<Array> a = parseNpy(data, size, context);
+    if (!a) return a.error();
+    DataNode leaf;
+    leaf.kind = DataNode::Kind::Array;
+    leaf.array = std::move(*a);
+    return leaf;
+  }
+  VmOptions options;
+  options.tree = true;
+  Heap heap(context, limits, size, std::move(options));
+  Result<Ref> root = runPickle(heap, data + h->data_offset, size - h->data_offset, limits);
+  if (!root) return root.error();
+  const PyObj& o = heap.at(*root);
+  if (o.kind != Kind::NdArray || !o.object_array)
+    return heap.fail("object .npy data is a " + typeName(heap, *root) +
+                     ", expected an object ndarray");
+  if (o.object_shape != h->shape)
+    return heap.fail("object array shape " + shapeString(o.object_shape) +
+                     " disagrees with the header's " + shapeString(h->shape));
+  return toTree(heap, *root);
 }
 
 }  // namespace smpl

@@ -12,16 +12,45 @@ namespace pickle {
 
 // ---- heap ------------------------------------------------------------------
 
-Heap::Heap(const std::string& context, uint64_t byte_limit)
-    : context_(context), limit_(byte_limit) {
+uint64_t heapByteLimit(const PickleLimits& limits, uint64_t input_bytes) {
+  const uint64_t scaled = input_bytes > UINT64_MAX / std::max<uint64_t>(limits.expansion, 1)
+                              ? UINT64_MAX
+                              : input_bytes * limits.expansion;
+  return std::min(limits.max_total_bytes, std::max(limits.expansion_floor, scaled));
+}
+
+Heap::Heap(const std::string& context, const PickleLimits& limits, uint64_t input_bytes,
+           VmOptions options)
+    : context_(context),
+      options_(std::move(options)),
+      limit_(heapByteLimit(limits, input_bytes)),
+      input_bytes_(input_bytes),
+      expansion_(limits.expansion),
+      expansion_floor_(limits.expansion_floor),
+      input_bound_(limit_ < limits.max_total_bytes) {
   objs_.emplace_back();  // Ref 0: None
 }
 
-Status Heap::charge(uint64_t bytes, const char* what) {
-  if (bytes > limit_ || used_ > limit_ - bytes) {
+Status Heap::count(uint64_t bytes, const char* what) {
+  if (bytes > limit_ || used_ > limit_ - bytes) return check(bytes, what);
+  used_ += bytes;
+  return Status::success();
+}
+
+Status Heap::check(uint64_t bytes, const char* what) const {
+  if (bytes <= limit_ && used_ <= limit_ - bytes) return Status::success();
+  if (!input_bound_)
     return fail(std::string(what) + " of " + std::to_string(bytes) +
                 " bytes exceeds the limit of " + std::to_string(limit_) + " bytes for one pickle");
-  }
+  return fail(std::string(what) + " of " + std::to_string(bytes) + " bytes exceeds the limit of " +
+              std::to_string(limit_) + " bytes for an input of " + std::to_string(input_bytes_) +
+              " bytes (" + std::to_string(expansion_) + " bytes per input byte, at least " +
+              formatBytes(expansion_floor_) +
+              "; beyond that only shared objects repeated many times could need more)");
+}
+
+Status Heap::charge(uint64_t bytes, const char* what) {
+  if (bytes > limit_ || used_ > limit_ - bytes) return check(bytes, what);
   if (Status st = budget_.add(bytes, context_, std::string("unpickling (") + what + ")"); !st)
     return st;
   used_ += bytes;
@@ -102,6 +131,24 @@ bool inPackage(const std::string& module, const std::string& package) {
   return module == package || startsWith(module, package + ".");
 }
 
+// What tools' containers add (VmOptions::tree): joblib's array wrapper,
+// defaultdict and its factory, numpy's ndarray subclasses.
+bool resolveTreeGlobal(const std::string& module, const std::string& name, GlobalId* id) {
+  const bool builtins = module == "builtins" || module == "__builtin__";
+  if (module == "joblib.numpy_pickle" && name == "NumpyArrayWrapper")
+    *id = GlobalId::JoblibWrapper;
+  else if (module == "collections" && name == "defaultdict")
+    *id = GlobalId::DefaultDict;
+  else if (builtins && (name == "dict" || name == "list" || name == "set" || name == "int" ||
+                        name == "float" || name == "str" || name == "tuple"))
+    *id = GlobalId::Factory;
+  else if (module == "numpy" && (name == "memmap" || name == "matrix"))
+    *id = GlobalId::NdArrayClass;
+  else
+    return false;
+  return true;
+}
+
 }  // namespace
 
 Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module,
@@ -148,6 +195,22 @@ Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module,
     if (name == "coo_matrix" || name == "coo_array") return GlobalId::Coo;
   }
   const std::string full = printable(module + "." + name, 200);
+  const VmOptions& options = heap.options();
+  if (options.tree) {
+    GlobalId id;
+    if (resolveTreeGlobal(module, name, &id)) return id;
+    if (inPackage(module, "joblib") && (name == "NDArrayWrapper" || name == "ZNDArrayWrapper"))
+      return heap.fail("an array that joblib < 0.10 stored in a separate file ('" + full +
+                       "'): load it with joblib and dump it again with joblib >= 0.10");
+  }
+  if (options.torch_storage) {
+    GlobalId id;
+    if (resolveTorchGlobal(module, name, &id)) return id;
+  } else if (options.tree && inPackage(module, "torch")) {
+    return heap.fail("refusing pickle global '" + full +
+                     "': torch objects are read from torch.save files (.pt) only; save them with "
+                     "torch.save, or convert tensors with .numpy() before pickling");
+  }
   return heap.fail("refusing pickle global '" + full + "' (not model data)");
 }
 
@@ -245,6 +308,7 @@ Result<Ref> newObject(Heap& heap, Ref cls, Ref args) {
     case GlobalId::Csr:
     case GlobalId::Coo:
     case GlobalId::Object:
+    case GlobalId::JoblibWrapper:
       return makeInstance(heap, id, name, heap.at(args).items);
     case GlobalId::OrderedDict:
       return makeObj(heap, Kind::Dict);
@@ -300,6 +364,8 @@ Result<Ref> makeDtype(Heap& heap, const std::vector<Ref>& args) {
   return r;
 }
 
+}  // namespace
+
 Result<std::vector<int64_t>> shapeOf(Heap& heap, Ref r) {
   const PyObj& t = heap.at(r);
   if (t.kind == Kind::Int) return std::vector<int64_t>{t.i};
@@ -313,6 +379,8 @@ Result<std::vector<int64_t>> shapeOf(Heap& heap, Ref r) {
   }
   return shape;
 }
+
+namespace {
 
 Result<Ref> arrayObject(Heap& heap, Result<Array> array) {
   if (!array) return array.error();
@@ -398,8 +466,16 @@ Result<Ref> callGlobal(Heap& heap, Ref callable, Ref args_ref) {
     case GlobalId::Csr:
     case GlobalId::Coo:
       return makeInstance(heap, id, name, std::move(args));
+    case GlobalId::DefaultDict:  // defaultdict(factory): the items follow as SETITEMS
+      return makeObj(heap, Kind::Dict);
+    case GlobalId::TorchRebuildTensor:
+    case GlobalId::TorchRebuildTensorV3:
+    case GlobalId::TorchRebuildParameter:
+    case GlobalId::TorchRebuildFromType:
+    case GlobalId::TorchSize:
+      return callTorchGlobal(heap, id, args);
     default:
-      return heap.fail("calling '" + name + "' is not supported");
+      return heap.fail("calling '" + printable(name, 200) + "' is not supported");
   }
 }
 

@@ -20,9 +20,10 @@ constexpr uint64_t kViewBytes = 4096;
 
 class Vm {
  public:
-  Vm(Heap& heap, const uint8_t* data, size_t size, const PickleLimits& limits)
-      : heap_(heap), data_(data), size_(size), limits_(limits) {}
+  Vm(Heap& heap, const uint8_t* data, size_t size, size_t start, const PickleLimits& limits)
+      : heap_(heap), data_(data), size_(size), pos_(start), limits_(limits) {}
   Result<Ref> run();
+  size_t position() const { return pos_; }
 
  private:
   Status step(uint8_t op);
@@ -67,6 +68,8 @@ class Vm {
   Status textUnicode(const std::string& line);
   Status longBinary(uint64_t n);
   Status global(const std::string& module, const std::string& name);
+  Status persistentId(uint8_t op);
+  Status build(Ref target, Ref state);
   Status appendItems(Ref target, const std::vector<Ref>& items);
   Status setItems(Ref target, const std::vector<Ref>& items);
 
@@ -545,7 +548,7 @@ Status Vm::stepPayload(uint8_t op, bool* handled) {
       return fail("out-of-band pickle buffers are not supported");
     case 'P':
     case 'Q':
-      return fail("persistent IDs are not supported (not model data)");
+      return persistentId(op);
     case 0x82:
     case 0x83:
     case 0x84:
@@ -746,6 +749,25 @@ Status Vm::global(const std::string& module, const std::string& name) {
   return pushNew(std::move(o));
 }
 
+// PERSID / BINPERSID: only a torch archive names its storages this way.
+Status Vm::persistentId(uint8_t op) {
+  if (!heap_.options().torch_storage || op == 'P')
+    return fail("persistent IDs are not supported (not model data)");
+  Result<Ref> pid = pop();
+  if (!pid) return pid.error();
+  Result<Ref> storage = persistentLoad(heap_, *pid);
+  if (!storage) return storage.error();
+  return push(*storage);
+}
+
+// BUILD; joblib writes a NumpyArrayWrapper's array bytes right after it.
+Status Vm::build(Ref target, Ref state) {
+  PK_TRY(buildObject(heap_, target, state));
+  const PyObj& o = heap_.at(target);
+  if (o.kind != Kind::Instance || o.global != GlobalId::JoblibWrapper) return Status::success();
+  return readJoblibArray(heap_, target, data_, size_, &pos_, limits_);
+}
+
 Status Vm::stepObjects(uint8_t op, bool* handled) {
   *handled = true;
   switch (op) {
@@ -804,7 +826,7 @@ Status Vm::stepObjects(uint8_t op, bool* handled) {
   if (!arg) return arg.error();
   Result<Ref> target = op == 'b' ? top() : pop();
   if (!target) return target.error();
-  if (op == 'b') return buildObject(heap_, *target, *arg);
+  if (op == 'b') return build(*target, *arg);
   Result<Ref> obj = op == 'R' ? callGlobal(heap_, *target, *arg) : newObject(heap_, *target, *arg);
   if (!obj) return obj.error();
   return push(*obj);
@@ -813,8 +835,16 @@ Status Vm::stepObjects(uint8_t op, bool* handled) {
 }  // namespace
 
 Result<Ref> runPickle(Heap& heap, const uint8_t* data, size_t size, const PickleLimits& limits) {
-  Vm vm(heap, data, size, limits);
+  Vm vm(heap, data, size, 0, limits);
   return vm.run();
+}
+
+Result<Ref> runPickleAt(Heap& heap, const uint8_t* data, size_t size, size_t start,
+                        const PickleLimits& limits, size_t* end) {
+  Vm vm(heap, data, size, start, limits);
+  Result<Ref> r = vm.run();
+  *end = vm.position();
+  return r;
 }
 
 }  // namespace pickle

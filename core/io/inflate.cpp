@@ -1,0 +1,69 @@
+// inflateStream: zlib's streaming inflate into a buffer that doubles as it
+// fills. Before each doubling the new buffer is charged while the old one
+// still is (both exist during the copy), then the old charge is released.
+#include "core/io/inflate.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+
+namespace smpl {
+namespace {
+
+constexpr uint64_t kChunk = 1u << 30;  // z_stream counts are 32-bit
+
+// Doubles `out` (at least 64 KiB, at most max_bytes), charging first.
+Status grow(InflatedBytes* out, uint64_t max_bytes, const char* name, const std::string& context) {
+  const uint64_t cap = out->data.size();
+  if (cap >= max_bytes)
+    return makeError(context + ": the " + name + " stream inflates to more than " +
+                     formatBytes(max_bytes));
+  const uint64_t next = std::min(max_bytes, std::max<uint64_t>(cap * 2, 64 << 10));
+  MemoryCharge charge;
+  if (Status st = charge.add(next, context, std::string("inflating the ") + name + " stream"); !st)
+    return st;
+  out->data.resize(static_cast<size_t>(next));
+  out->charge = std::move(charge);
+  return Status();
+}
+
+}  // namespace
+
+Result<InflatedBytes> inflateStream(const uint8_t* data, size_t size, StreamFormat format,
+                                    const std::string& context, uint64_t max_bytes) {
+  const char* name = format == StreamFormat::Gzip ? "gzip" : "zlib";
+  InflatedBytes out;
+  z_stream zs{};
+  if (inflateInit2(&zs, format == StreamFormat::Gzip ? 31 : 15) != Z_OK)
+    return makeError(context + ": cannot initialise zlib");
+  uint64_t in_pos = 0, out_pos = 0;
+  Status st;
+  for (bool done = false; st && !done;) {
+    if (zs.avail_in == 0 && in_pos < size) {
+      zs.next_in = const_cast<Bytef*>(data + in_pos);  // zlib's API is not const-correct
+      zs.avail_in = static_cast<uInt>(std::min<uint64_t>(size - in_pos, kChunk));
+      in_pos += zs.avail_in;
+    }
+    if (out_pos == out.data.size() && !(st = grow(&out, max_bytes, name, context))) break;
+    zs.next_out = out.data.data() + out_pos;
+    zs.avail_out = static_cast<uInt>(std::min<uint64_t>(out.data.size() - out_pos, kChunk));
+    const uInt room = zs.avail_out, in_before = zs.avail_in;
+    const int ret = inflate(&zs, Z_NO_FLUSH);
+    out_pos += room - zs.avail_out;
+    done = ret == Z_STREAM_END;
+    if (ret == Z_NEED_DICT || ret == Z_DATA_ERROR || ret == Z_MEM_ERROR || ret == Z_STREAM_ERROR)
+      st = makeError(context + ": corrupt " + name + " data (" +
+                     (zs.msg ? zs.msg : "zlib error " + std::to_string(ret)) + ")");
+    else if (!done && zs.avail_in == 0 && in_pos == size && zs.avail_out > 0)
+      st = makeError(context + ": truncated " + name + " data (the stream ends after " +
+                     std::to_string(size) + " bytes without its end marker)");
+    else if (!done && room == zs.avail_out && in_before == zs.avail_in && zs.avail_out > 0)
+      st = makeError(context + ": corrupt " + name + " data (no progress)");
+  }
+  inflateEnd(&zs);
+  if (!st) return st.error();
+  out.data.resize(static_cast<size_t>(out_pos));  // capacity (and its charge) stay
+  return out;
+}
+
+}  // namespace smpl

@@ -1,0 +1,91 @@
+// The motion reader table (motion_layout.h): every layout, in detection
+// order, and what is derived from it.
+#include <algorithm>
+#include <cctype>
+
+#include "core/io/printable.h"
+#include "core/load/motion_aist.h"
+#include "core/load/motion_amass.h"
+#include "core/load/motion_beat2.h"
+#include "core/load/motion_fit.h"
+#include "core/load/motion_layout.h"
+#include "core/load/motion_smplcodec.h"
+#include "core/load/motion_vposer.h"
+
+namespace smpl {
+
+const std::vector<MotionLayout>& motionLayouts() {
+  // Order: a layout whose keys another layout's files may also carry comes after it.
+  static const std::vector<MotionLayout> table = {
+      smplCodecLayout(),  // bodyPose (.smpl)
+      aistLayout(),       // smpl_poses
+      vposerLayout(),  // latent_pose, pose_embedding, latent (refused) before AMASS's root_orient
+      beat2Layout(),   // poses + expressions / model, before AMASS's poses
+      amassLayout(),   // poses, root_orient
+      fitLayout(),     // body_pose, global_orient
+  };
+  return table;
+}
+
+const MotionLayout* findLayout(const DataNode& root, unsigned container) {
+  for (const MotionLayout& row : motionLayouts())
+    if ((row.containers & container) && row.matches(root)) return &row;
+  return nullptr;
+}
+
+std::vector<std::string> motionFileExtensions() {
+  unsigned containers = 0;
+  for (const MotionLayout& row : motionLayouts()) containers |= row.containers;
+  std::vector<std::string> out;
+  if (containers & kNpzFile) out.insert(out.end(), {".npz", ".smpl"});
+  if (containers & (kPickleFile | kJoblibFile)) out.push_back(".pkl");
+  if (containers & kJoblibFile) out.push_back(".joblib");
+  if (containers & kTorchFile) out.insert(out.end(), {".pt", ".pth"});
+  if (containers & kNpyFile) out.push_back(".npy");
+  if (containers & kJsonFile) out.push_back(".json");
+  return out;
+}
+
+namespace {
+
+// A key that names pose data in some layout ("poses", "body_pose",
+// "pred_rotmat", "smpl_thetas", "global_orient", "joints3d", ...).
+bool looksLikePose(const std::string& key) {
+  std::string k = key;
+  std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const char* word : {"pose", "rot", "theta", "orient", "joint", "motion"})
+    if (k.find(word) != std::string::npos) return true;
+  return false;
+}
+
+// The keys, sorted, comma-separated, at most 12 then ", ...".
+std::string keyList(const DataNode& root) {
+  std::vector<std::string> keys = root.keys;
+  std::sort(keys.begin(), keys.end());
+  std::string list;
+  const size_t shown = std::min<size_t>(keys.size(), 12);
+  for (size_t i = 0; i < shown; ++i) list += (i ? ", " : "") + printable(keys[i], 64);
+  if (keys.size() > shown) list += ", ... (" + std::to_string(keys.size()) + " keys)";
+  return list.empty() ? "none" : list;
+}
+
+}  // namespace
+
+bool isShapeOnly(const DataNode& root) {
+  if (!root.isDict()) return false;
+  for (const std::string& key : root.keys)
+    if (looksLikePose(key)) return false;
+  return true;
+}
+
+std::string unmatchedMessage(const DataNode& root) {
+  if (!root.isDict())
+    return "holds " + describeNode(root) +
+           " at the top level; not a motion layout this version reads (supported layouts: "
+           "docs/motions.md)";
+  if (isShapeOnly(root))
+    return "no pose data (keys " + keyList(root) + "): a shape file, not a motion";
+  return "keys found: " + keyList(root) + "; supported layouts: docs/motions.md";
+}
+
+}  // namespace smpl

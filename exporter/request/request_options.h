@@ -1,0 +1,28 @@
+// The request's fields as the options of the library stages below it: the
+// asset (ExportOptions, exporter/pipeline.h), the bake (AnimationOptions,
+// exporter/animation.h) and the writer (WriterOptions, plugins/writer.h).
+// Pure translations: the values were checked by check_request.h.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "exporter/animation.h"
+#include "exporter/pipeline.h"
+#include "exporter/request/export_request.h"
+#include "plugins/writer.h"
+
+namespace smpl {
+
+// `betas`: the run's (RunInputs, run_request.h); the encoding stays as asked
+// (Auto is resolved by exportAsset, export_asset.h); no mesh when the
+// output's writer row has none (plugins/writer.h needs_mesh).
+ExportOptions exportOptionsOf(const ExportRequest& request, const std::vector<double>& betas);
+
+AnimationOptions animationOptionsOf(const ExportRequest& request);
+
+// For writing request.out; `buffer_path`: its external buffer (run_paths.h
+// gltfBufferPath), "" = none.
+WriterOptions writerOptionsOf(const ExportRequest& request, const std::string& buffer_path);
+
+}  // namespace smpl

@@ -1,0 +1,176 @@
+// runPaths / checkRunPaths: stat every input once (dev, inode, real path),
+// then look every output up. Uses the error_code overloads of
+// std::filesystem: an input that cannot be resolved is left to its loader.
+#include "exporter/request/run_paths.h"
+
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <map>
+#include <utility>
+
+#include "core/io/file_io.h"
+#include "core/load/model_folder.h"
+#include "core/load/uv_npy.h"
+#include "plugins/writer.h"
+
+namespace smpl {
+namespace fs = std::filesystem;
+namespace {
+
+struct Identity {
+  dev_t dev;
+  ino_t ino;
+  mode_t mode;
+  std::string real;  // fs::canonical
+};
+
+bool identify(const std::string& path, Identity* id) {
+  struct stat st;
+  if (path.empty() || ::stat(path.c_str(), &st) != 0) return false;  // follows symlinks
+  std::error_code ec;
+  const fs::path real = fs::canonical(path, ec);
+  *id = Identity{st.st_dev, st.st_ino, st.st_mode, ec ? std::string() : real.string()};
+  return true;
+}
+
+bool isDirectory(const std::string& path) {
+  std::error_code ec;
+  return !path.empty() && fs::is_directory(path, ec);
+}
+
+// Each file of a model folder a pick may choose (core/load/model_folder.h).
+void addModelFolder(const std::string& dir, std::vector<std::string>* files) {
+  for (const std::string& rel : listModelFolder(dir))
+    files->push_back((fs::path(dir) / rel).string());
+}
+
+// Each basis findDmplBasis (core/load/dmpl.h) may pick from a --dmpl folder.
+void addDmplFolder(const std::string& dir, std::vector<std::string>* files) {
+  for (const char* sub : {"dmpls/", ""})
+    for (const char* gender : {"female", "male", "neutral"})
+      files->push_back(dir + "/" + sub + gender + "/model.npz");
+}
+
+void addUv(const std::string& uv, std::vector<std::string>* files) {
+  if (uv.empty() || uv == "none") return;
+  files->push_back(uv);
+  Result<std::pair<std::string, std::string>> pair = uvNumpyPairPaths(uv);  // the partner .npy
+  if (pair) files->push_back(pair->first == uv ? pair->second : pair->first);
+}
+
+const char* kindOf(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a named pipe";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// One output against the inputs' identities.
+Status checkOutput(const std::string& out,
+                   const std::map<std::pair<dev_t, ino_t>, std::string>& by_inode,
+                   const std::map<std::string, std::string>& by_path) {
+  Identity id;
+  if (!identify(out, &id)) return Status();  // not there yet: cannot clash
+  auto inode = by_inode.find({id.dev, id.ino});
+  auto real = by_path.find(id.real);
+  const std::string* input = inode != by_inode.end() ? &inode->second
+                             : real != by_path.end() ? &real->second
+                                                     : nullptr;
+  if (input)
+    return makeError("output " + out + " would overwrite the input " + *input +
+                         " (same file); choose another output path",
+                     ErrorKind::Usage);
+  if (!S_ISREG(id.mode))
+    return makeError(
+        "output " + out + " is " + kindOf(id.mode) + ", not a file; choose another output path",
+        ErrorKind::Usage);
+  return Status();
+}
+
+// The file an output path names: its absolute path with the links of its
+// existing part resolved (the same key whether the file exists yet or not).
+std::string outputKey(const std::string& path) {
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return ec ? path : p.string();
+}
+
+Status checkOutputsDistinct(const RunPaths& paths) {
+  std::map<std::string, std::string> seen;
+  for (const std::string& out : paths.outputs) {
+    auto [it, fresh] = seen.emplace(outputKey(out), out);
+    if (fresh) continue;
+    const bool manifest = !paths.manifest.empty() && out == paths.manifest;
+    return makeError("outputs " + it->second + " and " + out + (manifest ? " (--manifest)" : "") +
+                         " are the same file; choose another path",
+                     ErrorKind::Usage);
+  }
+  return Status();
+}
+
+Status checkManifestFolder(const RunPaths& paths) {
+  if (paths.manifest.empty() || paths.motion_dir.empty()) return Status();
+  Identity folder, parent;
+  if (!identify(paths.motion_dir, &folder) || !identify(dirName(paths.manifest), &parent))
+    return Status();
+  if (folder.dev != parent.dev || folder.ino != parent.ino) return Status();
+  return makeError("--manifest " + paths.manifest + " is in the --motion-dir folder " +
+                       paths.motion_dir +
+                       " (the next run would read it as a motion); choose another folder",
+                   ErrorKind::Usage);
+}
+
+}  // namespace
+
+RunPaths runPaths(const ExportRequest& r, const std::vector<std::string>& outs,
+                  const std::vector<std::string>& motions) {
+  RunPaths paths;
+  paths.inputs = motions;
+  if (r.model != "builtin" && isDirectory(r.model))
+    addModelFolder(r.model, &paths.inputs);
+  else if (r.model != "builtin")
+    paths.inputs.push_back(r.model);
+  paths.inputs.push_back(r.betas_file);
+  addUv(r.uv, &paths.inputs);
+  if (isDirectory(r.dmpl))
+    addDmplFolder(r.dmpl, &paths.inputs);
+  else
+    paths.inputs.push_back(r.dmpl);
+  for (const std::string& out : outs) {
+    paths.outputs.push_back(out);
+    paths.outputs.push_back(out + ".smpl.json");
+    if (std::string buffer = gltfBufferPath(r, out); !buffer.empty())
+      paths.outputs.push_back(buffer);
+  }
+  if (!r.manifest.empty()) paths.outputs.push_back(r.manifest);
+  paths.manifest = r.manifest;
+  paths.motion_dir = r.motion_dir;
+  return paths;
+}
+
+std::string gltfBufferPath(const ExportRequest& r, const std::string& out) {
+  const WriterFormat* format = writerFormatForPath(out);
+  if (r.gltf_embed || !format || !format->external_buffer) return "";
+  const size_t dot = out.rfind('.');  // the row's extension, whatever its case
+  return out.substr(0, dot) + ".bin";
+}
+
+Status checkRunPaths(const RunPaths& paths) {
+  std::map<std::pair<dev_t, ino_t>, std::string> by_inode;
+  std::map<std::string, std::string> by_path;
+  for (const std::string& in : paths.inputs) {
+    Identity id;
+    if (!identify(in, &id)) continue;
+    by_inode.emplace(std::make_pair(id.dev, id.ino), in);
+    if (!id.real.empty()) by_path.emplace(id.real, in);
+  }
+  for (const std::string& out : paths.outputs)
+    if (Status st = checkOutput(out, by_inode, by_path); !st) return st;
+  if (Status st = checkOutputsDistinct(paths); !st) return st;
+  return checkManifestFolder(paths);
+}
+
+}  // namespace smpl

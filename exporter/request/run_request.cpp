@@ -1,0 +1,256 @@
+// beginRun / loadRunInputs / runExportJob / runExportRequest: see run_request.h.
+#include "exporter/request/run_request.h"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <new>
+
+#include "core/io/file_io.h"
+#include "core/io/printable.h"
+#include "core/load/betas_file.h"
+#include "core/memory_budget.h"
+#include "exporter/export_asset.h"
+#include "exporter/metadata_json.h"
+#include "exporter/request/check_request.h"
+#include "exporter/request/dmpl_job.h"
+#include "exporter/request/error_line.h"
+#include "exporter/request/motion_notes.h"
+#include "exporter/request/producer.h"
+#include "exporter/request/request_motions.h"
+#include "exporter/request/request_options.h"
+#include "exporter/request/run_paths.h"
+#include "plugins/writer.h"
+
+namespace smpl {
+namespace {
+
+// What the run is doing, for the line of an exception that escapes.
+struct Stage {
+  const char* verb = "in";
+  std::string path = "arguments";
+  ErrorKind kind = ErrorKind::Usage;
+  void set(const char* v, const std::string& p, ErrorKind k) { verb = v, path = p, kind = k; }
+};
+
+Error fail(ErrorKind kind, const char* verb, const std::string& path, const std::string& message) {
+  return makeError(errorLine(verb, path, message), kind);
+}
+
+Error usage(const std::string& message) {
+  return fail(ErrorKind::Usage, "in", "arguments", message);
+}
+
+// Runs `body` and turns an escaping exception into the stage's error line.
+template <class T, class Body>
+Result<T> guarded(Stage* stage, Body body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return fail(stage->kind, stage->verb, stage->path,
+                "out of memory (the system refused an allocation below --memory-limit " +
+                    formatBytes(memoryLimit()) + "; set a lower limit)");
+  } catch (const std::exception& e) {
+    return fail(stage->kind, stage->verb, stage->path, std::string("internal error: ") + e.what());
+  }
+}
+
+// An export error that is really about the options is a usage error; an
+// input read while building (the --uv file) fails as a load error.
+Error exportFailure(const std::string& out, const Error& e, const std::string& input) {
+  if (e.kind == ErrorKind::Usage) return usage(e.message);
+  if (e.kind == ErrorKind::Load) return fail(ErrorKind::Load, "loading", input, e.message);
+  return fail(ErrorKind::Export, "exporting", out, e.message);
+}
+
+// The motions decoded once, the model picked with the first, the model's
+// checks, then the fit hands through the model's basis.
+struct Loaded {
+  std::vector<Motion> motions;
+  ModelPick pick;
+};
+
+Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
+                       Stage* stage) {
+  Loaded loaded;
+  for (const std::string& path : r.motions) {  // an escaping exception: "exporting <out>"
+    Result<Motion> m = decodeMotion(path, r);
+    if (!m) return fail(ErrorKind::Load, "loading", path, m.message());
+    loaded.motions.push_back(std::move(*m));
+  }
+  stage->set("loading", r.model, ErrorKind::Load);  // a folder's pick loads its model here
+  Result<ModelPick> pick = models->forMotion(loaded.motions.empty() ? nullptr : &loaded.motions[0]);
+  if (!pick) return fail(ErrorKind::Load, "loading", r.model, pick.message());
+  stage->set("exporting", r.out, ErrorKind::Export);
+  loaded.pick = *pick;
+  if (Status st = checkRequestForModel(r, inputs.betas, *pick->model); !st)
+    return usage(st.message());
+  for (size_t i = 0; i < r.motions.size(); ++i)
+    if (Status st = resolveMotionHands(*pick->model, r, r.motions[i], &loaded.motions[i]); !st)
+      return fail(ErrorKind::Load, "loading", r.motions[i], st.message());
+  return loaded;
+}
+
+// Betas from the first motion when the run gave none; --betas-from-motion
+// makes a motion without betas an error.
+Status betasFromMotion(const BodyModel& model, const ExportRequest& r,
+                       const std::vector<Motion>& motions, ExportOptions* o) {
+  if (motions.empty() || motions[0].betas.empty()) {
+    if (r.betas_from_motion && !r.motions.empty())
+      return fail(ErrorKind::Load, "loading", r.motions[0],
+                  "no betas in the motion (--betas-from-motion)");
+    return Status();
+  }
+  const size_t n = std::min(motions[0].betas.size(), static_cast<size_t>(model.numBetas()));
+  o->betas.assign(motions[0].betas.begin(), motions[0].betas.begin() + n);
+  return Status();
+}
+
+// What exportAsset bakes: each motion with the request's frame range
+// (clamped per motion, the note kept in `frame_notes`) and progress.
+std::vector<MotionInput> motionInputs(const ExportRequest& r, const std::vector<Motion>& motions,
+                                      std::vector<std::string>* frame_notes) {
+  std::vector<MotionInput> inputs;
+  const AnimationOptions animation = animationOptionsOf(r);
+  for (size_t i = 0; i < motions.size(); ++i) {
+    frame_notes->emplace_back();
+    MotionInput in{&motions[i], r.motions[i],
+                   framesFor(animation, motions[i], &frame_notes->back()), nullptr};
+    if (r.progress) in.progress = [&r, name = motions[i].name](double f) { r.progress(name, f); };
+    inputs.push_back(std::move(in));
+  }
+  return inputs;
+}
+
+// The finished asset and the notes that go with it.
+Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, const Loaded& loaded,
+                       ExportReport* report) {
+  const BodyModel& model = *loaded.pick.model;
+  ExportOptions options = exportOptionsOf(r, inputs.betas);
+  if (!inputs.betas_given)
+    if (Status st = betasFromMotion(model, r, loaded.motions, &options); !st) return st.error();
+  Result<PreparedDmpl> dmpl = prepareDmpl(model, r, loaded.motions, report);  // dmpl_job.h
+  if (!dmpl) return dmpl.error();
+  std::vector<std::string> frame_notes;
+  Result<Asset> asset =
+      exportAsset(model, options, motionInputs(r, loaded.motions, &frame_notes), &dmpl->input);
+  if (!asset) return exportFailure(r.out, asset.error(), options.uv_obj);
+  noteMotions(loaded.motions, frame_notes, inputs.betas_given, *asset, report);
+  noteDmplJointCost(*asset, report);
+  if (r.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
+    report->notes.push_back(
+        "--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
+  report->options = options;
+  return asset;
+}
+
+// Serialise and commit the output, its buffer and its sidecar (renamed
+// last: the commit record, file_io.h).
+Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer& writer) {
+  std::string producer = r.producer_hash;
+  if (producer.empty()) {
+    Result<ContentHash> base = producerBase(r);
+    if (!base) return fail(ErrorKind::Load, "loading", r.model, base.message());
+    producer = producerHash(*base, r.motions);
+  }
+  const std::string buffer_path = gltfBufferPath(r, r.out);
+  Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, buffer_path));
+  if (!files) return exportFailure(r.out, files.error(), "");
+  std::vector<FileContent> contents = {
+      FileContent{r.out, files->bytes.data(), files->bytes.size()}};
+  if (!buffer_path.empty())
+    contents.push_back(FileContent{buffer_path, files->buffer.data(), files->buffer.size()});
+  // The sidecar records the size and SHA-256 of each file written with it
+  // (batch mode checks them, metadata_json.h).
+  const std::string sidecar = sidecarJson(asset, producer, contents);
+  contents.push_back(FileContent{r.out + ".smpl.json", sidecar.data(), sidecar.size()});
+  if (Status st = writeFilesTogether(contents); !st)
+    return fail(ErrorKind::Write, "saving", r.out, st.message());
+  return files->bytes.size() + files->buffer.size();
+}
+
+Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
+                            Stage* stage) {
+  const auto start = std::chrono::steady_clock::now();
+  const Writer* writer = writerForPath(r.out);
+  if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
+  if (r.clean_temporaries)
+    removeStaleTemps(dirName(r.out), {baseName(r.out), baseName(r.out) + ".smpl.json",
+                                      baseName(gltfBufferPath(r, r.out))});
+  Result<Loaded> loaded = loadJob(r, inputs, models, stage);
+  if (!loaded) return loaded.error();
+  ExportReport report;
+  report.model_path = loaded->pick.path;
+  report.model_note = loaded->pick.note;
+  report.betas_note = inputs.betas_note;
+  Result<Asset> asset = buildJob(r, inputs, *loaded, &report);
+  if (!asset) return asset.error();
+  Result<size_t> bytes = writeJob(r, *asset, *writer);
+  if (!bytes) return bytes.error();
+  const BodyModel& model = *loaded->pick.model;
+  report.bytes = *bytes;
+  report.skin_fitted = asset->mesh.joints.cols() > 0;  // no skin for a skeleton-only writer
+  if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.vertices = static_cast<int>(asset->mesh.positions.rows());
+  report.joints = static_cast<int>(asset->skeleton.names.size());
+  report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
+  report.max_influences = asset->metadata.max_influences;
+  if (r.skin_error_poses > 0 && report.skin_fitted) {
+    Result<PruningError> err =
+        measurePruningError(model, report.options, r.skin_error_poses, &report.skin);
+    if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());
+    report.skin_error = *err;
+    report.skin_error_measured = true;
+  }
+  return report;
+}
+
+}  // namespace
+
+Status beginRun(const ExportRequest& r) {
+  if (Status st = checkRequest(r); !st) return usage(st.message());
+  setMemoryLimit(r.memory_limit);
+  return Status();
+}
+
+Result<RunInputs> loadRunInputs(const ExportRequest& r, ModelSource* models) {
+  Stage stage;
+  return guarded<RunInputs>(&stage, [&]() -> Result<RunInputs> {
+    RunInputs inputs;
+    inputs.betas = r.betas;
+    inputs.betas_given = !r.betas.empty() || !r.betas_file.empty();
+    if (!r.betas_file.empty()) {
+      stage.set("loading", r.betas_file, ErrorKind::Load);
+      std::string note;  // per-frame (T,B) betas that differ: their mean, with a note
+      Result<std::vector<double>> betas = readBetasFile(r.betas_file, &note);
+      if (!betas) return fail(ErrorKind::Load, "loading", r.betas_file, betas.message());
+      inputs.betas = *betas;
+      if (!note.empty()) inputs.betas_note = printable(r.betas_file) + ": " + note;
+    }
+    stage.set("loading", r.model, ErrorKind::Load);
+    if (!models->isFolder()) {  // one model for the whole run: loaded before any motion
+      Result<ModelPick> one = models->forMotion(nullptr);
+      if (!one) return fail(ErrorKind::Load, "loading", r.model, one.message());
+    }
+    return inputs;
+  });
+}
+
+Result<ExportReport> runExportJob(const ExportRequest& r, const RunInputs& inputs,
+                                  ModelSource* models) {
+  Stage stage;
+  stage.set("exporting", r.out, ErrorKind::Export);
+  return guarded<ExportReport>(&stage, [&] { return runJob(r, inputs, models, &stage); });
+}
+
+Result<ExportReport> runExportRequest(const ExportRequest& r, ModelSource* models) {
+  if (Status st = beginRun(r); !st) return st.error();
+  // Before any work: no output may be an input, a directory or a device.
+  if (Status st = checkRunPaths(runPaths(r, {r.out}, r.motions)); !st) return usage(st.message());
+  Result<RunInputs> inputs = loadRunInputs(r, models);
+  if (!inputs) return inputs.error();
+  return runExportJob(r, *inputs, models);
+}
+
+}  // namespace smpl

@@ -1,0 +1,581 @@
+"""Test cases for the video-to-motion layouts (docs/motions.md "Video-to-motion layouts"), and
+the expected posed vertices of each, computed in numpy from the writing tool's conventions and the
+body model's math (tests/roundtrip/model_math.py), never from our C++.
+
+Fixtures: tests/fixtures/make_video_layouts.py (FIXTURE_DIR/layouts/video/...). Runner:
+tests/cli/layouts/run_cases.py --cases video.
+
+Each case: name, fixture (relative to FIXTURE_DIR; a folder is given to --motion-sequence), model,
+args, outputs (suffixes when --track all writes several files, else None), frames (three
+clip-relative frames), notes (substrings stdout must contain), absent (substrings it must not
+contain), source (what the sidecar's motion_source must say, or None), refusal (None or
+{"exit", "message"}).
+
+expected(case, fixture_dir) -> {"fps", "frames", "num_vertices", "vertices"} (or {suffix: that}).
+equivalent(case, fixture_dir) -> [(suffix, npz arrays)] in our terms (AMASS-style poses (T,3K) in the
+model's joint order, trans (T,3) with the body already turned Y-up, betas, fps), to export with
+today's smpl-export and `--up y`, or a string saying why the case cannot be expressed today.
+
+The composition every layout reduces to, per clip frame t (Y-up output, metres):
+    v_out = A_t (LBS(pose_t, betas) + transl_t) + b_t
+with LBS the model's math with the root joint at J_0 (docs/file-contract.md), transl_t the tool's
+own translation composed as the tool's body-model call composes it, and (A_t, b_t) the frame
+change: the camera frame's half turn about x (A = diag(1,-1,-1)), a world-from-camera transform
+(TRAM), EasyMocap's Rh/Th followed by Z-up -> Y-up, or the identity.
+"""
+import glob
+import json
+import os
+import pickle
+import sys
+
+import joblib
+import numpy as np
+import torch
+from scipy.spatial.transform import Rotation
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "roundtrip"))
+import model_math  # noqa: E402
+
+CAMERA_TO_UP = np.diag([1.0, -1.0, -1.0])  # --up -y: (x, y, z) -> (x, -y, -z)
+Z_UP_TO_Y_UP = np.array([[1.0, 0, 0], [0, 0, 1], [0, -1, 0]])  # --up z: -90 degrees about x
+V = "layouts/video/"
+# The closing note of an export with an animated expression (docs/motions.md, SMPLer-X); its number
+# is checked against authors_expression_cost_mm (run_cases.py: `numbers` of the reference).
+EXPRESSION_COST = r"expression with the betas-only skeleton costs up to ([0-9.]+) mm"
+
+
+def case(name, fixture, model, frames, notes=(), args=(), outputs=None, absent=(), source=None, refusal=None):
+    return {"name": name, "fixture": fixture, "model": model, "args": list(args), "outputs": outputs,
+            "frames": list(frames), "notes": list(notes), "absent": list(absent), "source": source,
+            "refusal": refusal}
+
+
+def refused(name, fixture, model, message, args=()):
+    return case(name, fixture, model, [], args=args, refusal={"exit": 2, "message": message})
+
+
+TRACKS_ALL = [".track0.glb", ".track1.glb", ".track2.glb"]
+CASES = [
+    # WHAM: tracks 0 (frames 0-17), 1 (5-29), 2 (2-26); 1 and 2 tie on length -> 1.
+    case("wham_world", V + "wham/wham_output.pkl", "smpl_small", [0, 12, 24],
+         ["read as WHAM output", "track 1 of 3 (source frames 5-29, the longest)",
+          "other tracks: 0 (0-17), 2 (2-26)", "world frame", "assumed 30 fps", "their mean"],
+         absent=["camera frame"], source={"layout": "wham", "track": "1", "frames": [5, 29]}),
+    case("wham_track0_fps25", V + "wham/wham_output.pkl", "smpl_small", [0, 9, 17],
+         ["track 0 of 3 (source frames 0-17)", "world frame"], args=["--track", "0", "--source-fps", "25"],
+         absent=["assumed"], source={"layout": "wham", "track": "0", "frames": [0, 17]}),
+    case("wham_incam", V + "wham/wham_output.pkl", "smpl_small", [0, 12, 24],
+         ["camera frame", "track 1 of 3"], args=["--source-params", "incam"], absent=["world frame"]),
+    case("wham_incam_up_y", V + "wham/wham_output.pkl", "smpl_small", [0, 12, 24], ["track 1 of 3"],
+         args=["--source-params", "incam", "--up", "y"], absent=["camera frame"]),
+    case("wham_all", V + "wham/wham_output.pkl", "smpl_small", [0, 8, 17],
+         ["track 0 of 3", "track 1 of 3", "track 2 of 3"], args=["--track", "all"], outputs=TRACKS_ALL),
+    # VIBE: persons 1 (frames 0-15), 2 (3-24); no 3-D translation; camera frame.
+    case("vibe", V + "vibe/vibe_output.pkl", "smpl_small", [0, 10, 21],
+         ["read as VIBE output", "track 2 of 2 (source frames 3-24, the longest)", "other tracks: 1 (0-15)",
+          "no 3-D translation", "camera frame", "assumed 30 fps"],
+         source={"layout": "vibe", "track": "2", "frames": [3, 24]}),
+    case("vibe_track1", V + "vibe/vibe_output.pkl", "smpl_small", [0, 7, 15], ["track 1 of 2 (source frames 0-15)"],
+         args=["--track", "1"]),
+    # PHALP / 4D-Humans: tracks 1 (0-19), 2 (3-16, no detection at 8-9), 3 (10-19).
+    case("phalp", V + "phalp/demo_video.pkl", "smpl_small", [0, 10, 19],
+         ["read as PHALP output", "track 1 of 3 (source frames 0-19, the longest)", "other tracks: 2 (3-16), 3 (10-19)",
+          "camera translation", "camera frame", "assumed 30 fps"],
+         source={"layout": "phalp", "track": "1", "frames": [0, 19]}),
+    case("phalp_gap", V + "phalp/demo_video.pkl", "smpl_small", [0, 6, 13],
+         ["track 2 of 3 (source frames 3-16)", "source frames without a detection: 2"], args=["--track", "2"]),
+    case("phalp_all", V + "phalp/demo_video.pkl", "smpl_small", [0, 5, 9], ["track 3 of 3"], args=["--track", "all"],
+         outputs=[".track1.glb", ".track2.glb", ".track3.glb"]),
+    # GVHMR: SMPL-X, hands at hands_mean; global (Y up) preferred, incam on request.
+    case("gvhmr_global", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23],
+         ["read as GVHMR output", "world frame", "hands_mean", "assumed 30 fps", "their mean"], absent=["camera frame"],
+         source={"layout": "gvhmr", "track": None, "frames": [0, 23]}),
+    case("gvhmr_incam", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23], ["camera frame", "hands_mean"],
+         args=["--source-params", "incam"]),
+    case("gvhmr_pkl", V + "gvhmr/hmr4d_results.pkl", "smplx_small", [0, 11, 23],
+         ["read as GVHMR output", "world frame"]),
+    # Today's reading of GVHMR's global parameters flattened into an npz (an SMPL-X fit: hands at rest).
+    case("gvhmr_flat_today", V + "gvhmr/gvhmr_flat.npz", "smplx_small", [0, 11, 23],
+         ["assumed 30 fps", "their mean"]),
+    # TRAM: hps_track_0 (frames 2-29) with camera.npy (world, Y up); without it, camera frame.
+    case("tram_world", V + "tram/seq/hps/hps_track_0.npy", "smpl_small", [0, 14, 27],
+         ["read as TRAM output", "world frame", "camera.npy", "assumed 30 fps", "their mean"], absent=["camera frame"],
+         source={"layout": "tram", "track": None, "frames": [2, 29]}),
+    case("tram_incam", V + "tram/seq/hps/hps_track_0.npy", "smpl_small", [0, 14, 27], ["camera frame"],
+         args=["--source-params", "incam"]),
+    case("tram_no_camera", V + "tram_cam/hps_track_0.npy", "smpl_small", [0, 8, 15], ["camera frame", "camera.npy"]),
+    # ROMP / BEV video_results.npz.
+    case("romp", V + "romp/video_results.npz", "smpl_small", [0, 11, 21],
+         ["read as ROMP output", "track 1 of 2 (source frames 0-21, the longest)", "other tracks: 2 (6-17)",
+          "camera frame", "assumed 24 fps"], source={"layout": "romp", "track": "1", "frames": [0, 21]}),
+    case("romp_track2", V + "romp/video_results.npz", "smpl_small", [0, 6, 11], ["track 2 of 2 (source frames 6-17)"],
+         args=["--track", "2"]),
+    case("romp_notrack", V + "romp_notrack/video_results.npz", "smpl_small", [0, 5, 9], ["person 0 of each frame"]),
+    case("bev", V + "bev/video_results.npz", "smpl_small", [0, 6, 11],
+         ["read as BEV output", "mid-hip", "age", "camera frame", "assumed 24 fps"]),
+    # EasyMocap: persons 0 (frames 0-19), 1 (4-13); Z-up world; a folder is a sequence.
+    case("easymocap_seq", V + "easymocap/smpl", "smpl_small", [0, 10, 19],
+         ["read as EasyMocap output", "20 files joined (frames 0-19)", "track 0 of 2 (source frames 0-19, the longest)",
+          "other tracks: 1 (4-13)", "Z up", "assumed 30 fps", "their mean"],
+         source={"layout": "easymocap", "track": "0", "frames": [0, 19]}),
+    case("easymocap_seq_track1", V + "easymocap/smpl", "smpl_small", [0, 5, 9], ["track 1 of 2 (source frames 4-13)"],
+         args=["--track", "1"]),
+    case("easymocap_one_file", V + "easymocap/smpl/000007.json", "smpl_small", [0, 0, 0],
+         ["track 0 of 2 (source frames 7-7, the longest)", "other tracks: 1 (7-7)", "Z up"], absent=["assumed"]),
+    # SMPLer-X: one npz per frame and detection; person 0 frames 3-24 (none at 11), person 1 frames 6-14.
+    case("smplerx_seq", V + "smplerx/smplx", "smplx_small", [0, 8, 21],
+         ["read as SMPLer-X output", "30 files joined (frames 3-24)", "track 0 of 2 (source frames 3-24, the longest)",
+          "source frames without a detection: 1", "detection index", "camera frame", "not baked", "their mean"],
+         source={"layout": "smplerx", "track": "0", "frames": [3, 24]}),
+    case("smplerx_track1", V + "smplerx/smplx", "smplx_small", [0, 4, 8], ["track 1 of 2 (source frames 6-14)"],
+         args=["--track", "1"]),
+    case("smplerx_expression", V + "smplerx/smplx", "smplx_small", [0, 8, 21], ["track 0 of 2"],
+         args=["--expression-keys", "10"], absent=["not baked"]),
+    # A format that works today keeps its conventions.
+    case("amass_smplh_today", "motions/amass_smplh.npz", "smplh_small", [0, 100, 239], []),
+    # Refusals: exit 2, one line on stderr, no output.
+    refused("bev_infant", V + "bev_infant/video_results.npz", "smpl_small", "SMIL"),
+    refused("wham_no_such_track", V + "wham/wham_output.pkl", "smpl_small", "no track 7 (tracks: 0, 1, 2)",
+            args=["--track", "7"]),
+    refused("hostile_pickle", V + "hostile/wham_output.pkl", "smpl_small", "refusing pickle global"),
+    refused("easymocap_smplx", V + "easymocap_smplx/000000.json", "smplx_small", "'handl'"),
+    refused("phalp_no_track", V + "phalp_empty/demo_video.pkl", "smpl_small", "no tracked person"),
+    refused("gvhmr_bad_shape", V + "gvhmr_bad/hmr4d_results.pt", "smplx_small",
+            "'smpl_params_global/body_pose' has shape (24,60)"),
+    refused("vibe_no_world", V + "vibe/vibe_output.pkl", "smpl_small", "no world-frame parameters",
+            args=["--source-params", "global"]),
+]
+
+
+# ----------------------------------------------------------------------------------------------
+# Small math helpers (written here, not shared with the C++).
+
+
+def mats(axis_angle):
+    a = np.asarray(axis_angle, np.float64)
+    return model_math.rodrigues(a)
+
+
+def axis_angle(matrices):
+    m = np.asarray(matrices, np.float64)
+    return Rotation.from_matrix(m.reshape(-1, 3, 3)).as_rotvec().reshape(m.shape[:-2] + (3,))
+
+
+def f64(x):
+    """float32 (or any) file values as float64, the way the readers widen them."""
+    if isinstance(x, torch.Tensor):
+        x = x.numpy()
+    return np.asarray(x).astype(np.float64)
+
+
+def arg(case, flag, default=None):
+    a = case["args"]
+    return a[a.index(flag) + 1] if flag in a else default
+
+
+def load_model(fixture_dir, name):
+    path = os.path.join(fixture_dir, "models", name + ".npz")
+    m = model_math.load_model_npz(path)
+    raw = np.load(path)
+    for key in ("hands_meanl", "hands_meanr", "hands_componentsl", "hands_componentsr"):
+        if key in raw.files:
+            m[key] = np.asarray(raw[key], np.float64)
+    m["num_betas"] = {24: 10, 52: 16, 55: 300, 16: 10}[len(m["parents"])]
+    return m
+
+
+# ----------------------------------------------------------------------------------------------
+# Tracks: the rules every multi-person layout shares (docs/motions.md "Tracks and frames").
+
+
+class Track:
+    """One person: rows[frame] = that frame's stored values (a dict), source frame numbers."""
+
+    def __init__(self, tid):
+        self.id = tid
+        self.rows = {}
+
+    def frames(self):
+        return sorted(self.rows)
+
+    def clip(self):
+        """Source frames first..last; a frame without a row repeats the previous row."""
+        first, last = self.frames()[0], self.frames()[-1]
+        out, held = [], None
+        for f in range(first, last + 1):
+            held = self.rows.get(f, held)
+            out.append(held)
+        return out
+
+
+def pick_tracks(case, tracks):
+    """--track ID | all | longest (default): the most rows, ties to the lower id."""
+    want = arg(case, "--track", "longest")
+    ids = sorted(tracks, key=lambda t: int(t))
+    if want == "all":
+        return [(".track%s.glb" % t, tracks[t]) for t in ids]
+    if want == "longest":
+        best = max(ids, key=lambda t: (len(tracks[t].rows), -int(t)))
+        return [(None, tracks[best])]
+    return [(None, tracks[want])]
+
+
+# ----------------------------------------------------------------------------------------------
+# Per-layout decoding into clips: per clip frame the model-order pose (K,3) axis-angle, the tool's
+# translation, and the frame change (A, b); plus betas (the mean of the track's rows), fps.
+
+
+def clip_dict(kind, poses, transl, betas_rows, fps, a, b=None, expression=None, anchor=None):
+    t = len(poses)
+    return {"kind": kind, "pose": np.asarray(poses, np.float64), "transl": np.asarray(transl, np.float64),
+            "betas": np.mean(np.asarray(betas_rows, np.float64), axis=0), "fps": fps,
+            "A": np.broadcast_to(np.asarray(a, np.float64), (t, 3, 3)).copy(),
+            "b": np.zeros((t, 3)) if b is None else np.asarray(b, np.float64),
+            "expression": expression, "anchor": anchor}
+
+
+def fps_of(case, default):
+    return float(arg(case, "--source-fps", default))
+
+
+def frame_change(case, layout_is_camera):
+    """A for a layout's own frame: camera frames get --up -y unless --up says otherwise."""
+    up = arg(case, "--up")
+    if up == "y":
+        return np.eye(3)
+    if up == "z":
+        return Z_UP_TO_Y_UP
+    if up == "-y" or layout_is_camera:
+        return CAMERA_TO_UP
+    return np.eye(3)
+
+
+def wham_clips(case, path):
+    # yohanshin/WHAM demo.py run(): pose = [root_cam | body] (T,72) axis-angle, trans = trans_cam - offset
+    # (an SMPL transl: verts = SMPL(pose, betas) + trans); pose_world / trans_world from
+    # Network.rollout(return_y_up=True): Y-up world; trans_world is used as the SMPL transl, as
+    # lib/eval/evaluate_emdb.py does (smplx SMPL(..., transl=pred_trans)).
+    data = joblib.load(path)
+    incam = arg(case, "--source-params", "global") == "incam"
+    tracks = {}
+    for key, person in data.items():
+        t = Track(str(int(key)))
+        for i, f in enumerate(np.asarray(person["frame_ids"]).astype(int)):
+            t.rows[f] = {"pose": f64(person["pose" if incam else "pose_world"][i]).reshape(24, 3),
+                         "transl": f64(person["trans" if incam else "trans_world"][i]),
+                         "betas": f64(person["betas"][i])}
+        tracks[t.id] = t
+    a = frame_change(case, incam)
+    return [(sfx, clip_dict("smpl", [r["pose"] for r in tr.clip()], [r["transl"] for r in tr.clip()],
+                            [r["betas"] for r in tr.rows.values()], fps_of(case, 30), a))
+            for sfx, tr in pick_tracks(case, tracks)]
+
+
+def vibe_clips(case, path):
+    # mkocabas/VIBE demo.py: vibe_results[person_id] = {pose (T,72) axis-angle (theta[:, 3:75]), betas,
+    # pred_cam/orig_cam (weak-perspective), frame_ids}; no 3-D translation: lib/utils/fbx_output.py
+    # process_poses keeps trans = zeros and turns the pelvis upright (camera frame, y down).
+    data = joblib.load(path)
+    tracks = {}
+    for pid, person in data.items():
+        t = Track(str(int(pid)))
+        for i, f in enumerate(np.asarray(person["frame_ids"]).astype(int)):
+            t.rows[f] = {"pose": f64(person["pose"][i]).reshape(24, 3), "betas": f64(person["betas"][i])}
+        tracks[t.id] = t
+    return [(sfx, clip_dict("smpl", [r["pose"] for r in tr.clip()], np.zeros((len(tr.clip()), 3)),
+                            [r["betas"] for r in tr.rows.values()], fps_of(case, 30), frame_change(case, True)))
+            for sfx, tr in pick_tracks(case, tracks)]
+
+
+def phalp_clips(case, path):
+    # brjathu/PHALP phalp/trackers/PHALP.py track(): per frame 'tid' lists confirmed tracks, their
+    # history[-1] in the per-person lists ('smpl', 'camera', ...), 'tracked_time' their
+    # time_since_update; a detection is tracked_time == 0 (phalp/utils/utils_tracks.py get_tracks).
+    # 'smpl' = HMR2 pred_smpl_params: global_orient (1,3,3), body_pose (23,3,3), betas (10,);
+    # 'camera' = pred_cam_t of HMAR.get_3d_parameters, added to the SMPL vertices (an SMPL transl).
+    data = joblib.load(path)
+    tracks = {}
+    for frame in data.values():
+        for i, tid in enumerate(frame["tid"]):
+            if frame["tracked_time"][i] != 0:
+                continue
+            t = tracks.setdefault(str(tid), Track(str(tid)))
+            smpl = frame["smpl"][i]
+            rot = np.concatenate([f64(smpl["global_orient"]).reshape(1, 3, 3), f64(smpl["body_pose"])], 0)
+            t.rows[int(frame["time"])] = {"pose": axis_angle(rot), "transl": f64(frame["camera"][i]),
+                                          "betas": f64(smpl["betas"])}
+    return [(sfx, clip_dict("smpl", [r["pose"] for r in tr.clip()], [r["transl"] for r in tr.clip()],
+                            [r["betas"] for r in tr.rows.values()], fps_of(case, 30), frame_change(case, True)))
+            for sfx, tr in pick_tracks(case, tracks)]
+
+
+def gvhmr_load(path):
+    if path.endswith(".pt"):
+        return torch.load(path)
+    with open(path, "rb") as fh:
+        return pickle.load(fh)
+
+
+def smplx_pose(m, root, body, jaw, leye, reye, left, right):
+    """(55,3) SMPL-X joint order: root, 21 body, jaw, eyes, 15 left, 15 right fingers."""
+    return np.concatenate([np.reshape(root, (1, 3)), np.reshape(body, (21, 3)), np.reshape(jaw, (1, 3)),
+                           np.reshape(leye, (1, 3)), np.reshape(reye, (1, 3)), np.reshape(left, (15, 3)),
+                           np.reshape(right, (15, 3))])
+
+
+def gvhmr_clips(case, path, m):
+    # zju3dv/GVHMR tools/demo/demo.py: pred["smpl_params_global"|"smpl_params_incam"] = {body_pose (L,63),
+    # betas (L,10), global_orient (L,3), transl (L,3)}, evaluated by hmr4d/utils/smplx_utils.py
+    # make_smplx("supermotion"): SMPL-X neutral, num_pca_comps=12, flat_hand_mean=False, hands not
+    # passed (BodyModelSMPLX.forward: zero PCA coefficients) -> each hand at the model's hands_mean
+    # (smplx SMPLX.forward: full_pose += pose_mean); jaw, eyes, expression zero; transl added.
+    # Global: "ay" (gravity-aligned, Y up); incam: the camera frame.
+    pred = gvhmr_load(path)
+    incam = arg(case, "--source-params", "global") == "incam"
+    p = {k: f64(v) for k, v in pred["smpl_params_incam" if incam else "smpl_params_global"].items()}
+    z = np.zeros(3)
+    poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], z, z, z, m["hands_meanl"], m["hands_meanr"])
+             for i in range(len(p["body_pose"]))]
+    return [(None, clip_dict("smplx", poses, p["transl"], p["betas"], fps_of(case, 30), frame_change(case, incam)))]
+
+
+def gvhmr_flat_clips(case, path, m):
+    # Today's Fit reader (core/load/motion_fit.h) on a flattened npz: body_pose (T,63) = SMPL-X body,
+    # global_orient, transl, betas rows averaged; no hand keys -> hands at rest (zero); Y up; 30 fps.
+    d = np.load(path)
+    z = np.zeros(3)
+    poses = [smplx_pose(m, f64(d["global_orient"][i]), f64(d["body_pose"][i]), z, z, z, np.zeros(45), np.zeros(45))
+             for i in range(len(d["body_pose"]))]
+    return [(None, clip_dict("smplx", poses, f64(d["transl"]), f64(d["betas"]), fps_of(case, 30), np.eye(3)))]
+
+
+def tram_clips(case, path):
+    # yufu-wang/tram: hps_track_k.npy = HMR_VIMO.inference results (torch tensors): pred_rotmat (T,24,3,3),
+    # pred_shape (T,10), pred_trans (T,1,3), frame (T,); lib/pipeline/visualization.py visualize_tram:
+    # betas = the mean over the track, verts = SMPL(rotmat, betas, transl=pred_trans.squeeze()) in the
+    # camera frame, world = world_cam_R[frame] @ v + world_cam_T[frame] with camera.npy from
+    # scripts/estimate_camera.py (lib/camera/est_gravity.py: Y-up world).
+    track = np.load(path, allow_pickle=True).item()
+    rot, trans = f64(track["pred_rotmat"]), f64(track["pred_trans"]).reshape(-1, 3)
+    frames = f64(track["frame"]).astype(int)
+    camera_path = os.path.join(os.path.dirname(os.path.dirname(path)), "camera.npy")
+    incam = arg(case, "--source-params", "global") == "incam" or not os.path.exists(camera_path)
+    poses = [axis_angle(r) for r in rot]
+    if incam:
+        return [(None, clip_dict("smpl", poses, trans, f64(track["pred_shape"]), fps_of(case, 30),
+                                 frame_change(case, True)))]
+    cam = np.load(camera_path, allow_pickle=True).item()
+    a, b = f64(cam["world_cam_R"])[frames], f64(cam["world_cam_T"])[frames]
+    return [(None, clip_dict("smpl", poses, trans, f64(track["pred_shape"]), fps_of(case, 30), a, b))]
+
+
+def romp_clips(case, path, m):
+    # Arthur151/ROMP simple_romp/romp/utils.py save_video_results: sequence_results[track_id] =
+    # {frame_id: [...], smpl_thetas: [(72,)], smpl_betas: [(10,) | (11,)], cam_trans: [(3,)]}; without
+    # tracks, simple_romp/tools/convert2fbx.py takes person 0 of each frame in sorted frame-name order.
+    # Vertices as vis_human/main.py renders them: outputs['verts'] + cam_trans; ROMP's verts are plain
+    # SMPL (root_align False); BEV's (11 betas, SMPL+A) are root-aligned by bev/post_parser.py
+    # SMPLA_parser: minus the mid-hip, approximated here (and in the spec) by the mid-point of the
+    # model's posed hip joints 1 and 2. The age coefficient betas[10] is dropped.
+    d = np.load(path, allow_pickle=True)
+    seq = d["sequence_results"][()]
+    tracks = {}
+    if seq:
+        for tid, rows in seq.items():
+            t = Track(str(int(tid)))
+            for i, f in enumerate(rows["frame_id"]):
+                t.rows[int(f)] = {"pose": f64(rows["smpl_thetas"][i]).reshape(24, 3),
+                                  "transl": f64(rows["cam_trans"][i]), "betas": f64(rows["smpl_betas"][i])}
+            tracks[t.id] = t
+    else:
+        t = Track("0")
+        results = d["results"][()]
+        for f, name in enumerate(sorted(results)):
+            r = results[name]
+            t.rows[f] = {"pose": f64(r["smpl_thetas"][0]).reshape(24, 3), "transl": f64(r["cam_trans"][0]),
+                         "betas": f64(r["smpl_betas"][0])}
+        tracks["0"] = t
+    out = []
+    for sfx, tr in pick_tracks(case, tracks):
+        rows = tr.clip()
+        bev = len(rows[0]["betas"]) == 11
+        c = clip_dict("smpl", [r["pose"] for r in rows], [r["transl"] for r in rows],
+                      [r["betas"][:10] for r in tr.rows.values()], fps_of(case, 24), frame_change(case, True),
+                      anchor="mid-hip" if bev else None)
+        out.append((sfx, c))
+    return out
+
+
+def easymocap_persons(path):
+    with open(path, encoding="utf-8") as fh:
+        return json.load(fh)
+
+
+def easymocap_clips(case, path):
+    # zju3dv/EasyMocap easymocap/smplmodel/body_model.py SMPLlayer.forward (and bodymodel/smpl.py):
+    # vertices = LBS(poses, shapes) @ Rodrigues(Rh)^T + Th: Rh turns the posed body about the model's
+    # origin, not about the pelvis; poses[:3] (zero as written) is the root's own rotation about J_0.
+    # The world is the calibration board's, Z up (apps/calibration/detect_chessboard.py getChessboard3d).
+    files = sorted(glob.glob(os.path.join(path, "*.json"))) if os.path.isdir(path) else [path]
+    tracks = {}
+    for p in files:
+        frame = int(os.path.splitext(os.path.basename(p))[0])
+        for person in easymocap_persons(p):
+            t = tracks.setdefault(str(person["id"]), Track(str(person["id"])))
+            t.rows[frame] = {"pose": np.asarray(person["poses"], np.float64).reshape(24, 3),
+                             "rh": mats(np.asarray(person["Rh"], np.float64).reshape(3)),
+                             "th": np.asarray(person["Th"], np.float64).reshape(3),
+                             "betas": np.asarray(person["shapes"], np.float64).reshape(10)}
+    up = {None: Z_UP_TO_Y_UP, "z": Z_UP_TO_Y_UP, "y": np.eye(3), "-y": CAMERA_TO_UP}[arg(case, "--up")]
+    out = []
+    for sfx, tr in pick_tracks(case, tracks):
+        rows = tr.clip()
+        a = [up @ r["rh"] for r in rows]
+        b = [up @ r["th"] for r in rows]
+        out.append((sfx, clip_dict("smpl", [r["pose"] for r in rows], np.zeros((len(rows), 3)),
+                                   [r["betas"] for r in tr.rows.values()], fps_of(case, 30), a, b)))
+    return out
+
+
+def smplerx_clips(case, path, m):
+    # caizhongang/SMPLer-X main/inference.py: {frame:05}_{bbox_id}.npz per frame and detection, smplx
+    # names; evaluated by common/utils/human_models.py smplx.create(..., use_pca=False) with
+    # flat_hand_mean False (smplx's default): hands_mean is added to the 45-d hands; main/SMPLer_X.py
+    # get_coord: mesh_cam = vertices + cam_trans (the saved transl); leye/reye zero; expression (1,10).
+    tracks = {}
+    for p in sorted(glob.glob(os.path.join(path, "*.npz"))):
+        frame, person = os.path.splitext(os.path.basename(p))[0].split("_")
+        d = np.load(p)
+        t = tracks.setdefault(str(int(person)), Track(str(int(person))))
+        t.rows[int(frame)] = {
+            "pose": smplx_pose(m, f64(d["global_orient"]), f64(d["body_pose"]), f64(d["jaw_pose"]),
+                               f64(d["leye_pose"]), f64(d["reye_pose"]),
+                               f64(d["left_hand_pose"]).reshape(45) + m["hands_meanl"],
+                               f64(d["right_hand_pose"]).reshape(45) + m["hands_meanr"]),
+            "transl": f64(d["transl"]).reshape(3), "betas": f64(d["betas"]).reshape(10),
+            "expression": f64(d["expression"]).reshape(10)}
+    keys = int(arg(case, "--expression-keys", 0))
+    out = []
+    for sfx, tr in pick_tracks(case, tracks):
+        rows = tr.clip()
+        expr = np.array([r["expression"][:keys] for r in rows]) if keys else None
+        out.append((sfx, clip_dict("smplx", [r["pose"] for r in rows], [r["transl"] for r in rows],
+                                   [r["betas"] for r in tr.rows.values()], fps_of(case, 30),
+                                   frame_change(case, True), expression=expr)))
+    return out
+
+
+def amass_clips(case, path):
+    # AMASS SMPL-H release (tests/web/anim_reference.py): poses (T,156), trans, betas, Z up, stored rate.
+    d = np.load(path)
+    t = len(d["poses"])
+    return [(None, clip_dict("smplh", f64(d["poses"]).reshape(t, 52, 3), f64(d["trans"]),
+                             [f64(d["betas"])[:16]], float(d["mocap_framerate"]), Z_UP_TO_Y_UP))]
+
+
+def clips(case, fixture_dir, m):
+    path = os.path.join(fixture_dir, case["fixture"])
+    name = case["name"]
+    if name.startswith("wham"):
+        return wham_clips(case, path)
+    if name.startswith("vibe"):
+        return vibe_clips(case, path)
+    if name.startswith("phalp"):
+        return phalp_clips(case, path)
+    if name.startswith("gvhmr_flat"):
+        return gvhmr_flat_clips(case, path, m)
+    if name.startswith("gvhmr"):
+        return gvhmr_clips(case, path, m)
+    if name.startswith("tram"):
+        return tram_clips(case, path)
+    if name.startswith(("romp", "bev")):
+        return romp_clips(case, path, m)
+    if name.startswith("easymocap"):
+        return easymocap_clips(case, path)
+    if name.startswith("smplerx"):
+        return smplerx_clips(case, path, m)
+    if name.startswith("amass"):
+        return amass_clips(case, path)
+    raise ValueError("no reference for case " + name)
+
+
+# ----------------------------------------------------------------------------------------------
+# The body model: what the exporter must reproduce, in numpy.
+
+
+def shaped(m, betas, expression=None):
+    b = np.zeros(m["num_betas"])
+    n = min(len(betas), m["num_betas"])
+    b[:n] = betas[:n]
+    v = m["v_template"] + m["shapedirs"][:, :, :m["num_betas"]] @ b
+    joints = m["J_regressor"] @ v
+    if expression is not None and len(expression):
+        v = v + m["shapedirs"][:, :, 300:300 + len(expression)] @ np.asarray(expression)
+    return v, joints
+
+
+def anchored_transl(c, m, joints, t):
+    """The tool's translation as an SMPL transl (BEV: minus the posed mid-hip of joints 1 and 2)."""
+    if c["anchor"] != "mid-hip":
+        return c["transl"][t]
+    r0 = mats(c["pose"][t][0])
+    mid = joints[0] + r0 @ ((joints[1] + joints[2]) / 2 - joints[0])
+    return c["transl"][t] - mid
+
+
+def vertices(c, m, t, weights):
+    expr = None if c["expression"] is None else c["expression"][t]
+    v_shaped, joints = shaped(m, c["betas"], expr)
+    verts, _, _ = model_math.forward(m, v_shaped, joints, c["pose"][t], weights)
+    return (verts + anchored_transl(c, m, joints, t)) @ c["A"][t].T + c["b"][t]
+
+
+def authors_expression_cost_mm(c, m, weights):
+    """The closing note's number: max over every clip frame of the vertex distance between our
+    baked expression (joints from the betas alone) and the authors' math (smplx lbs regresses the
+    joints from the template with betas and expression), weights pruned as exported; mm."""
+    worst = 0.0
+    for t in range(len(c["pose"])):
+        v_shaped, joints = shaped(m, c["betas"], c["expression"][t])
+        ours, _, _ = model_math.forward(m, v_shaped, joints, c["pose"][t], weights)
+        theirs, _, _ = model_math.forward(m, v_shaped, m["J_regressor"] @ v_shaped, c["pose"][t], weights)
+        worst = max(worst, float(np.linalg.norm(ours - theirs, axis=1).max()))
+    return 1000 * worst
+
+
+def expected(case, fixture_dir):
+    m = load_model(fixture_dir, case["model"])
+    weights = model_math.prune(m["weights"], 4)
+    out = {}
+    for sfx, c in clips(case, fixture_dir, m):
+        for f in case["frames"]:
+            assert 0 <= f < len(c["pose"]), "%s: frame %d outside the clip (%d frames)" % (
+                case["name"], f, len(c["pose"]))
+        ref = {"fps": c["fps"], "frames": case["frames"], "num_vertices": len(m["v_template"]),
+               "vertices": [vertices(c, m, t, weights).tolist() for t in case["frames"]]}
+        if c["expression"] is not None:
+            ref["numbers"] = {EXPRESSION_COST: authors_expression_cost_mm(c, m, weights)}
+        out[sfx] = ref
+    return out[None] if list(out) == [None] else out
+
+
+def equivalent(case, fixture_dir):
+    """AMASS-style npz arrays per output (root and trans pre-turned Y up: export with --up y)."""
+    m = load_model(fixture_dir, case["model"])
+    result = []
+    for sfx, c in clips(case, fixture_dir, m):
+        if c["expression"] is not None:
+            return "an animated expression cannot be given to today's exporter (no per-frame expression input)"
+        _, joints = shaped(m, c["betas"])
+        j0 = joints[0]
+        poses = c["pose"].copy()
+        trans = np.zeros((len(poses), 3))
+        for t in range(len(poses)):
+            a = c["A"][t]
+            poses[t][0] = axis_angle(a @ mats(poses[t][0]))
+            trans[t] = a @ (j0 + anchored_transl(c, m, joints, t)) + c["b"][t] - j0
+        result.append((sfx, {"poses": poses.reshape(len(poses), -1), "trans": trans, "betas": c["betas"],
+                             "fps": np.array(c["fps"])}))
+    return result

@@ -1,0 +1,98 @@
+// The motion reader table (core/load/motion_layout.h): what is derived from
+// it (detection order, lazy keys, batch extensions, the messages for files no
+// row reads). Fixtures: tests/fixtures/make_table_cases.py.
+#include "core/load/motion_layout.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/load/motion.h"
+#include "core/load/motion_read.h"
+
+namespace smpl {
+namespace {
+
+const std::string kTable = std::string(SMPL_FIXTURE_DIR) + "/table/";
+
+DataNode names(std::initializer_list<const char*> keys) {
+  DataNode root;
+  root.kind = DataNode::Kind::Dict;
+  for (const char* k : keys) root.keys.push_back(k);
+  root.children.resize(root.keys.size());
+  return root;
+}
+
+TEST(MotionLayouts, RowsAreNamedOnceAndReadWhatTheyMatch) {
+  std::set<std::string> seen;
+  for (const MotionLayout& row : motionLayouts()) {
+    EXPECT_TRUE(seen.insert(row.name).second) << row.name;
+    EXPECT_FALSE(row.keys.empty()) << row.name;
+    EXPECT_NE(row.containers, 0u) << row.name;
+    // A file holding exactly the row's keys is that row's (nothing earlier steals it).
+    DataNode root;
+    root.kind = DataNode::Kind::Dict;
+    root.keys = row.keys;
+    root.children.resize(row.keys.size());
+    const MotionLayout* found = findLayout(root, row.containers & -row.containers);
+    ASSERT_NE(found, nullptr) << row.name;
+    EXPECT_TRUE(found == &row || std::string(found->name) != row.name) << row.name;
+  }
+}
+
+TEST(MotionLayouts, TableOrderDecides) {
+  EXPECT_STREQ(findLayout(names({"bodyPose", "poses"}), kNpzFile)->name, "smplcodec");
+  EXPECT_STREQ(findLayout(names({"poses", "body_pose"}), kNpzFile)->name, "amass");
+  EXPECT_STREQ(findLayout(names({"global_orient"}), kPickleFile)->name, "fit");
+  EXPECT_EQ(findLayout(names({"betas", "gender"}), kNpzFile), nullptr);
+  // SMPLCodec comes only as an .npz (.smpl): its keys in a pickle match no row.
+  EXPECT_EQ(findLayout(names({"bodyPose"}), kPickleFile), nullptr);
+  Result<Motion> m = loadMotion(kTable + "both_keys.npz");
+  ASSERT_TRUE(m.ok()) << m.message();
+  EXPECT_EQ(m->source_layout, "smplcodec");
+  EXPECT_EQ(m->fps, 24.0);
+}
+
+TEST(MotionLayouts, OnlyTheMatchedRowsKeysAreDecoded) {
+  // `body_pose` is another row's key and is not an .npy at all.
+  Result<Motion> m = loadMotion(kTable + "amass_bad_fit_key.npz");
+  ASSERT_TRUE(m.ok()) << m.message();
+  EXPECT_EQ(m->source_layout, "amass");
+  EXPECT_EQ(m->frames.size(), 5u);
+  EXPECT_EQ(m->fps, 50.0);
+}
+
+TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
+  const std::vector<std::string> ext = motionFileExtensions();
+  EXPECT_EQ(
+      std::set<std::string>(ext.begin(), ext.end()),
+      (std::set<std::string>{".npz", ".smpl", ".pkl", ".joblib", ".pt", ".pth", ".npy", ".json"}));
+}
+
+TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
+  EXPECT_TRUE(isShapeOnly(names({"betas", "gender", "surface_model_type"})));
+  EXPECT_FALSE(isShapeOnly(names({"betas", "pred_rotmat"})));
+  Result<Motion> shape = loadMotion(kTable + "shape_only.npz");
+  ASSERT_FALSE(shape.ok());
+  EXPECT_NE(shape.message().find("no pose data (keys betas, gender)"), std::string::npos)
+      << shape.message();
+  for (const char* file : {"unknown_layout.npz", "unknown_layout.pkl"}) {
+    Result<Motion> m = loadMotion(kTable + file);
+    ASSERT_FALSE(m.ok()) << file;
+    EXPECT_EQ(m.message().find("shape file"), std::string::npos) << m.message();
+    EXPECT_NE(m.message().find("keys found: "), std::string::npos) << m.message();
+    EXPECT_NE(m.message().find("pred_rotmat, pred_shape; supported layouts"), std::string::npos)
+        << m.message();
+    EXPECT_NE(m.message().find("; supported layouts: docs/motions.md"), std::string::npos)
+        << m.message();
+    Result<bool> poses = hasPoseData(kTable + file);  // batch mode fails it, never skips it
+    ASSERT_TRUE(poses.ok()) << poses.message();
+    EXPECT_TRUE(*poses) << file;
+  }
+  Result<bool> poses = hasPoseData(kTable + "shape_only.npz");
+  ASSERT_TRUE(poses.ok());
+  EXPECT_FALSE(*poses);
+}
+
+}  // namespace
+}  // namespace smpl

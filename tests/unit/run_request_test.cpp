@@ -1,0 +1,203 @@
+// runExportRequest / runExportJob (exporter/request/run_request.h): the final
+// finite check stops a NaN before any writer (exit 3, nothing written); the
+// sidecar records a producer hash that depends on the options that change
+// the output and not on those that do not; each motion is decoded once, and
+// a model folder picks from the decoded motion (never reading it again); the
+// model's checks run once the model is known; the path guard runs first.
+#include "exporter/request/run_request.h"
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "cli/settings.h"
+#include "core/demo/demo_body.h"
+#include "core/io/file_io.h"
+#include "exporter/metadata_json.h"
+#include "exporter/request/request_motions.h"
+
+namespace smpl {
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kFixtures = SMPL_FIXTURE_DIR;
+
+class RunRequestTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = ::testing::TempDir() + "run_request_test_" + std::to_string(::getpid());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    out_ = dir_ + "/body.glb";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // The request the command line makes of `extra`.
+  ExportRequest request(std::vector<const char*> extra, const char* model = "builtin") const {
+    std::vector<const char*> argv = {"smpl-export", "--model", model, "--out", out_.c_str(), "-q"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Result<Settings> s = parseSettings(static_cast<int>(argv.size()), argv.data());
+    EXPECT_TRUE(s.ok()) << s.message();
+    return s ? s->request : ExportRequest();
+  }
+  Result<ExportReport> run(const ExportRequest& r) const {
+    ModelSource models(r.model);
+    return runExportRequest(r, &models);
+  }
+  std::string producer() const {
+    Result<std::vector<uint8_t>> text = readFileBytes(out_ + ".smpl.json");
+    return text ? producerHashOf(std::string(text->begin(), text->end())) : "";
+  }
+  bool exists(const std::string& path) const {
+    struct stat st;
+    return ::stat(path.c_str(), &st) == 0;
+  }
+  std::string dir_, out_;
+};
+
+// A NaN the loaders never saw (a model built in code) reaches the asset as a
+// morph delta; the job must refuse before writing.
+TEST_F(RunRequestTest, NonFiniteAssetIsNotWritten) {
+  BodyModel model = demoBody();
+  model.posedirs(3 * 7 + 1, 0) = std::numeric_limits<double>::quiet_NaN();
+  ExportRequest r = request({});
+  r.model = "nan-model";
+  ModelSource models(r.model);
+  ASSERT_TRUE(models.add(r.model, std::move(model)).ok());
+  Result<ExportReport> report = runExportJob(r, RunInputs(), &models);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.kind(), ErrorKind::Export);
+  EXPECT_EQ(report.message().rfind("Error exporting " + out_ + ": morph target ", 0), 0u)
+      << report.message();
+  EXPECT_NE(report.message().find("vertex 7 is not finite (nan)"), std::string::npos)
+      << report.message();
+  EXPECT_FALSE(exists(out_));
+  EXPECT_FALSE(exists(out_ + ".smpl.json"));
+}
+
+TEST_F(RunRequestTest, SidecarRecordsWhatProducedTheOutput) {
+  auto hashWith = [&](std::vector<const char*> extra) {
+    Result<ExportReport> r = run(request(extra));
+    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.message());
+    return producer();
+  };
+  const std::string plain = hashWith({});
+  EXPECT_EQ(plain.size(), 16u);
+  EXPECT_EQ(hashWith({}), plain);                         // deterministic
+  EXPECT_NE(hashWith({"--max-influences", "2"}), plain);  // changes the bytes
+  EXPECT_NE(hashWith({"--betas", "0.5"}), plain);
+  EXPECT_EQ(hashWith({"--memory-limit", "1G"}), plain);  // does not
+}
+
+// --model DIR with a motion: the motion file is decoded once (the folder's
+// pick reads the decoded motion's gender), and the pick is the female model.
+TEST_F(RunRequestTest, EachMotionIsDecodedOnce) {
+  const std::string folder = kFixtures + "/released/smpl_folder";
+  const std::string f_walk = kFixtures + "/released/mixed_gender/f_walk.npz";
+  const std::string m_walk = kFixtures + "/released/mixed_gender/m_walk.npz";
+  const uint64_t before = motionsDecoded();
+  Result<ExportReport> one = run(request({"--motion", f_walk.c_str()}, folder.c_str()));
+  ASSERT_TRUE(one.ok()) << one.message();
+  EXPECT_EQ(motionsDecoded() - before, 1u);
+  EXPECT_EQ(one->model_path, folder + "/SMPL_FEMALE.pkl");
+  Result<ExportReport> two =
+      run(request({"--motion", m_walk.c_str(), "--motion", f_walk.c_str()}, folder.c_str()));
+  ASSERT_TRUE(two.ok()) << two.message();
+  EXPECT_EQ(motionsDecoded() - before, 3u);
+  EXPECT_EQ(two->model_path, folder + "/SMPL_MALE.pkl");  // the first motion's gender
+  EXPECT_EQ(two->frames, 60);
+}
+
+// The pick takes a decoded Motion, not a path: one built in code (no file
+// at all) chooses by its layout and gender.
+TEST_F(RunRequestTest, FolderPickUsesTheDecodedMotion) {
+  ModelSource models(kFixtures + "/released/smpl_folder");
+  Motion motion;
+  motion.layout = ModelKind::Smpl;
+  for (const auto& [gender, file] : std::vector<std::pair<std::string, std::string>>{
+           {"male", "SMPL_MALE.pkl"}, {"female", "SMPL_FEMALE.pkl"}, {"", "SMPL_NEUTRAL.npz"}}) {
+    motion.gender = gender;
+    Result<ModelPick> pick = models.forMotion(&motion);
+    ASSERT_TRUE(pick.ok()) << pick.message();
+    EXPECT_EQ(fs::path(pick->path).filename().string(), file) << gender;
+  }
+  Result<ModelPick> none = models.forMotion(nullptr);
+  ASSERT_TRUE(none.ok()) << none.message();
+  EXPECT_EQ(fs::path(none->path).filename().string(), "SMPL_NEUTRAL.npz");
+}
+
+// Ranges that need the model are checked once it is known; nothing is written.
+TEST_F(RunRequestTest, ModelChecksRunOnceTheModelIsKnown) {
+  Result<ExportReport> r = run(request({"--max-influences", "30"}));
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.message(),
+            "Error in arguments: --max-influences must be between 1 and 24 (the model's joints) or "
+            "'all', got 30");
+  EXPECT_EQ(r.kind(), ErrorKind::Usage);
+  EXPECT_FALSE(exists(out_));
+  Result<ExportReport> fps = run(request({"--motion", "w.npz", "--fps", "0"}));
+  ASSERT_FALSE(fps.ok());  // before the motion is opened
+  EXPECT_EQ(fps.message(), "Error in arguments: --fps: expected a rate in (0, 1000], got '0'");
+}
+
+TEST_F(RunRequestTest, GuardRunsBeforeAnyWork) {
+  const std::string model = dir_ + "/m.glb";
+  fs::copy_file(kFixtures + "/models/smpl_small.npz", model);
+  ExportRequest r = request({}, model.c_str());
+  r.out = model;
+  const uint64_t before = motionsDecoded();
+  r.motions = {kFixtures + "/motions/smpl_72.npz"};
+  Result<ExportReport> report = run(r);
+  ASSERT_FALSE(report.ok());
+  EXPECT_EQ(report.message(), "Error in arguments: output " + model +
+                                  " would overwrite the input " + model +
+                                  " (same file); choose another output path");
+  EXPECT_EQ(motionsDecoded(), before);
+  EXPECT_EQ(fs::file_size(model), fs::file_size(kFixtures + "/models/smpl_small.npz"));
+}
+
+// The notes come from what the bake used: the joints the clip's mapping
+// dropped and the --frames range clamped to the motion, once each.
+TEST_F(RunRequestTest, NotesComeFromTheBake) {
+  const std::string walk = kFixtures + "/motions/amass_smplh.npz";
+  Result<ExportReport> r = run(request({"--motion", walk.c_str(), "--frames", "0:100000"}));
+  ASSERT_TRUE(r.ok()) << r.message();
+  const std::vector<std::string>& notes = r->notes;
+  auto count = [&](const std::string& text) {
+    return std::count_if(notes.begin(), notes.end(),
+                         [&](const std::string& n) { return n.find(text) != std::string::npos; });
+  };
+  EXPECT_EQ(count("amass_smplh: 30 smplh joints not in the model were dropped (left_index1, ...)"),
+            1);
+  EXPECT_EQ(count("amass_smplh: --frames 0:100000 ends after the motion's"), 1);
+  EXPECT_GT(r->frames, 0);
+}
+
+// --betas-file is read once per run, its note kept for the summary.
+TEST_F(RunRequestTest, BetasFileIsARunInput) {
+  const std::string betas = kFixtures + "/released/betas_rows_differ.npy";
+  ExportRequest r =
+      request({"--betas-file", betas.c_str()}, (kFixtures + "/models/smpl_small.npz").c_str());
+  ModelSource models(r.model);
+  Result<RunInputs> inputs = loadRunInputs(r, &models);
+  ASSERT_TRUE(inputs.ok()) << inputs.message();
+  EXPECT_TRUE(inputs->betas_given);
+  EXPECT_EQ(inputs->betas.size(), 10u);
+  EXPECT_EQ(inputs->betas_note.rfind(betas + ": betas: 30 per-frame rows differ", 0), 0u)
+      << inputs->betas_note;
+  r.betas_file = dir_ + "/missing.json";
+  Result<RunInputs> missing = loadRunInputs(r, &models);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_EQ(missing.kind(), ErrorKind::Load);
+  EXPECT_EQ(missing.message().rfind("Error loading " + r.betas_file + ": ", 0), 0u)
+      << missing.message();
+}
+
+}  // namespace
+}  // namespace smpl
