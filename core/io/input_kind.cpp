@@ -61,8 +61,11 @@ const InputKind kModelInput = {
     "model file", {{FileFormat::Zip, kNoSizeBound}, {FileFormat::Pickle, kNoSizeBound}}, false};
 const InputKind kMotionInput = {"motion file",
                                 {{FileFormat::Zip, kNoSizeBound},
+                                 {FileFormat::Npy, 1024 * kMiB},
                                  {FileFormat::Pickle, 1024 * kMiB},
-                                 {FileFormat::Json, 256 * kMiB}},
+                                 {FileFormat::Json, 256 * kMiB},
+                                 {FileFormat::Text, 256 * kMiB},
+                                 {FileFormat::Unknown, kNoSizeBound}},
                                 true};
 const InputKind kUvObjInput = {"UV file", {{FileFormat::Text, 256 * kMiB}}, true};
 const InputKind kUvNpyInput = {"UV file", {{FileFormat::Npy, 256 * kMiB}}, true};

@@ -26,7 +26,7 @@ namespace smpl {
 
 // What the first bytes of a file show.
 enum class FileFormat {
-  Unknown,  // none of the below (a sparse file's zeros, a GLB, ...)
+  Unknown,  // none of the below (a sparse file's zeros, a GLB, compressed data, ...)
   Zip,      // "PK\3\4" or "PK\5\6" (an empty archive): .npz, SMPLCodec .smpl
   Npy,      // "\x93NUMPY"
   Pickle,   // protocol 2+ (0x80), or a protocol 0/1 opening ('(' MARK, '}' '{}', ']' '[]')
@@ -61,10 +61,12 @@ constexpr uint64_t kNoSizeBound = ~0ull;  // mapped and read lazily: the memory 
 
 // --model FILE: .npz or .pkl, regular files only (mapped).
 extern const InputKind kModelInput;
-// --motion FILE / --motion-dir entries: .npz/.smpl (zip, lazy), .pkl (1 GiB), .json (256 MiB).
-// The motion reader (core/load/motion.cpp) calls
-//   Result<FileFormat> f = checkInputFile(path, kMotionInput);  // before choosing a reader
-//   Result<std::vector<uint8_t>> b = readFileBytes(path, kMotionInput);  // .pkl/.json bytes
+// --motion FILE / --motion-dir entries: zips (.npz, .smpl, torch .pt: lazy, no
+// bound), .npy and pickles/joblib (1 GiB), JSON and other text (256 MiB); any
+// other first bytes (compressed joblib, or none of them) are left to the
+// container sniffer (core/io/tree/data_tree.h), which names what it reads.
+// The motion reader (core/load/motion_read.cpp) calls, before it maps the file,
+//   Result<FileFormat> f = checkInputFile(path, kMotionInput);
 extern const InputKind kMotionInput;
 // --uv FILE.obj: text, 256 MiB.
 extern const InputKind kUvObjInput;

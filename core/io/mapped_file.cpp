@@ -17,8 +17,10 @@ Result<MappedFile> MappedFile::open(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   struct stat st {};
   if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ,
-                     MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    // Not MAP_POPULATE: that faults in every page up front, so merely sniffing
+    // a 3 GB sparse file cost 3 GB of resident pages; pages are mapped as they
+    // are read (no slower for the model loader's full walk, README "Details").
+    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
     if (m != MAP_FAILED) {
       f.mapping_ = m;
       f.mapped_size_ = static_cast<size_t>(st.st_size);

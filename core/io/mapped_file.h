@@ -1,6 +1,7 @@
 // A whole input file's bytes without copying them: a read-only private
-// mapping of a regular file (the pages come straight from the page cache,
-// all mapped in one call since the reader walks every byte), or, for what
+// mapping of a regular file (the pages come straight from the page cache and
+// are mapped as they are read, so a reader that only sniffs the first bytes
+// or the zip directory of a huge file touches a few pages), or, for what
 // cannot be mapped (pipes, empty files), readFileBytes' copy with its checks
 // (devices refused, memory budget). The mapping is watched by a MappingGuard
 // (mapping_guard.h): a file that shrinks while it is read gives the reader

@@ -14,7 +14,8 @@ core/io and writing parts:
     pickles parsed from the mapping) ends with one error line naming it,
     never SIGBUS;
   - files that are not what they claim (3 GB sparse files as --uv, --betas-file,
-    --dmpl; --model /dev/stdin) are refused at once with megabytes of memory;
+    --dmpl, --motion; --model /dev/stdin) are refused at once with megabytes of
+    memory;
   - UV and DMPL values beyond float32 are load errors naming the input and key;
   - a motion file name that is not UTF-8 is escaped into the outputs;
   - numbers: 0x10, +4, " 4", 1e1 (integers) refused by every numeric option;
@@ -306,6 +307,9 @@ def not_what_they_claim():
         ("betas_npz", ["--betas-file", sparse(d / "betas.npz", g3)], "not a betas file"),
         ("betas_json", ["--betas-file", sparse(d / "betas.json", g3, b'{"betas": [')], "too large for a betas file"),
         ("dmpl", ["--dmpl", sparse(d / "dmpl.npz", g3)], "not a DMPL basis"),
+        ("motion_zeros", ["--motion", sparse(d / "walk.json", g3)], "not a motion file"),
+        ("motion_pickle", ["--motion", sparse(d / "walk.pkl", g3, b"\x80\x04")], "too large for a motion file"),
+        ("motion_json", ["--motion", sparse(d / "run.json", g3, b'{"poses": [')], "too large for a motion file"),
     ]
     np.save(d / "big_ft.npy", np.zeros((1, 3)))  # the pair's partner, so big_uv.npy is read
     for name, extra, what in cases:
