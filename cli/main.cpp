@@ -84,6 +84,13 @@ int run(int argc, char** argv, Stage* stage) {
   if (isatty(2) != 0 && !s.quiet) request.progress = drawProgress;
   if (!s.quiet) request.skin_error_poses = kSkinErrorPoses;
   stage->set("exporting", request.out, kExitExport);
+  if (request.track.kind == TrackChoice::Kind::All) {  // one output per person
+    Result<std::vector<ExportReport>> results = runTrackExports(request, &models);
+    if (!results) return report(results.message(), exitCodeFor(results.kind()));
+    for (const ExportReport& r : *results)
+      if (!s.quiet) printSummary(r.out, r);
+    return kExitOk;
+  }
   Result<ExportReport> result = runExportRequest(request, &models);
   if (!result) return report(result.message(), exitCodeFor(result.kind()));
   if (!s.quiet) printSummary(request.out, *result);

@@ -266,13 +266,37 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) { return intInto(v, "--fbx-compress-level", &s->request.fbx_compress_level); }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
-     "Animation (recognised by content: AMASS .npz, SMPL (T,72), .npz/.json with `poses` "
-     "axis-angle "
-     "or rotation matrices, SMPLCodec .smpl, SMPL-X/SMPL fits .pkl/.npz (SMPLify-X, PIXIE, "
-     "ExPose), "
-     "AIST++ .pkl):",
+     "Animation (recognised by content, not by name: AMASS, SMPLCodec .smpl, fits, AIST++, and "
+     "the outputs of video, generation and hand trackers: WHAM, 4D-Humans, GVHMR, TRAM, ROMP, "
+     "EasyMocap, SMPLer-X, Motion-X, MDM, HaMeR, BEAT2; the list: docs/motions.md):",
      "bake FILE as an animation (repeatable: one animation each)",
      [](V v, S* s) { return s->request.motions.push_back(v), Status(); }, Hashed::Content},
+    {"--motion-sequence", nullptr, "DIR", Applies::Single, nullptr,
+     "one motion from per-frame files (<frame>.<ext> or <frame>_<person>.<ext>: SMPLer-X, "
+     "EasyMocap, HaMeR), joined in frame order, one track per person",
+     [](V v, S* s) {
+       s->request.motion_sequence = v;
+       return s->request.motions.push_back(v), Status();
+     },
+     Hashed::Content},
+    {"--track", nullptr, "ID|longest|all", Applies::Motion, nullptr,
+     "multi-person files: the person to bake (default longest: most detections, ties to the "
+     "lower id, with a note listing the others); all: one output per person, "
+     "<out stem>.track<ID>.<ext>",
+     [](V v, S* s) {
+       Result<TrackChoice> c = parseTrackChoice(v);
+       if (!c) return Status(c.error());
+       return s->request.track = *c, Status();
+     }},
+    {"--source-params", nullptr, "global|incam", Applies::Motion, nullptr,
+     "tools that write world and camera parameters (WHAM, GVHMR, TRAM): which to read (default "
+     "global, the world one)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--source-params", {"global", "incam"});
+       if (!c) return Status(c.error());
+       s->request.source_params = *c == 0 ? SourceParams::Global : SourceParams::Incam;
+       return Status();
+     }},
     {"--source-fps", nullptr, "R", Applies::Motion, nullptr,
      "the motion's frame rate: overrides a stored one; without it a file that stores none is read "
      "at 30 fps (AIST++: 60) and a note says so",

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,18 +67,28 @@ struct Motion {
   // knows J_0: the root becomes A R_0 and the root node A (J_0 + t) + b.
   std::vector<Eigen::Matrix3d> world_rotation;
   std::vector<Eigen::Vector3d> world_translation;
-  std::string hand;    // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
-  PendingHands hands;  // fits only: resolved by resolveFitHands()
+  std::string hand;  // MANO motions: "right" or "left" (HaMeR's is_right); "" otherwise
+  // The body model the file names, when it names one (AMASS `surface_model_type`):
+  // --model DIR picks that kind rather than the one of the joint layout.
+  std::optional<ModelKind> model_kind;
+  PendingHands hands;              // fits only: resolved by resolveFitHands()
   std::vector<std::string> notes;  // for the user: what was assumed or averaged, one line each
   std::string source_layout;       // the table row that read it ("amass", "fit", ...)
   MemoryCharge charge;             // `frames` and `translation` against the memory budget
 };
+
+// Which parameters of a tool that writes both a world and a camera version
+// (WHAM pose_world/pose, GVHMR smpl_params_global/incam, TRAM with or without
+// camera.npy) a layout reads: --source-params. Default: the layout's
+// preference (the world one).
+enum class SourceParams { Default, Global, Incam };
 
 // Options of loadMotion.
 struct MotionOptions {
   double source_fps = 0.0;  // --source-fps: the source rate; 0 = stored rate, else the layout's
                             // default (30 fps; AIST++ 60, as documented) with a note
   bool up_given = false;    // --up was given: no note about the layout's default world turn
+  SourceParams source_params = SourceParams::Default;  // --source-params global|incam
 };
 
 // What one file holds: one Motion per person or track (most files hold one)

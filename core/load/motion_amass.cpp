@@ -112,6 +112,9 @@ Status decodeExtras(const DataNode& d, const std::string& path, Motion* m) {
   }
   if (const Array* gender = find(d, "gender"); gender && !gender->strings.empty())
     m->gender = gender->strings[0];
+  if (const Array* t = find(d, "surface_model_type"); t && !t->strings.empty())  // AMASS
+    for (ModelKind k : {ModelKind::Smpl, ModelKind::SmplH, ModelKind::SmplX, ModelKind::Mano})
+      if (t->strings[0] == modelKindName(k)) m->model_kind = k;
   if (Status st = decodeDmpls(d, path, m); !st) return st;
   m->fps = 0.0;
   for (const char* key : {"mocap_framerate", "mocap_frame_rate", "fps"}) {

@@ -48,8 +48,18 @@ int64_t framesOf(const std::vector<int64_t>& s, int joints, bool* matrices) {
 }
 
 // Optional part with `joints` joints and T frames into joints [first, ...).
+// A pose key that is there but is not an array (a dict, a list of objects)
+// is an error naming what it holds: never a silent rest pose.
+Status notAnArray(const DataNode& d, const std::string& path, const char* key) {
+  const DataNode* node = d.get(key);
+  if (!node || node->isArray() || node->kind == DataNode::Kind::None) return Status();
+  return makeError(path + ": '" + key + "' holds " + describeNode(*node) +
+                   ", expected an array of poses");
+}
+
 Status putPart(const DataNode& d, const std::string& path, const char* key, int joints, int first,
                Motion* m) {
+  if (Status s = notAnArray(d, path, key); !s) return s;
   const Array* a = find(d, key);
   if (!a) return Status();
   const int64_t t = static_cast<int64_t>(m->frames.size());
@@ -70,6 +80,7 @@ Status putPart(const DataNode& d, const std::string& path, const char* key, int 
 // coefficients) waits for the model in `pending`.
 Status putHand(const DataNode& d, const std::string& path, const char* key, int first, Motion* m,
                std::vector<Eigen::VectorXd>* pending) {
+  if (Status s = notAnArray(d, path, key); !s) return s;
   const Array* a = find(d, key);
   if (!a) return Status();
   const int64_t t = static_cast<int64_t>(m->frames.size());

@@ -77,8 +77,9 @@ std::vector<std::string> motionFileExtensions();
 // sorted, at most 12, through printable()).
 std::string unmatchedMessage(const DataNode& root);
 
-// True when no row matches and no key looks like pose data (batch mode
-// skips such files with a note instead of failing them).
+// True for a Dict with a betas key (betas, shape, shapeParameters) and no key
+// that looks like pose data (batch mode skips such files with a note
+// instead of failing them); a file without betas is never called a shape file.
 bool isShapeOnly(const DataNode& root);
 
 }  // namespace smpl

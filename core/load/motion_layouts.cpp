@@ -71,11 +71,16 @@ std::string keyList(const DataNode& root) {
 
 }  // namespace
 
+// A shape file holds a betas key (betas, shape, shapeParameters) and nothing
+// that looks like pose data (AMASS shape.npz, *_stagei.npz, a shape-only .smpl).
 bool isShapeOnly(const DataNode& root) {
   if (!root.isDict()) return false;
-  for (const std::string& key : root.keys)
+  bool betas = false;
+  for (const std::string& key : root.keys) {
     if (looksLikePose(key)) return false;
-  return true;
+    betas |= key == "betas" || key == "shape" || key == "shapeParameters";
+  }
+  return betas;
 }
 
 std::string unmatchedMessage(const DataNode& root) {

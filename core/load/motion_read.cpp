@@ -1,9 +1,11 @@
 #include "core/load/motion_read.h"
 
 #include "core/io/file_io.h"
+#include "core/io/npy.h"
 #include "core/io/npz.h"
 #include "core/io/tree/data_tree.h"
 #include "core/io/tree/npz_tree.h"
+#include "core/memory_budget.h"
 
 namespace smpl {
 namespace {
@@ -37,6 +39,31 @@ DataNode namesOf(const std::vector<std::string>& names) {
   return root;
 }
 
+// A motion's numbers exist three times while it is read: the decoded member
+// (8 bytes per element) and the per-frame rotations built from it (a 3x3
+// matrix of doubles, 72 bytes, per 3 axis-angle values: 24 per element). So
+// before any member is decoded, the declared sizes of the layout's members are
+// checked against the budget with 4 x 8 bytes per element: a file that
+// declares two million frames is refused at once, not after gigabytes.
+Status checkDeclaredSize(const NpzArchive& npz, const std::vector<std::string>& keys,
+                         const std::string& path) {
+  double elements = 0;
+  std::string largest;
+  double largest_count = -1;
+  for (const std::string& key : keys) {
+    Result<NpyHeaderInfo> header = npz.header(key);
+    if (!header || isObjectDescr(header->descr)) continue;  // the decode reports a bad header
+    double count = 1;
+    for (int64_t d : header->shape) count *= static_cast<double>(d);
+    elements += count;
+    if (count > largest_count) largest_count = count, largest = key;
+  }
+  const double bytes = elements * 32.0;
+  if (bytes > 1.8e19) return checkMemory(UINT64_MAX, path, "the motion's members");
+  return checkMemory(static_cast<uint64_t>(bytes), path,
+                     "decoding '" + largest + "' and its frames");
+}
+
 Result<MotionFile> readNpz(const std::string& path, bool decode) {
   Result<NpzArchive> npz = NpzArchive::open(path);  // errors name the base name, as the models'
   if (!npz) return npz.error();
@@ -48,6 +75,7 @@ Result<MotionFile> readNpz(const std::string& path, bool decode) {
   std::vector<std::string> keys;  // only the layout's keys (NpzArchive is lazy)
   for (const std::string& key : file.layout->keys)
     if (npz->has(key)) keys.push_back(key);
+  if (Status st = checkDeclaredSize(*npz, keys, path); !st) return st.error();
   Result<DataNode> tree = readNpzTree(*npz, keys);
   if (!tree) return tree.error();
   file.root = std::move(*tree);

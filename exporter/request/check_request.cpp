@@ -79,6 +79,15 @@ Status checkConflicts(const ExportRequest& r) {
     return usage("--betas-from-motion conflicts with --betas/--betas-file");
   if (r.dmpl_count && r.dmpl.empty()) return usage("--dmpl-count needs --dmpl");
   if (r.dmpl_regressed_joints && r.dmpl.empty()) return usage("--dmpl-joints needs --dmpl");
+  if (r.track.kind == TrackChoice::Kind::All && !r.motion_dir.empty())
+    return usage(
+        "--track all writes one output per person of one motion; in batch mode give --track "
+        "longest or a track id");
+  if (r.track.kind == TrackChoice::Kind::All && r.motions.size() != 1)
+    return usage(
+        "--track all writes one output per person: give one --motion or --motion-sequence");
+  if (!r.motion_sequence.empty() && r.motions.size() != 1)
+    return usage("--motion-sequence DIR is the run's one motion: it conflicts with --motion");
   return checkMorphOptions(r);
 }
 

@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/load/motion.h"
+#include "core/load/motion_tracks.h"
 #include "core/math/skin_weights.h"
 #include "exporter/animation.h"
 #include "exporter/pipeline.h"
@@ -24,16 +26,20 @@ namespace smpl {
 struct ExportRequest {
   // --- inputs ---
   std::string model;                 // --model PATH|DIR|builtin (file, folder picked per motion)
-  std::vector<std::string> motions;  // --motion FILE, one animation each (batch: the job's motion)
-  std::optional<double> source_fps;  // --source-fps R, fps in [1, 1000]; none: the stored rate
-  bool flat_hand_mean = false;       // --flat-hand-mean: fit hands are flat-hand relative
-  std::vector<double> betas;         // --betas v,v,...: |v| <= 1000, at most the model's B
-  std::string betas_file;            // --betas-file FILE: .npy, .npz (key 'betas') or .json
-  bool betas_from_motion = false;    // --betas-from-motion: the first motion must carry betas
-  std::vector<double> expression;    // --expression v,v,...: SMPL-X, |v| <= 1000
-  std::string uv;                    // --uv OBJ|NPY|none ("" = the model file's own vt/ft)
-  std::string dmpl;                  // --dmpl FILE|DIR: DMPL basis (DIR: per motion gender)
-  std::optional<int> dmpl_count;     // --dmpl-count N >= 1: the first N directions (none: all)
+  std::vector<std::string> motions;  // --motion FILE, one animation each (batch: the job's motion);
+                                     // --motion-sequence DIR is one of them too
+  std::string motion_sequence;  // --motion-sequence DIR: per-frame files joined (motion_sequence.h)
+  TrackChoice track;            // --track ID|longest|all (core/load/motion_tracks.h)
+  SourceParams source_params = SourceParams::Default;  // --source-params global|incam
+  std::optional<double> source_fps;    // --source-fps R, fps in [1, 1000]; none: the stored rate
+  bool flat_hand_mean = false;         // --flat-hand-mean: fit hands are flat-hand relative
+  std::vector<double> betas;           // --betas v,v,...: |v| <= 1000, at most the model's B
+  std::string betas_file;              // --betas-file FILE: .npy, .npz (key 'betas') or .json
+  bool betas_from_motion = false;      // --betas-from-motion: the first motion must carry betas
+  std::vector<double> expression;      // --expression v,v,...: SMPL-X, |v| <= 1000
+  std::string uv;                      // --uv OBJ|NPY|none ("" = the model file's own vt/ft)
+  std::string dmpl;                    // --dmpl FILE|DIR: DMPL basis (DIR: per motion gender)
+  std::optional<int> dmpl_count;       // --dmpl-count N >= 1: the first N directions (none: all)
   bool dmpl_regressed_joints = false;  // --dmpl-joints regressed (false: fixed)
 
   // --- the asset (ExportOptions) ---
@@ -82,6 +88,7 @@ struct ExportRequest {
 
 // What one export did, for the summary (cli/summary.h) and the batch lines.
 struct ExportReport {
+  std::string out;       // the output written (with --track all: <stem>.track<ID>.<ext>)
   size_t bytes = 0;      // output plus external buffer
   double seconds = 0.0;  // wall time of the export (not of the skinning error)
   int vertices = 0, joints = 0, morph_targets = 0, max_influences = 0;

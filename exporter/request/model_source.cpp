@@ -54,7 +54,7 @@ Result<ModelPick> ModelSource::forMotion(const Motion* motion) {
   if (!isFolder()) return load(option_, "");
   std::optional<ModelKind> kind;
   std::string gender;
-  if (motion) kind = motion->layout, gender = motion->gender;
+  if (motion) kind = motion->model_kind.value_or(motion->layout), gender = motion->gender;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!listed_) listing_ = listModelFolder(option_), listed_ = true;

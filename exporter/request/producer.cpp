@@ -77,6 +77,19 @@ Result<ContentHash> producerBase(const ExportRequest& s) {
 std::string producerHash(ContentHash base, const std::vector<std::string>& motions) {
   for (const std::string& m : motions) {
     std::error_code ec;
+    if (fs::is_directory(m, ec)) {  // --motion-sequence DIR: each file's name and size
+      std::vector<std::string> files;
+      for (auto it = fs::directory_iterator(m, ec); !ec && it != fs::directory_iterator();
+           it.increment(ec)) {
+        std::error_code e2;
+        const auto size = it->is_regular_file(e2) ? it->file_size(e2) : 0;
+        files.push_back(it->path().filename().string() + " " + std::to_string(size));
+      }
+      std::sort(files.begin(), files.end());
+      base.add("sequence " + baseName(m));
+      for (const std::string& f : files) base.add(f);
+      continue;
+    }
     const auto size = fs::file_size(m, ec);
     base.add("motion " + baseName(m) + " " + (ec ? std::string("?") : std::to_string(size)));
   }

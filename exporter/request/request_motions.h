@@ -1,21 +1,30 @@
 // The one place an export reads its motions (issue 27 item 1): each motion
-// file is opened and decoded once per export, and that decoded Motion serves
-// every later step (the --model DIR pick, the fit hands, the betas, DMPL, the
-// bake). Two small functions, so the motion reader (core/load/motion.h) can be
-// swapped behind them.
+// file (or --motion-sequence folder) is opened and decoded once per export,
+// and that decoded Motion serves every later step (the --model DIR pick, the
+// fit hands, the betas, DMPL, the bake). Small functions, so the motion
+// reader (core/load/motion.h) stays behind them.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/body_model.h"
 #include "core/load/motion.h"
+#include "core/load/motion_tracks.h"
 #include "core/result.h"
 #include "exporter/request/export_request.h"
 
 namespace smpl {
 
-// loadMotion(path) with the request's --source-fps. Errors name the file.
+// Every track of `path` (a motion file, or the request's --motion-sequence
+// folder, core/load/motion_sequence.h) with the request's --source-fps,
+// --source-params and --up. A folder given as --motion is refused (what to
+// give instead). Errors name the file.
+Result<MotionSet> decodeMotionSet(const std::string& path, const ExportRequest& request);
+
+// The one track the request's --track picks (longest or an id; `all` is the
+// caller's: one export per track), with its notes. Errors: an unknown id.
 Result<Motion> decodeMotion(const std::string& path, const ExportRequest& request);
 
 // Fit hand poses (PCA coefficients, hands_mean) through `model`'s basis, with
@@ -24,7 +33,10 @@ Result<Motion> decodeMotion(const std::string& path, const ExportRequest& reques
 Status resolveMotionHands(const BodyModel& model, const ExportRequest& request,
                           const std::string& path, Motion* motion);
 
-// How many times decodeMotion ran in this process (every thread): the test
+// `out` for track `id` of --track all: DIR/walk.glb -> DIR/walk.track<id>.glb.
+std::string trackOutput(const std::string& out, const std::string& id);
+
+// How many times decodeMotionSet ran in this process (every thread): the test
 // hook that shows a motion is decoded once per export.
 uint64_t motionsDecoded();
 

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <new>
 
@@ -71,9 +73,11 @@ struct Loaded {
 };
 
 Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
-                       Stage* stage) {
+                       Stage* stage, const Motion* given) {
   Loaded loaded;
-  for (const std::string& path : r.motions) {  // an escaping exception: "exporting <out>"
+  if (given) loaded.motions.push_back(*given);  // a track of --track all, decoded by the caller
+  for (size_t i = given ? 1 : 0; i < r.motions.size(); ++i) {  // exceptions: "exporting <out>"
+    const std::string& path = r.motions[i];
     Result<Motion> m = decodeMotion(path, r);
     if (!m) return fail(ErrorKind::Load, "loading", path, m.message());
     loaded.motions.push_back(std::move(*m));
@@ -94,15 +98,28 @@ Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSou
 // Betas from the first motion when the run gave none; --betas-from-motion
 // makes a motion without betas an error.
 Status betasFromMotion(const BodyModel& model, const ExportRequest& r,
-                       const std::vector<Motion>& motions, ExportOptions* o) {
+                       const std::vector<Motion>& motions, ExportOptions* o,
+                       std::vector<std::string>* notes) {
   if (motions.empty() || motions[0].betas.empty()) {
     if (r.betas_from_motion && !r.motions.empty())
       return fail(ErrorKind::Load, "loading", r.motions[0],
                   "no betas in the motion (--betas-from-motion)");
     return Status();
   }
-  const size_t n = std::min(motions[0].betas.size(), static_cast<size_t>(model.numBetas()));
-  o->betas.assign(motions[0].betas.begin(), motions[0].betas.begin() + n);
+  const std::vector<double>& betas = motions[0].betas;
+  const size_t n = std::min(betas.size(), static_cast<size_t>(model.numBetas()));
+  o->betas.assign(betas.begin(), betas.begin() + n);
+  double dropped = 0;
+  for (size_t i = n; i < betas.size(); ++i) dropped = std::max(dropped, std::abs(betas[i]));
+  if (dropped > 0) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "%s: the motion has %zu betas; the model %s has %d: betas %zu..%zu are not "
+                  "used (largest |value| %.3g)",
+                  motions[0].name.c_str(), betas.size(), model.name.c_str(), model.numBetas(), n,
+                  betas.size() - 1, dropped);
+    notes->push_back(text);
+  }
   return Status();
 }
 
@@ -128,7 +145,8 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, const Lo
   const BodyModel& model = *loaded.pick.model;
   ExportOptions options = exportOptionsOf(r, inputs.betas);
   if (!inputs.betas_given)
-    if (Status st = betasFromMotion(model, r, loaded.motions, &options); !st) return st.error();
+    if (Status st = betasFromMotion(model, r, loaded.motions, &options, &report->notes); !st)
+      return st.error();
   Result<PreparedDmpl> dmpl = prepareDmpl(model, r, loaded.motions, report);  // dmpl_job.h
   if (!dmpl) return dmpl.error();
   std::vector<std::string> frame_notes;
@@ -170,16 +188,17 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
 }
 
 Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
-                            Stage* stage) {
+                            Stage* stage, const Motion* given = nullptr) {
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(r.out);
   if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
   if (r.clean_temporaries)
     removeStaleTemps(dirName(r.out), {baseName(r.out), baseName(r.out) + ".smpl.json",
                                       baseName(gltfBufferPath(r, r.out))});
-  Result<Loaded> loaded = loadJob(r, inputs, models, stage);
+  Result<Loaded> loaded = loadJob(r, inputs, models, stage, given);
   if (!loaded) return loaded.error();
   ExportReport report;
+  report.out = r.out;
   report.model_path = loaded->pick.path;
   report.model_note = loaded->pick.note;
   report.betas_note = inputs.betas_note;
@@ -242,6 +261,38 @@ Result<ExportReport> runExportJob(const ExportRequest& r, const RunInputs& input
   Stage stage;
   stage.set("exporting", r.out, ErrorKind::Export);
   return guarded<ExportReport>(&stage, [&] { return runJob(r, inputs, models, &stage); });
+}
+
+Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelSource* models) {
+  if (Status st = beginRun(r); !st) return st.error();
+  Stage stage;
+  stage.set("loading", r.motions.front(), ErrorKind::Load);
+  Result<std::vector<Motion>> tracks =
+      guarded<std::vector<Motion>>(&stage, [&]() -> Result<std::vector<Motion>> {
+        Result<MotionSet> set = decodeMotionSet(r.motions.front(), r);
+        if (!set) return fail(ErrorKind::Load, "loading", r.motions.front(), set.message());
+        Result<std::vector<Motion>> all = selectTracks(std::move(*set), r.track, r.motions.front());
+        if (!all) return fail(ErrorKind::Load, "loading", r.motions.front(), all.message());
+        return all;
+      });
+  if (!tracks) return tracks.error();
+  std::vector<std::string> outs;  // known now, guarded before anything is written
+  for (const Motion& m : *tracks)
+    outs.push_back(m.track.empty() || tracks->size() == 1 ? r.out : trackOutput(r.out, m.track));
+  if (Status st = checkRunPaths(runPaths(r, outs, r.motions)); !st) return usage(st.message());
+  Result<RunInputs> inputs = loadRunInputs(r, models);
+  if (!inputs) return inputs.error();
+  std::vector<ExportReport> reports;
+  for (size_t i = 0; i < tracks->size(); ++i) {
+    ExportRequest job = r;
+    job.out = outs[i];
+    stage.set("exporting", job.out, ErrorKind::Export);
+    Result<ExportReport> one = guarded<ExportReport>(
+        &stage, [&] { return runJob(job, *inputs, models, &stage, &(*tracks)[i]); });
+    if (!one) return one.error();
+    reports.push_back(std::move(*one));
+  }
+  return reports;
 }
 
 Result<ExportReport> runExportRequest(const ExportRequest& r, ModelSource* models) {

@@ -58,6 +58,12 @@ Result<RunInputs> loadRunInputs(const ExportRequest& request, ModelSource* model
 Result<ExportReport> runExportJob(const ExportRequest& request, const RunInputs& inputs,
                                   ModelSource* models);
 
+// --track all: the one motion decoded once, one export per track to
+// <out stem>.track<ID>.<ext> (request_motions.h trackOutput; a file with one
+// person: `out` itself), every output guarded before the first is written.
+Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& request,
+                                                  ModelSource* models);
+
 // One export: beginRun, checkRunPaths(runPaths(request, {out}, motions))
 // before any work, loadRunInputs, runExportJob.
 Result<ExportReport> runExportRequest(const ExportRequest& request, ModelSource* models);

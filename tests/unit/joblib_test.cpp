@@ -115,12 +115,11 @@ TEST(Joblib, OldAndForbiddenGlobalsAreRefusedByName) {
   Result<DataNode> evil = joblib(readAll(kContainers + "evil_joblib.pkl"), "evil_joblib.pkl");
   ASSERT_FALSE(evil.ok());
   EXPECT_EQ(evil.message(), "evil_joblib.pkl: refusing pickle global 'os.system' (not model data)");
-  // A tensor pickled with plain pickle/joblib: pointed at torch.save.
-  Result<DataNode> tensor = joblib(B("\x80\x02\x63torch._utils\n_rebuild_tensor_v2\n."));
-  ASSERT_FALSE(tensor.ok());
-  EXPECT_NE(tensor.message().find("torch objects are read from torch.save files (.pt) only"),
-            std::string::npos)
-      << tensor.message();
+  // Of torch's objects only tensors are read (pickle_torch_legacy_test): a module is refused.
+  Result<DataNode> module = joblib(B("\x80\x02\x63torch.nn.modules.linear\nLinear\n."));
+  ASSERT_FALSE(module.ok());
+  EXPECT_NE(module.message().find("of torch's objects only tensors are read"), std::string::npos)
+      << module.message();
 }
 
 // A wrapper of dtype object: its array is a whole pickle after the BUILD.

@@ -62,6 +62,15 @@ TEST(MotionLayouts, OnlyTheMatchedRowsKeysAreDecoded) {
   EXPECT_EQ(m->fps, 50.0);
 }
 
+TEST(MotionLayouts, APoseKeyHoldingADictIsRefused) {
+  Result<Motion> m = loadMotion(kTable + "fit_hand_dict.pkl");
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.message().find("'left_hand_pose' holds dict with keys 'pose', expected an array of "
+                             "poses"),
+            std::string::npos)
+      << m.message();
+}
+
 TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
   const std::vector<std::string> ext = motionFileExtensions();
   EXPECT_EQ(
@@ -71,6 +80,7 @@ TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
 
 TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
   EXPECT_TRUE(isShapeOnly(names({"betas", "gender", "surface_model_type"})));
+  EXPECT_FALSE(isShapeOnly(names({"pred_cam", "pred_mano_params"})));  // no betas: unknown
   EXPECT_FALSE(isShapeOnly(names({"betas", "pred_rotmat"})));
   Result<Motion> shape = loadMotion(kTable + "shape_only.npz");
   ASSERT_FALSE(shape.ok());

@@ -132,6 +132,40 @@ TEST_F(RunRequestTest, FolderPickUsesTheDecodedMotion) {
   EXPECT_EQ(fs::path(none->path).filename().string(), "SMPL_NEUTRAL.npz");
 }
 
+// AMASS's surface_model_type names the body model: a folder picks that kind,
+// not the one of the joint layout (an SMPL-X stage-II file that drives SMPL-H).
+TEST_F(RunRequestTest, FolderPickFollowsTheNamedModelKind) {
+  fs::create_directories(dir_ + "/models");
+  fs::copy_file(kFixtures + "/models/smplh_small.npz", dir_ + "/models/SMPLH_NEUTRAL.npz");
+  fs::copy_file(kFixtures + "/models/smplx_small.npz", dir_ + "/models/SMPLX_NEUTRAL.npz");
+  ModelSource models(dir_ + "/models");
+  Motion motion;
+  motion.layout = ModelKind::SmplX;
+  EXPECT_EQ(fs::path(models.forMotion(&motion)->path).filename(), "SMPLX_NEUTRAL.npz");
+  motion.model_kind = ModelKind::SmplH;
+  EXPECT_EQ(fs::path(models.forMotion(&motion)->path).filename(), "SMPLH_NEUTRAL.npz");
+  Result<Motion> amass = loadMotion(kFixtures + "/formats/subject/run_stageii.npz");
+  ASSERT_TRUE(amass.ok()) << amass.message();
+  EXPECT_EQ(amass->model_kind, ModelKind::SmplX);  // surface_model_type "smplx"
+}
+
+// Motion betas beyond the model's count are not used, and a note says so
+// (--betas-file refuses them: the user typed them).
+TEST_F(RunRequestTest, MotionBetasBeyondTheModelAreNoted) {
+  const std::string model = kFixtures + "/models/smpl_small.npz";
+  const std::string motion = kFixtures + "/motions/amass_smplh.npz";  // 16 betas
+  Result<ExportReport> r = run(request({"--motion", motion.c_str()}, model.c_str()));
+  ASSERT_TRUE(r.ok()) << r.message();
+  EXPECT_EQ(r->options.betas.size(), 10u);
+  EXPECT_NE(std::find_if(r->notes.begin(), r->notes.end(),
+                         [](const std::string& n) {
+                           return n.find(
+                                      "the motion has 16 betas; the model smpl_small.npz has "
+                                      "10: betas 10..15 are not used") != std::string::npos;
+                         }),
+            r->notes.end());
+}
+
 // Ranges that need the model are checked once it is known; nothing is written.
 TEST_F(RunRequestTest, ModelChecksRunOnceTheModelIsKnown) {
   Result<ExportReport> r = run(request({"--max-influences", "30"}));
@@ -197,6 +231,64 @@ TEST_F(RunRequestTest, BetasFileIsARunInput) {
   EXPECT_EQ(missing.kind(), ErrorKind::Load);
   EXPECT_EQ(missing.message().rfind("Error loading " + r.betas_file + ": ", 0), 0u)
       << missing.message();
+}
+
+// --track all: one output per person, <out stem>.track<ID>.<ext>, the file
+// decoded once; --track ID picks one; the sidecar names the track and its
+// source frames (docs/file-contract.md "Metadata").
+TEST_F(RunRequestTest, TrackAllWritesOneOutputPerPerson) {
+  const std::string seq = kFixtures + "/layouts/video/smplerx/smplx";
+  const std::string model = kFixtures + "/models/smplx_small.npz";
+  ExportRequest r = request({"--motion-sequence", seq.c_str(), "--track", "all"}, model.c_str());
+  ModelSource models(r.model);
+  const uint64_t before = motionsDecoded();
+  Result<std::vector<ExportReport>> reports = runTrackExports(r, &models);
+  ASSERT_TRUE(reports.ok()) << reports.message();
+  EXPECT_EQ(motionsDecoded() - before, 1u);
+  ASSERT_EQ(reports->size(), 2u);
+  EXPECT_EQ((*reports)[0].out, dir_ + "/body.track0.glb");
+  EXPECT_EQ((*reports)[1].out, dir_ + "/body.track1.glb");
+  EXPECT_FALSE(exists(out_));
+  Result<std::vector<uint8_t>> text = readFileBytes(dir_ + "/body.track1.glb.smpl.json");
+  ASSERT_TRUE(text.ok());
+  const std::string sidecar(text->begin(), text->end());
+  EXPECT_NE(sidecar.find(R"("track":"1")"), std::string::npos) << sidecar;
+  EXPECT_NE(sidecar.find(R"("first_frame":6)"), std::string::npos) << sidecar;
+  EXPECT_EQ(trackOutput("a/b.c/walk.fbx", "12"), "a/b.c/walk.track12.fbx");
+  EXPECT_EQ(trackOutput("walk", "3"), "walk.track3");
+}
+
+TEST_F(RunRequestTest, TrackChoicesAndFoldersAreChecked) {
+  const std::string seq = kFixtures + "/layouts/video/smplerx/smplx";
+  const std::string model = kFixtures + "/models/smplx_small.npz";
+  ExportRequest one = request({"--motion-sequence", seq.c_str(), "--track", "1"}, model.c_str());
+  Result<ExportReport> picked = run(one);
+  ASSERT_TRUE(picked.ok()) << picked.message();
+  EXPECT_NE(std::find_if(picked->notes.begin(), picked->notes.end(),
+                         [](const std::string& n) {
+                           return n.find("track 1 of 2 (source frames 6-14)") != std::string::npos;
+                         }),
+            picked->notes.end());
+  fs::remove(out_);
+  fs::remove(out_ + ".smpl.json");
+  ExportRequest none = request({"--motion-sequence", seq.c_str(), "--track", "9"}, model.c_str());
+  Result<ExportReport> missing = run(none);
+  ASSERT_FALSE(missing.ok());
+  EXPECT_NE(missing.message().find("no track 9 (tracks: 0, 1)"), std::string::npos)
+      << missing.message();
+  EXPECT_EQ(missing.kind(), ErrorKind::Load);
+  const std::string motion = kFixtures + "/motions/smpl_72.npz";
+  ExportRequest two =
+      request({"--motion", motion.c_str(), "--motion", motion.c_str(), "--track", "all"});
+  Result<ExportReport> refused = run(two);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("give one --motion or --motion-sequence"), std::string::npos);
+  ExportRequest folder = request({"--motion", seq.c_str()}, model.c_str());
+  Result<ExportReport> dir = run(folder);
+  ASSERT_FALSE(dir.ok());
+  EXPECT_NE(dir.message().find("a folder: give --motion-sequence DIR"), std::string::npos)
+      << dir.message();
+  EXPECT_FALSE(exists(out_));
 }
 
 }  // namespace

@@ -277,9 +277,10 @@ TEST(OptionTable, EveryRuleIsEnforced) {
     format_only += o.applies == Applies::Format;
     std::vector<const char*> args = {"--model", "builtin", "--out", out.c_str(), o.name};
     const std::map<std::string, std::string> valid = {
-        {"--fbx-units", "cm"},     {"--fbx-version", "7500"}, {"--up", "y"},
-        {"--root-motion", "keep"}, {"--frames", "0:1"},       {"--format", "glb"},
-        {"--shard", "0/1"},        {"--manifest", "m.jsonl"}, {"--corrective-epsilon", "0.001"}};
+        {"--fbx-units", "cm"},     {"--fbx-version", "7500"},   {"--up", "y"},
+        {"--root-motion", "keep"}, {"--frames", "0:1"},         {"--format", "glb"},
+        {"--shard", "0/1"},        {"--manifest", "m.jsonl"},   {"--corrective-epsilon", "0.001"},
+        {"--track", "all"},        {"--source-params", "incam"}};
     const std::string value = valid.count(o.name) ? valid.at(o.name) : "1";
     if (o.value) args.push_back(value.c_str());
     if (std::string(o.name) == "--motion-dir" || std::string(o.name) == "--out-dir")

@@ -81,6 +81,8 @@ enum class GlobalId : uint8_t {
   TorchTensorClass,       // torch.Tensor, torch.nn.parameter.Parameter (a type, never called)
   TorchSize,              // torch.Size(tuple): the tuple
   TorchStorage,           // Instance: a storage's bytes (view), element dtype, numel (i)
+  // Only in tree mode outside a .pt archive (pickle_torch_legacy.cpp):
+  TorchLoadFromBytes,  // torch.storage._load_from_bytes(b): one storage in torch's legacy format
 };
 
 struct DtypeInfo {
@@ -108,6 +110,13 @@ struct VmOptions {
   // Set while the inline pickle of a joblib object array runs: joblib writes
   // it with plain pickle.dump, so no NumpyArrayWrapper can occur inside.
   bool inside_joblib_object = false;
+  // Set while the bytes of torch.storage._load_from_bytes are read
+  // (pickle_torch_legacy.cpp): BINPERSID ids ('storage', type, key, location,
+  // numel, view_metadata) add their storage here, its bytes bound once the
+  // data after the pickles is reached.
+  std::vector<Ref>* legacy_storages = nullptr;
+  // Set while any pickle inside those bytes runs: a nested _load_from_bytes is refused.
+  bool inside_load_from_bytes = false;
 };
 
 struct PyObj {
@@ -215,6 +224,14 @@ Status readJoblibArray(Heap& heap, Ref wrapper, const uint8_t* data, size_t size
 // torch (pickle_torch.cpp): BINPERSID's ('storage', type, key, location, numel)
 // -> a TorchStorage object viewing the archive's bytes.
 Result<Ref> persistentLoad(Heap& heap, Ref pid);
+// The same for the object pickle inside torch.storage._load_from_bytes's
+// bytes: ('storage', type, key, location, numel, view_metadata) -> a
+// TorchStorage of `numel` elements whose bytes (view) are still unset; it is
+// added to VmOptions::legacy_storages.
+Result<Ref> legacyPersistentLoad(Heap& heap, Ref pid);
+// torch.storage._load_from_bytes(b) (pickle_torch_legacy.cpp): the storage
+// that torch's legacy serialization in `b` holds, viewing b's bytes.
+Result<Ref> loadFromBytes(Heap& heap, Ref args, const PickleLimits& limits);
 // REDUCE of the torch globals (TorchRebuildTensor ... TorchSize).
 Result<Ref> callTorchGlobal(Heap& heap, GlobalId id, const std::vector<Ref>& args);
 // Resolution of torch.* globals inside a .pt (nullopt-like: false when not a torch name).

@@ -207,9 +207,20 @@ Result<GlobalId> resolveGlobal(const Heap& heap, const std::string& module,
     GlobalId id;
     if (resolveTorchGlobal(module, name, &id)) return id;
   } else if (options.tree && inPackage(module, "torch")) {
+    // A tensor pickled outside torch.save: its storage is _load_from_bytes
+    // (pickle_torch_legacy.cpp).
+    GlobalId id;
+    if (module == "torch.storage" && name == "_load_from_bytes") {
+      if (options.inside_load_from_bytes)
+        return heap.fail(
+            "torch.storage._load_from_bytes inside the bytes of another is not "
+            "supported (torch never nests them)");
+      return GlobalId::TorchLoadFromBytes;
+    }
+    if (resolveTorchGlobal(module, name, &id)) return id;
     return heap.fail("refusing pickle global '" + full +
-                     "': torch objects are read from torch.save files (.pt) only; save them with "
-                     "torch.save, or convert tensors with .numpy() before pickling");
+                     "': of torch's objects only tensors are read (convert other objects' tensors "
+                     "with .numpy() before pickling)");
   }
   return heap.fail("refusing pickle global '" + full + "' (not model data)");
 }

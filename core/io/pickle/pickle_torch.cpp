@@ -16,6 +16,8 @@
 //   _rebuild_parameter(data, requires_grad, hooks) (nn.Parameter) and
 //     torch._tensor._rebuild_from_type_v2(func, type, args, state) (tensors
 //     with Python attributes): the tensor that func(*args) rebuilds.
+// In a plain pickle (np.save of a dict of tensors, pickle.dump) the storage
+// is torch.storage._load_from_bytes(b) instead: pickle_torch_legacy.cpp.
 // metadata {'neg': True} marks a negated view (torch._neg_view); 'conj'
 // concerns complex tensors only, which are refused. Every index is checked
 // against the storage's size before anything is read; the tensor's doubles
@@ -203,8 +205,9 @@ Result<Ref> tensorFromArgs(Heap& heap, GlobalId id, const std::vector<Ref>& args
                      " arguments is not supported");
   const PyObj& s = heap.at(args[0]);
   if (s.kind != Kind::Instance || s.global != GlobalId::TorchStorage)
-    return heap.fail(std::string("torch._utils.") + name + "'s storage is a " +
-                     typeName(heap, args[0]) + ", expected a storage of the archive");
+    return heap.fail(
+        std::string("torch._utils.") + name + "'s storage is a " + typeName(heap, args[0]) +
+        ", expected a torch storage (a .pt archive's or torch.storage._load_from_bytes)");
   TensorArgs t{args[0], args[1], args[2], args[3], 0, s.dtype};
   if (id == GlobalId::TorchRebuildTensorV3) {
     const PyObj& dtype = heap.at(args[6]);
@@ -284,6 +287,39 @@ Result<Ref> persistentLoad(Heap& heap, Ref pid) {
   o.dtype = d;
   o.i = numel;
   return heap.add(std::move(o));
+}
+
+Result<Ref> legacyPersistentLoad(Heap& heap, Ref pid) {
+  const PyObj& t = heap.at(pid);
+  std::string tag, key;
+  if (t.kind != Kind::Tuple || t.items.size() != 6 || !stringValue(heap, t.items[0], &tag) ||
+      tag != "storage")
+    return heap.fail("persistent id is a " + typeName(heap, pid) +
+                     ", expected ('storage', type, key, location, numel, view_metadata)");
+  const PyObj& type = heap.at(t.items[1]);
+  DtypeInfo d;
+  if (type.kind != Kind::Global || type.global != GlobalId::TorchStorageType ||
+      !elementOf(type.text, &d))
+    return heap.fail("torch storage type '" + printable(typeName(heap, t.items[1]), 100) +
+                     "' is not supported (complex and quantized tensors are not motion data)");
+  int64_t numel = 0;
+  if (!stringValue(heap, t.items[2], &key) || !intOf(heap.at(t.items[4]), &numel) || numel < 0)
+    return heap.fail("torch storage id has a bad key or element count");
+  // torch's _legacy_save always writes None here (its is_view test compares a storage with itself).
+  if (heap.at(t.items[5]).kind != Kind::None)
+    return heap.fail("torch storage '" + printable(key) + "' is a view (view_metadata " +
+                     typeName(heap, t.items[5]) + "): not supported");
+  PK_TRY(heap.charge(2 * sizeof(Ref), "storage"));
+  PyObj o;
+  o.kind = Kind::Instance;
+  o.global = GlobalId::TorchStorage;
+  o.text = type.text;
+  o.items = {t.items[2]};  // the key, for errors and to bind the bytes
+  o.dtype = d;
+  o.i = numel;
+  Result<Ref> r = heap.add(std::move(o));
+  if (r) heap.options().legacy_storages->push_back(*r);
+  return r;
 }
 
 Result<Ref> callTorchGlobal(Heap& heap, GlobalId id, const std::vector<Ref>& args) {

@@ -10,6 +10,16 @@
 //   torch .pt       torch.save's zip (torch >= 1.6): <root>/data.pkl whose
 //                   tensors name storages <root>/data/<key> (pickle_torch.cpp)
 //   object .npy     np.save of a dict or of an object array (TRAM, MDM)
+//   torch tensors   in plain pickles, joblib files and object .npy (not in
+//                   model files or a .pt): _rebuild_tensor_v2 whose storage
+//                   is torch.storage._load_from_bytes(b), b torch's legacy
+//                   serialization of one storage, read by the same VM one
+//                   level deep (pickle_torch_legacy.cpp); the tensors as in a
+//                   .pt. Malformed bytes (truncated, a count beyond them or
+//                   not the declared numel, wrong magic or version, a view, a
+//                   nested _load_from_bytes) are one-line errors: "x.npy:
+//                   torch.storage._load_from_bytes: storage '0' has 6
+//                   elements of 4 bytes, but only 19 bytes follow"
 // Conversion (pickle_tree.cpp): dict -> Dict (str/bytes keys as text, int
 // keys as decimal text, other keys skipped); list/tuple -> an Array leaf when
 // it is a rectangular nest of numbers, else a List (an empty one too) whose

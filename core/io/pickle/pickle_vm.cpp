@@ -74,6 +74,11 @@ class Vm {
   Status setItems(Ref target, const std::vector<Ref>& items);
 
   Error fail(const std::string& message) const { return heap_.fail(message); }
+  // REDUCE of torch.storage._load_from_bytes runs pickles of its own (limits_).
+  bool isLoadFromBytes(Ref r) const {
+    const PyObj& o = heap_.at(r);
+    return o.kind == Kind::Global && o.global == GlobalId::TorchLoadFromBytes;
+  }
 
   Heap& heap_;
   const uint8_t* data_;
@@ -749,13 +754,16 @@ Status Vm::global(const std::string& module, const std::string& name) {
   return pushNew(std::move(o));
 }
 
-// PERSID / BINPERSID: only a torch archive names its storages this way.
+// PERSID / BINPERSID: only torch names its storages this way (in a .pt
+// archive, and inside the bytes of torch.storage._load_from_bytes).
 Status Vm::persistentId(uint8_t op) {
-  if (!heap_.options().torch_storage || op == 'P')
+  const VmOptions& options = heap_.options();
+  if ((!options.torch_storage && !options.legacy_storages) || op == 'P')
     return fail("persistent IDs are not supported (not model data)");
   Result<Ref> pid = pop();
   if (!pid) return pid.error();
-  Result<Ref> storage = persistentLoad(heap_, *pid);
+  Result<Ref> storage =
+      options.legacy_storages ? legacyPersistentLoad(heap_, *pid) : persistentLoad(heap_, *pid);
   if (!storage) return storage.error();
   return push(*storage);
 }
@@ -827,7 +835,9 @@ Status Vm::stepObjects(uint8_t op, bool* handled) {
   Result<Ref> target = op == 'b' ? top() : pop();
   if (!target) return target.error();
   if (op == 'b') return build(*target, *arg);
-  Result<Ref> obj = op == 'R' ? callGlobal(heap_, *target, *arg) : newObject(heap_, *target, *arg);
+  Result<Ref> obj = op != 'R'                  ? newObject(heap_, *target, *arg)
+                    : isLoadFromBytes(*target) ? loadFromBytes(heap_, *arg, limits_)
+                                               : callGlobal(heap_, *target, *arg);
   if (!obj) return obj.error();
   return push(*obj);
 }
