@@ -285,6 +285,8 @@ def shrinking_model():
         check(f"shrink.{kind}_shrinking_reported_with_the_file", hits >= 1,
               f"load {load:.2f} s, {hits} hits in {len(outcomes)}: {outcomes[:4]}")
     check("shrink.no_output", not out.exists() and not leftovers(d), f"left: {leftovers(d)}")
+    for big in d.iterdir():  # 450 MB of models: not kept in the build tree
+        big.unlink()
 
 
 # -- files that are not what they claim ----------------------------------------------------------
