@@ -9,6 +9,8 @@
 
 #include "cli/batch_shard.h"
 #include "core/io/file_io.h"
+#include "core/io/sha256.h"
+#include "core/io/utf8.h"
 #include "core/load/motion_layout.h"
 #include "exporter/metadata_json.h"
 #include "exporter/request/error_line.h"
@@ -62,14 +64,39 @@ bool olderThan(const std::string& a, const std::string& b) {
   return ec1 || ec2 || ta < tb;
 }
 
-bool upToDate(const PlannedOutput& p) {
+// The files on disk are the ones the sidecar records (exporter/metadata_json.h
+// "outputs": name, size, then SHA-256): an output truncated, replaced or
+// missing its .bin is rebuilt even when its sidecar matches.
+bool outputsAsRecorded(const std::vector<std::string>& outputs, const std::string& sidecar) {
+  const std::vector<RecordedOutput> recorded = recordedOutputsOf(sidecar);
+  if (recorded.size() != outputs.size()) return false;
+  for (const std::string& o : outputs) {
+    const std::string name = escapeInvalidUtf8(baseName(o));
+    auto r = std::find_if(recorded.begin(), recorded.end(),
+                          [&](const RecordedOutput& e) { return e.file == name; });
+    std::error_code ec;
+    if (r == recorded.end() || !fs::is_regular_file(o, ec) || fs::file_size(o, ec) != r->bytes ||
+        ec)
+      return false;
+    Result<std::string> digest = sha256File(o);
+    if (!digest || *digest != r->sha256) return false;
+  }
+  return true;
+}
+
+bool upToDate(const Settings& s, const PlannedOutput& p) {
   const std::string sidecar = p.out + ".smpl.json";
   std::error_code ec;
   if (!fs::is_regular_file(p.out, ec) || !fs::is_regular_file(sidecar, ec)) return false;
   if (olderThan(p.out, p.motion) || olderThan(sidecar, p.motion)) return false;
   if (fs::file_size(sidecar, ec) > (64u << 20) || ec) return false;
-  Result<std::vector<uint8_t>> text = readFileBytes(sidecar);
-  return text && producerHashOf(std::string(text->begin(), text->end())) == p.producer_hash;
+  Result<std::vector<uint8_t>> bytes = readFileBytes(sidecar);
+  if (!bytes) return false;
+  const std::string text(bytes->begin(), bytes->end());
+  std::vector<std::string> outputs = {p.out};  // the output and a .gltf's buffer
+  if (const std::string bin = gltfBufferPath(s.request, p.out); !bin.empty())
+    outputs.push_back(bin);
+  return producerHashOf(text) == p.producer_hash && outputsAsRecorded(outputs, text);
 }
 
 Status checkCollisions(const std::vector<PlannedOutput>& outputs) {
@@ -133,7 +160,7 @@ Result<BatchPlan> planBatch(const Settings& s) {
   removeStaleTemps(s.out_dir, names);
   for (PlannedOutput& p : plan.outputs) {
     p.producer_hash = producerHash(*base, {p.motion});
-    p.up_to_date = !s.force && upToDate(p);
+    p.up_to_date = !s.force && upToDate(s, p);
   }
   return plan;
 }

@@ -16,8 +16,10 @@
 // - Two motions mapping to one output (walk.npz and walk.json -> walk.glb):
 //   the run is refused before any work, exit 1, naming both.
 // - Up to date: the output and its sidecar exist, are not older than the
-//   motion, and the sidecar's producer hash (producer.h) equals this run's;
-//   --force rebuilds everything.
+//   motion, the sidecar's producer hash (producer.h) equals this run's, and
+//   every file of the output (a .gltf's .bin too) has the size and SHA-256 the
+//   sidecar records (a truncated or replaced output is rebuilt); --force
+//   rebuilds everything.
 // - --shard I/N keeps share I after the collision check (which sees every
 //   motion, so shards cannot collide with each other): cli/batch_shard.h.
 #pragma once

@@ -7,7 +7,9 @@
 // catches what escapes anywhere else as a last resort, never an abort.
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -37,9 +39,21 @@ struct Stage {
   void set(const char* v, const std::string& p, ExitCode c) { verb = v, path = p, code = c; }
 };
 
+// One printable line; a line over 4 KiB loses its middle, never its reason.
 int report(const std::string& line, int code) {
-  std::fprintf(stderr, "%s\n", printable(line, 4096).c_str());
+  std::fprintf(stderr, "%s\n", printableMiddle(line, 4096).c_str());
   return code;
+}
+
+// The summary must not be lost silently (`> /dev/full`, a closed pipe's
+// buffer): stdout is flushed before exit and a write error is a write error
+// (exit 4, one line on stderr), unless the run already failed.
+int finishStdout(int code) {
+  errno = 0;
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+  const std::string reason = errno != 0 ? std::strerror(errno) : "write error";
+  report("Error writing standard output: " + reason, kExitSave);
+  return code == kExitOk ? kExitSave : code;
 }
 
 // Batch mode: the checks, then the plan and its path guard before any work,
@@ -88,7 +102,7 @@ int run(int argc, char** argv, Stage* stage) {
 int main(int argc, char** argv) {
   Stage stage;
   try {
-    return run(argc, argv, &stage);
+    return finishStdout(run(argc, argv, &stage));
   } catch (const std::bad_alloc&) {
     return report("Error " + std::string(stage.verb) + " " + stage.path +
                       ": out of memory (the system refused an allocation below --memory-limit " +

@@ -1,15 +1,15 @@
 #include "cli/options.h"
 
 #include <algorithm>
-#include <cerrno>
+#include <cfloat>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <type_traits>
 
 #include "cli/settings.h"
 #include "core/memory_budget.h"
+#include "core/number_text.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -17,19 +17,17 @@ namespace {
 
 Error usageError(const std::string& message) { return makeError(message, ErrorKind::Usage); }
 
+// Every numeric option goes through the one grammar of core/number_text.h:
+// decimal only, the whole value, no '+', blanks, hexadecimal, inf or nan.
 Result<double> parseNumber(const std::string& text, const std::string& option) {
-  errno = 0;
-  char* end = nullptr;
-  double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v))
-    return usageError(option + ": '" + text + "' is not a finite number");
-  return v;
+  Result<double> v = parseDecimal(text, -DBL_MAX, DBL_MAX);
+  if (!v) return usageError(option + ": " + v.message());
+  return *v;
 }
 
 Result<int> parseInt(const std::string& text, const std::string& option) {
-  Result<double> v = parseNumber(text, option);
-  if (!v || *v != std::floor(*v) || std::abs(*v) > 1e6)
-    return usageError(option + ": '" + text + "' is not an integer");
+  Result<int64_t> v = parseInteger(text, -1000000, 1000000);
+  if (!v) return usageError(option + ": " + v.message());
   return static_cast<int>(*v);
 }
 
@@ -53,13 +51,18 @@ Result<int> choice(const std::string& value, const char* option, std::vector<con
   return usageError(std::string(option) + ": expected " + expected + ", got '" + value + "'");
 }
 
+// "v,v,...": each value a decimal number; blanks around a value are allowed
+// ("0.5, -1.2" as a shell user types it), blanks inside one are not.
 Result<std::vector<double>> parseList(const std::string& text, const std::string& option) {
   std::vector<double> values;
   size_t start = 0;
   while (start <= text.size()) {
     size_t comma = text.find(',', start);
-    Result<double> v = parseNumber(
-        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start), option);
+    std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const size_t first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    item = first == std::string::npos ? std::string() : item.substr(first, last + 1 - first);
+    Result<double> v = parseNumber(item, option);
     if (!v) return v.error();
     values.push_back(*v);
     if (comma == std::string::npos) break;

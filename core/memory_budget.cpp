@@ -6,10 +6,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+
+#include "core/number_text.h"
 
 namespace smpl {
 namespace {
@@ -94,12 +95,11 @@ uint64_t defaultMemoryLimit() {
 Result<uint64_t> parseMemorySize(const std::string& text) {
   const std::string usage =
       "--memory-limit: expected a size such as 512M or 4G (16M to 1P), got '" + text + "'";
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str() || errno != 0 || !std::isfinite(v) || v <= 0)
-    return makeError(usage);
-  std::string suffix(end);
+  // The number in the command line's one grammar (number_text.h), then the unit.
+  const size_t length = decimalPrefixLength(text);
+  Result<double> v = parseDecimal(std::string_view(text).substr(0, length), 0, 1e300);
+  if (length == 0 || !v || *v <= 0) return makeError(usage);
+  std::string suffix = text.substr(length);
   if (!suffix.empty() && (suffix.back() == 'B' || suffix.back() == 'b')) suffix.pop_back();
   if (suffix.size() == 2 && (suffix[1] == 'i' || suffix[1] == 'I')) suffix.pop_back();  // "GiB"
   double scale = 1;
@@ -111,7 +111,7 @@ Result<uint64_t> parseMemorySize(const std::string& text) {
     if (power == std::string::npos) return makeError(usage);
     scale = std::ldexp(1.0, 10 * static_cast<int>(power + 1));
   }
-  const double bytes = v * scale;
+  const double bytes = *v * scale;
   if (bytes < 16.0 * (1 << 20) || bytes > std::ldexp(1.0, 50)) return makeError(usage);
   return static_cast<uint64_t>(bytes);
 }

@@ -66,8 +66,10 @@ uint64_t memoryCharged();
 // before the kernel's OOM killer ends it without a word.
 uint64_t defaultMemoryLimit();
 
-// "512M", "4G", "1.5G", "300000000": K/M/G/T are powers of 1024; no suffix
-// means bytes. Refuses anything below 16 MiB or above 1 PiB.
+// "512M", "4G", "1.5G", "300000000": a decimal number (core/number_text.h:
+// no hexadecimal, sign or blanks) and K/M/G/T/P, powers of 1024, optionally
+// followed by "iB" or "B"; no suffix means bytes. Refuses anything below
+// 16 MiB or above 1 PiB.
 Result<uint64_t> parseMemorySize(const std::string& text);
 
 // "3.6 GiB", "512.0 MiB", "12 bytes": sizes in errors.

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 
+#include "core/load/validate_inputs.h"
 #include "exporter/joint_shift_cost.h"
 
 namespace smpl {
@@ -119,7 +120,9 @@ Status checkDmplCoefficients(const Motion& motion, const std::string& path, int 
     return makeError(path + ": 'dmpls' has " + std::to_string(motion.dmpls.cols()) +
                      " columns; the DMPL basis " + basis_path + " has " +
                      std::to_string(directions) + " directions");
-  return Status();
+  // Finite and plausible where they enter (validate_inputs.h), so 1e39 is a
+  // load error naming the motion, not a float32 overflow in the writer.
+  return checkDmplValues(motion.dmpls, path);
 }
 
 }  // namespace smpl

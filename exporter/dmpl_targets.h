@@ -60,7 +60,8 @@ Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotati
 
 // Motion coefficients usable with a basis of `directions` columns: errors
 // name the motion file `path` (shape, NaN from Motion::dmpls_problem, width
-// different from the basis's `directions`, before --dmpl-count).
+// different from the basis's `directions`, before --dmpl-count, values beyond
+// kMaxCoefficient: checkDmplValues, core/load/validate_inputs.h).
 Status checkDmplCoefficients(const Motion& motion, const std::string& path, int directions,
                              const std::string& basis_path);
 

@@ -1,5 +1,6 @@
 #include "exporter/export_asset.h"
 
+#include "exporter/asset_names.h"
 #include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
 #include "exporter/validate_asset.h"
@@ -38,6 +39,9 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
   // Quantized targets carry their scale s_n in the weight mapping: folded
   // here so every writer and the sidecar see the same numbers.
   if (options.quantize_morphs) foldMorphScales(&*asset);
+  // Names from file names or the command line may hold bytes that are not
+  // UTF-8; every output format needs UTF-8 text (asset_names.h).
+  escapeAssetNames(&*asset);
   if (Status st = validateAsset(*asset); !st) return st.error();
   return asset;
 }

@@ -42,7 +42,9 @@ CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, 
 
 // buildAsset(model, options with the encoding resolved), one AnimationClip per
 // motion in order (asset.animations[i] from motions[i]), then, when
-// options.quantize_morphs, foldMorphScales; last validateAsset. Errors: those
+// options.quantize_morphs, foldMorphScales; then every name escaped into
+// valid UTF-8 (asset_names.h: a motion file named "walk\xff.npz" gives the
+// clip "walk\\xff"); last validateAsset. Errors: those
 // of buildAsset, bakeAnimation (naming motions[i].context) and validateAsset;
 // one line each, no partial asset.
 // `dmpl` (optional): DMPL soft-tissue targets added after buildAsset, before

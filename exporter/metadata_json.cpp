@@ -11,14 +11,19 @@
 // (f of docs/file-contract.md). The key is absent without a basis.
 //
 // The sidecar <out>.smpl.json adds, last,
-//   "producer": {"hash": "<16 hex digits>"}
+//   "producer": {"hash": "<16 hex digits>",
+//                "outputs": [{"file": "walk.glb", "bytes": N, "sha256": "<64 hex digits>"}]}
 // a hash of everything that produced the output pair (exporter/request/producer.h: exporter
-// version, options, model and input identities); batch mode rebuilds an
-// output whose sidecar hash differs. It is not in the glTF, so the output's
-// bytes do not depend on it.
+// version, options, model and input identities) and the size and SHA-256 of
+// every file of the output (a .gltf's .bin included); batch mode rebuilds an
+// output whose sidecar hash differs or whose files are not the recorded ones.
+// It is not in the glTF, so the output's bytes do not depend on it.
 #include "exporter/metadata_json.h"
 
 #include <nlohmann/json.hpp>
+
+#include "core/io/sha256.h"
+#include "core/io/utf8.h"
 
 namespace smpl {
 namespace {
@@ -145,12 +150,48 @@ std::string dump(const Json& o) { return o.dump(-1, ' ', false, Json::error_hand
 
 std::string metadataJson(const Asset& asset) { return dump(metadataObject(asset)); }
 
-std::string sidecarJson(const Asset& asset, const std::string& producer_hash) {
+std::vector<RecordedOutput> recordOutputs(const std::vector<FileContent>& outputs) {
+  std::vector<RecordedOutput> records;
+  for (const FileContent& f : outputs)
+    records.push_back(
+        RecordedOutput{escapeInvalidUtf8(baseName(f.path)), f.size, sha256Hex(f.data, f.size)});
+  return records;
+}
+
+std::string sidecarJson(const Asset& asset, const std::string& producer_hash,
+                        const std::vector<FileContent>& outputs) {
   Json o = metadataObject(asset);
   Json producer = Json::object();
   producer["hash"] = producer_hash;
+  if (!outputs.empty()) {
+    Json list = Json::array();
+    for (const RecordedOutput& r : recordOutputs(outputs)) {
+      Json entry = Json::object();
+      entry["file"] = r.file;
+      entry["bytes"] = r.bytes;
+      entry["sha256"] = r.sha256;
+      list.push_back(std::move(entry));
+    }
+    producer["outputs"] = std::move(list);
+  }
   o["producer"] = std::move(producer);
   return dump(o);
+}
+
+std::vector<RecordedOutput> recordedOutputsOf(const std::string& sidecar) {
+  const Json o = Json::parse(sidecar, nullptr, /*allow_exceptions=*/false);
+  if (!o.is_object() || !o.contains("producer") || !o["producer"].is_object()) return {};
+  const Json& list = o["producer"].value("outputs", Json());
+  if (!list.is_array()) return {};
+  std::vector<RecordedOutput> records;
+  for (const Json& e : list) {
+    if (!e.is_object() || !e.value("file", Json()).is_string() ||
+        !e.value("bytes", Json()).is_number_unsigned() || !e.value("sha256", Json()).is_string())
+      return {};
+    records.push_back(RecordedOutput{e["file"].get<std::string>(), e["bytes"].get<uint64_t>(),
+                                     e["sha256"].get<std::string>()});
+  }
+  return records;
 }
 
 std::string producerHashOf(const std::string& sidecar) {

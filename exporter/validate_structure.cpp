@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "exporter/asset_names.h"
+
 namespace smpl {
 namespace {
 
@@ -144,6 +146,7 @@ Status checkClip(const AnimationClip& c, size_t joints, Eigen::Index targets) {
 }  // namespace
 
 Status validateAssetStructure(const Asset& a) {
+  if (Status st = checkAssetNames(a); !st) return st;  // text every format stores as UTF-8
   if (Status st = checkSkeleton(a.skeleton); !st) return st;
   if (a.skeleton_only && (a.mesh.positions.rows() != 0 || !a.mesh.morph_targets.empty()))
     return makeError("skeleton-only asset has " + std::to_string(a.mesh.positions.rows()) +

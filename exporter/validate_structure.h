@@ -12,6 +12,7 @@ namespace smpl {
 
 // Rules, checked in this order (first problem only; K joints, V vertices,
 // M influences per vertex, T frames):
+//   names: every name valid UTF-8 (asset_names.h);
 //   skeleton: K > 0 names, K parents; joint 0 the only root (parent -1) and
 //     0 <= parent(j) < j for j > 0 (one skin root, no loops); rest_local and
 //     rest_world K x 3 (metres);

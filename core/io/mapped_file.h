@@ -1,8 +1,11 @@
 // A whole input file's bytes without copying them: a read-only private
-// mapping of a regular file (the pages come straight from the page cache,
-// all mapped in one call since the reader walks every byte), or, for what
+// mapping of a regular file (the pages come straight from the page cache and
+// are mapped as they are read, so a reader that only sniffs the first bytes
+// or the zip directory of a huge file touches a few pages), or, for what
 // cannot be mapped (pipes, empty files), readFileBytes' copy with its checks
-// (devices refused, memory budget).
+// (devices refused, memory budget). The mapping is watched by a MappingGuard
+// (mapping_guard.h): a file that shrinks while it is read gives the reader
+// zeros instead of SIGBUS, and intact() the error naming the file.
 #pragma once
 
 #include <cstddef>
@@ -10,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/mapping_guard.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -30,9 +34,17 @@ class MappedFile {
   }
   size_t size() const { return mapping_ ? mapped_size_ : owned_.size(); }
 
+  // Ok while every byte read so far is the file's; after the file shrank
+  // under the mapping (zeros were read instead), mappingLostError(path).
+  // Readers call it when done with the bytes, whatever their own result.
+  Status intact() const;
+
  private:
+  void unmap();
   void* mapping_ = nullptr;
   size_t mapped_size_ = 0;
+  MappingGuard guard_;
+  std::string path_;
   std::vector<uint8_t> owned_;
 };
 

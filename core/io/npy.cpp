@@ -217,8 +217,8 @@ Result<Array> parseNpy(const uint8_t* data, size_t size, const std::string& cont
   return decodeNumpyArray(data + offset, *need, *t, h->shape, h->fortran_order, context);
 }
 
-Result<Array> readNpyFile(const std::string& path) {
-  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+Result<Array> readNpyFile(const std::string& path, const InputKind& kind) {
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path, kind);
   if (!bytes) return bytes.error();
   return parseNpy(bytes->data(), bytes->size(), baseName(path));
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/array.h"
+#include "core/io/input_kind.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -33,7 +34,9 @@ Result<NpyHeaderInfo> parseNpyHeader(const uint8_t* data, size_t size, const std
 // True for descr "|O" (also "<O"/">O"): numpy writes these as a pickle.
 bool isObjectDescr(const std::string& descr);
 
-// Read a whole .npy file from disk.
-Result<Array> readNpyFile(const std::string& path);
+// Read a whole .npy file from disk. The file must start with the .npy magic
+// and stay within its kind's size bound (input_kind.h; kNpyInput: 1 GiB),
+// checked before it is read (readFileBytes(path, kind)).
+Result<Array> readNpyFile(const std::string& path, const InputKind& kind = kNpyInput);
 
 }  // namespace smpl

@@ -17,19 +17,25 @@
 #include <utility>
 
 #include "core/io/file_io.h"
+#include "core/io/mapping_guard.h"
 #include "core/io/numpy_dtype.h"
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 
 namespace smpl {
 
-// The archive's bytes: a read-only mapping of the file, or an owned copy.
+// The archive's bytes: a read-only mapping of the file (watched: a file that
+// shrinks while it is read gives zeros and `guard.lost()`, mapping_guard.h),
+// or an owned copy.
 struct NpzArchive::Storage {
   const uint8_t* data = nullptr;
   size_t size = 0;
   void* mapping = nullptr;
+  MappingGuard guard;
+  std::string path;
   std::vector<uint8_t> owned;
   ~Storage() {
+    guard = MappingGuard();  // stop watching before the range is unmapped
     if (mapping) munmap(mapping, size);
   }
 };
@@ -48,10 +54,15 @@ Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
   struct stat st {};
   if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
     void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
-    if (m != MAP_FAILED) {
+    MappingGuard guard(m == MAP_FAILED ? nullptr : m, static_cast<size_t>(st.st_size));
+    if (guard.watching()) {
       storage->mapping = m;
       storage->data = static_cast<const uint8_t*>(m);
       storage->size = static_cast<size_t>(st.st_size);
+      storage->guard = std::move(guard);
+      storage->path = path;
+    } else if (m != MAP_FAILED) {
+      ::munmap(m, static_cast<size_t>(st.st_size));  // every guard slot taken: read a copy
     }
   }
   if (fd >= 0) ::close(fd);
@@ -69,6 +80,7 @@ Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
 Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storage,
                                            const std::string& context) {
   Result<std::vector<ZipMember>> members = listZip(storage->data, storage->size, context);
+  if (storage->guard.lost()) return mappingLostError(storage->path);
   if (!members) return members.error();
   NpzArchive a;
   a.storage_ = std::move(storage);
@@ -116,22 +128,27 @@ const ZipMember* NpzArchive::find(const std::string& key) const {
   return nullptr;
 }
 
+Status NpzArchive::intact() const {
+  if (storage_ && storage_->guard.lost()) return mappingLostError(storage_->path);
+  return Status();
+}
+
 Result<ZipEntry> NpzArchive::memberBytes(const std::string& key) const {
   const ZipMember* m = find(key);
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
-  return extractZipMember(storage_->data, storage_->size, *m, context_);
+  return checked(extractZipMember(storage_->data, storage_->size, *m, context_));
 }
 
 Result<ZipBytes> NpzArchive::memberView(const std::string& key) const {
   const ZipMember* m = find(key);
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
-  return viewZipMember(storage_->data, storage_->size, *m, context_);
+  return checked(viewZipMember(storage_->data, storage_->size, *m, context_));
 }
 
 Result<NpyHeaderInfo> NpzArchive::header(const std::string& key) const {
   Result<ZipBytes> e = memberView(key);
   if (!e) return e.error();
-  return parseNpyHeader(e->data, e->size, context_ + "/" + printable(find(key)->name));
+  return checked(parseNpyHeader(e->data, e->size, context_ + "/" + printable(find(key)->name)));
 }
 
 Result<bool> NpzArchive::isObjectArray(const std::string& key) const {
@@ -139,7 +156,8 @@ Result<bool> NpzArchive::isObjectArray(const std::string& key) const {
   if (!m) return makeError(context_ + ": missing key '" + printable(key) + "'");
   constexpr size_t kPeek = 4096;  // numpy's headers are shorter; a longer one takes the full path
   Result<std::vector<uint8_t>> prefix =
-      readZipMemberPrefix(storage_->data, storage_->size, *m, kPeek, context_);
+      checked(readZipMemberPrefix(storage_->data, storage_->size, *m, kPeek, context_));
+  if (!prefix && !intact()) return prefix.error();
   if (prefix) {
     Result<NpyHeaderInfo> h =
         parseNpyHeader(prefix->data(), prefix->size(), context_ + "/" + printable(m->name));
@@ -194,16 +212,16 @@ Result<Array> NpzArchive::get(const std::string& key) const {
           checkMemory(m->usize, context_ + "/" + printable(m->name), "inflating the member");
       !st)
     return st.error();
-  if (Status st = checkDecodedSize(key); !st) return st.error();
+  if (Status st = checkDecodedSize(key); !st) return checked(Result<Array>(st.error()));
   Result<ZipBytes> e = memberView(key);
   if (!e) return e.error();
   const std::string mctx = context_ + "/" + printable(find(key)->name);
   Result<NpyHeaderInfo> h = parseNpyHeader(e->data, e->size, mctx);
-  if (!h) return h.error();
+  if (!h) return checked(Result<Array>(h.error()));
   if (isObjectDescr(h->descr))
     return makeError(context_ + ": '" + printable(key) + "' is an object array ('" +
                      printable(h->descr) + "'); expected numbers or text");
-  return parseNpy(e->data, e->size, mctx);
+  return checked(parseNpy(e->data, e->size, mctx));
 }
 
 Result<ArrayDict> NpzArchive::read(const std::vector<std::string>& keys) const {
@@ -221,14 +239,14 @@ Result<ArrayDict> NpzArchive::readAllNumeric() const {
   ArrayDict arrays;
   for (size_t i = 0; i < keys_.size(); ++i) {
     const std::string& key = keys_[i];
-    if (Status st = checkDecodedSize(key); !st) return st.error();
+    if (Status st = checkDecodedSize(key); !st) return checked(Result<ArrayDict>(st.error()));
     Result<ZipBytes> e = memberView(key);
     if (!e) return e.error();
     const std::string mctx = context_ + "/" + printable(members_[i].name);
     Result<NpyHeaderInfo> h = parseNpyHeader(e->data, e->size, mctx);
-    if (!h) return h.error();
+    if (!h) return checked(Result<ArrayDict>(h.error()));
     if (isObjectDescr(h->descr)) continue;
-    Result<Array> a = parseNpy(e->data, e->size, mctx);
+    Result<Array> a = checked(parseNpy(e->data, e->size, mctx));
     if (!a) return a.error();
     arrays.emplace(key, std::move(*a));
   }

@@ -55,6 +55,11 @@ class NpzArchive {
   //   "model.npz: 'key' is an object array ('|O'); expected numbers or text"
   // (core/load/npz_arrays decodes them with the data-only unpickler).
   Result<Array> get(const std::string& key) const;
+  // Ok while every byte read from the mapping was the file's; after the file
+  // shrank under it (mapping_guard.h: zeros were read instead), the error
+  // naming the file. Every method above already returns that error; callers
+  // that keep reading a memberView's bytes check it when done.
+  Status intact() const;
   // Decode the listed keys that are present; absent keys are skipped, so the
   // caller decides which are required.
   Result<ArrayDict> read(const std::vector<std::string>& keys) const;
@@ -70,6 +75,12 @@ class NpzArchive {
   Status checkDecodedSize(const std::string& key) const;
   static Result<NpzArchive> fromStorage(std::shared_ptr<const Storage> storage,
                                         const std::string& context);
+  // `r`, or the lost-mapping error when the file shrank while it was read.
+  template <class T>
+  Result<T> checked(Result<T> r) const {
+    if (Status st = intact(); !st) return st.error();
+    return r;
+  }
 };
 
 // Eager reads of every member (np.load(...) then dict(...)), kept for small

@@ -4,33 +4,10 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "core/io/utf8.h"
+
 namespace smpl {
 namespace {
-
-// Length of the well-formed UTF-8 sequence starting at text[i] (RFC 3629:
-// no overlong forms, no surrogates, nothing above U+10FFFF), or 0.
-size_t utf8Length(std::string_view text, size_t i, uint32_t* cp) {
-  const auto byte = [&](size_t k) { return static_cast<uint8_t>(text[k]); };
-  const uint8_t b0 = byte(i);
-  size_t n;
-  uint32_t min;
-  if (b0 < 0x80) return *cp = b0, 1;
-  if ((b0 & 0xE0) == 0xC0)
-    n = 2, min = 0x80, *cp = b0 & 0x1F;
-  else if ((b0 & 0xF0) == 0xE0)
-    n = 3, min = 0x800, *cp = b0 & 0x0F;
-  else if ((b0 & 0xF8) == 0xF0)
-    n = 4, min = 0x10000, *cp = b0 & 0x07;
-  else
-    return 0;
-  if (i + n > text.size()) return 0;
-  for (size_t k = 1; k < n; ++k) {
-    if ((byte(i + k) & 0xC0) != 0x80) return 0;
-    *cp = (*cp << 6) | (byte(i + k) & 0x3F);
-  }
-  if (*cp < min || *cp > 0x10FFFF || (*cp >= 0xD800 && *cp <= 0xDFFF)) return 0;
-  return n;
-}
 
 bool isControl(uint32_t cp) { return cp < 0x20 || cp == 0x7F || (cp >= 0x80 && cp <= 0x9F); }
 
@@ -41,6 +18,17 @@ void appendHex(std::string* out, uint8_t b) {
   *out += kDigits[b & 15];
 }
 
+// Moves a cut position of escaped text `s` off the inside of a UTF-8 sequence
+// or a "\xNN" escape: backwards (head) or forwards (tail).
+size_t cutBoundary(const std::string& s, size_t at, bool backwards) {
+  for (size_t k = 1; k <= 3 && k <= at; ++k)
+    if (s[at - k] == '\\' && at - k + 1 < s.size() && s[at - k + 1] == 'x' && at - k + 4 > at)
+      return backwards ? at - k : std::min(s.size(), at - k + 4);
+  while (at > 0 && at < s.size() && (static_cast<uint8_t>(s[at]) & 0xC0) == 0x80)
+    backwards ? --at : ++at;
+  return at;
+}
+
 }  // namespace
 
 std::string printable(std::string_view text, size_t max_bytes) {
@@ -49,7 +37,7 @@ std::string printable(std::string_view text, size_t max_bytes) {
   for (size_t i = 0; i < text.size();) {
     if (out.size() >= max_bytes) return out + "...";
     uint32_t cp = 0;
-    const size_t n = utf8Length(text, i, &cp);
+    const size_t n = utf8SequenceLength(text, i, &cp);
     if (n == 0 || isControl(cp)) {
       for (size_t k = 0; k < (n == 0 ? 1 : n); ++k)
         appendHex(&out, static_cast<uint8_t>(text[i + k]));
@@ -60,6 +48,16 @@ std::string printable(std::string_view text, size_t max_bytes) {
     i += n;
   }
   return out;
+}
+
+std::string printableMiddle(std::string_view text, size_t max_bytes) {
+  const std::string all = printable(text, static_cast<size_t>(-1));
+  if (all.size() <= max_bytes) return all;
+  const std::string dots = "...";
+  const size_t room = max_bytes > dots.size() ? max_bytes - dots.size() : 0;
+  const size_t head = cutBoundary(all, room / 2, true);
+  const size_t tail = cutBoundary(all, all.size() - (room - room / 2), false);
+  return all.substr(0, head) + dots + all.substr(tail);
 }
 
 }  // namespace smpl

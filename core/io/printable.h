@@ -22,4 +22,12 @@ namespace smpl {
 // Text longer than `max_bytes` is cut at a character boundary and ends "...".
 std::string printable(std::string_view text, size_t max_bytes = 256);
 
+// As printable(), but text longer than `max_bytes` (after escaping) keeps its
+// beginning and its end and loses its middle, replaced by "...", cut at
+// character and escape boundaries. For error lines, whose reason comes last:
+//   printableMiddle("Error saving /a/<4000 bytes>/b.glb: File name too long", 60)
+//     == "Error saving /a/aaaaaaaaaa...aaaaaaa/b.glb: File name too long"
+// (the result is at most `max_bytes` bytes; idempotent like printable()).
+std::string printableMiddle(std::string_view text, size_t max_bytes);
+
 }  // namespace smpl

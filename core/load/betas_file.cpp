@@ -12,14 +12,17 @@
 namespace smpl {
 namespace {
 
-// (B,), (1,B) or per-frame (T,B) from a numpy file.
+// (B,), (1,B) or per-frame (T,B) from a numpy file. What a betas file is
+// (kBetasInput: .npy/.npz up to 256 MiB, JSON 64 MiB, core/io/input_kind.h) is
+// checked from its first bytes and size before it is read.
 Result<std::vector<double>> readNumpyBetas(const std::string& path, std::string* note) {
   Array a;
   if (hasSuffix(path, ".npy")) {
-    Result<Array> r = readNpyFile(path);
+    Result<Array> r = readNpyFile(path, kBetasInput);
     if (!r) return r.error();
     a = std::move(*r);
   } else {
+    if (Result<FileFormat> f = checkInputFile(path, kBetasInput); !f) return f.error();
     Result<ArrayDict> d = readNpzFile(path, {"betas"});  // lazy: other members are not read
     if (!d) return d.error();
     auto it = d->find("betas");
@@ -33,7 +36,7 @@ Result<std::vector<double>> readNumpyBetas(const std::string& path, std::string*
 }
 
 Result<std::vector<double>> readJsonBetas(const std::string& path) {
-  Result<std::vector<uint8_t>> bytes = readFileBytes(path);  // regular files and pipes only
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path, kBetasInput);  // sniffed, bounded
   if (!bytes) return bytes.error();
   nlohmann::json j = nlohmann::json::parse(bytes->begin(), bytes->end(), nullptr,
                                            /*allow_exceptions=*/false);

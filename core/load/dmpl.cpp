@@ -1,14 +1,17 @@
 #include "core/load/dmpl.h"
 
-#include <cmath>
 #include <filesystem>
 
+#include "core/io/file_io.h"
 #include "core/load/model_folder.h"
 #include "core/load/npz_arrays.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 
 Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int count) {
+  // An .npz in a regular file, within its bound, before anything is mapped.
+  if (Result<FileFormat> f = checkInputFile(path, kDmplInput); !f) return f.error();
   Result<ArrayDict> arrays = readNpzArrays(path, {"eigvec"}, path);
   if (!arrays) return arrays.error();
   auto it = arrays->find("eigvec");
@@ -24,6 +27,7 @@ Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int c
   if (count < 0 || count > d)
     return makeError(path + ": --dmpl-count " + std::to_string(count) + ": the basis has " +
                      std::to_string(d) + " directions");
+  if (Status st = checkDmplBasisValues(a, path); !st) return st.error();
   const int keep = count == 0 ? d : count;
   DmplBasis basis;
   basis.path = path;
@@ -31,11 +35,7 @@ Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int c
   if (Status st = basis.charge.add(bytes, path, "the DMPL basis"); !st) return st.error();
   basis.directions.resize(3 * static_cast<Eigen::Index>(num_vertices), keep);
   for (Eigen::Index r = 0; r < basis.directions.rows(); ++r)
-    for (int k = 0; k < keep; ++k) {
-      const double v = a.data[static_cast<size_t>(r) * d + k];
-      if (!std::isfinite(v)) return makeError(path + ": 'eigvec' contains NaN or infinite values");
-      basis.directions(r, k) = v;
-    }
+    for (int k = 0; k < keep; ++k) basis.directions(r, k) = a.data[static_cast<size_t>(r) * d + k];
   return basis;
 }
 

@@ -23,9 +23,10 @@ struct DmplBasis {
 };
 
 // Reads `eigvec` (N,3,D) from `path` and keeps the first `count` directions
-// (0 = all). Errors (one line naming `path`): unreadable file, no `eigvec`,
-// shape not (num_vertices,3,D), count > D, NaN/Inf values. Other keys are
-// ignored.
+// (0 = all). Errors (one line naming `path`): unreadable file, not an .npz in
+// a regular file or over 1 GiB (kDmplInput, core/io/input_kind.h), no
+// `eigvec`, shape not (num_vertices,3,D), count > D, values not finite or
+// beyond kMaxDmplDisplacement (validate_inputs.h). Other keys are ignored.
 Result<DmplBasis> loadDmplBasis(const std::string& path, int num_vertices, int count = 0);
 
 // `--dmpl DIR`: the basis for a motion's gender, looked up as AMASS lays it

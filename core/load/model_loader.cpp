@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 
 #include "core/io/file_io.h"
 #include "core/io/huge_pages.h"
@@ -148,6 +145,8 @@ Status loadTexcoords(const Arrays& in, BodyModel* m) {
   Result<const Array*> f = in.get("ft", {m->faces.rows(), 3});
   if (!f) return f.error();
   const int64_t u = (*uv)->shape[0];
+  if (Status st = checkTexCoords((*uv)->data.data(), (*uv)->data.size(), in.context, "'vt'"); !st)
+    return st;
   for (double v : (*f)->data)
     if (v < 0 || v >= u || v != std::floor(v))
       return makeError(in.context + ": 'ft' has index " +
@@ -248,31 +247,20 @@ const std::vector<std::string>& modelKeys() {
   return keys;
 }
 
-// The first bytes of a regular file, without reading the rest (devices and
-// other special files go through readFileBytes, which refuses them).
-Result<std::vector<uint8_t>> fileMagic(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return readFileBytes(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return makeError(path + ": cannot open");
-  std::vector<uint8_t> magic(4, 0);
-  in.read(reinterpret_cast<char*>(magic.data()), 4);
-  magic.resize(static_cast<size_t>(in.gcount()));
-  return magic;
-}
-
 Result<BodyModel> loadModel(const std::string& path) {
-  Result<std::vector<uint8_t>> magic = fileMagic(path);
-  if (!magic) return magic.error();
-  const std::vector<uint8_t>& b = *magic;
-  Result<ArrayDict> arrays =
-      makeError(path + ": not a model file (expected .npz or .pkl contents)");
-  if (b.size() >= 4 && std::memcmp(b.data(), "PK", 2) == 0) {
+  // From the first bytes and the size, before anything is read whole: a
+  // model is an .npz or a pickle in a regular file (no pipes: both readers
+  // map it), so /dev/stdin or a 3 GB sparse file is refused at once.
+  Result<FileFormat> format = checkInputFile(path, kModelInput);
+  if (!format) return format.error();
+  Result<ArrayDict> arrays = makeError(path + ": not a model file");
+  if (*format == FileFormat::Zip) {
     arrays = readNpzArrays(path, modelKeys(), path);  // lazy: only the model's keys are read
-  } else if (!b.empty() && (b[0] == 0x80 || b[0] == '(' || b[0] == '}' || b[0] == ']')) {
+  } else {
     Result<MappedFile> bytes = MappedFile::open(path);  // no copy of the file
     if (!bytes) return bytes.error();
     arrays = parsePickle(bytes->data(), bytes->size(), path);
+    if (Status st = bytes->intact(); !st) return st.error();  // the file shrank while read
   }
   if (!arrays) return arrays.error();
   return buildModel(*arrays, path);

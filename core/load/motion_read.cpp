@@ -1,5 +1,6 @@
 #include "core/load/motion_read.h"
 
+#include "core/io/file_io.h"
 #include "core/io/npy.h"
 #include "core/io/npz.h"
 #include "core/io/tree/data_tree.h"
@@ -82,6 +83,9 @@ Result<MotionFile> readNpz(const std::string& path, bool decode) {
 }
 
 Result<MotionFile> read(const std::string& path, bool decode) {
+  // Size bound of what the first bytes show (core/io/input_kind.h), before the
+  // file is mapped and walked: a 3 GB pickle or JSON is refused at once.
+  if (Result<FileFormat> f = checkInputFile(path, kMotionInput); !f) return f.error();
   Result<Container> container = sniffContainer(path);
   if (!container) return container.error();
   if (*container == Container::Npz) return readNpz(path, decode);

@@ -5,6 +5,7 @@
 
 #include "core/io/file_io.h"
 #include "core/io/npy.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace {
@@ -17,7 +18,7 @@ bool exists(const std::string& path) {
 
 Result<Eigen::MatrixXd> readMatrix(const std::string& path, int64_t rows, int64_t cols,
                                    const char* what) {
-  Result<Array> a = readNpyFile(path);
+  Result<Array> a = readNpyFile(path, kUvNpyInput);  // .npy magic, 256 MiB, before reading
   if (!a) return a.error();
   const bool ok = !a->isString() && !a->isObject() && a->shape.size() == 2 && a->shape[1] == cols &&
                   (rows < 0 || a->shape[0] == rows);
@@ -28,6 +29,9 @@ Result<Eigen::MatrixXd> readMatrix(const std::string& path, int64_t rows, int64_
   for (double v : a->data)
     if (!std::isfinite(v))
       return makeError(baseName(path) + ": " + what + " contains NaN or infinite values");
+  if (cols == 2)  // coordinates (faces are checked as indices by the caller)
+    if (Status st = checkTexCoords(a->data.data(), a->data.size(), baseName(path), what); !st)
+      return st.error();
   return Eigen::MatrixXd(
       Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
           a->data.data(), a->shape[0], cols));

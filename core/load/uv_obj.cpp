@@ -7,6 +7,7 @@
 
 #include "core/io/file_io.h"
 #include "core/io/printable.h"
+#include "core/load/validate_inputs.h"
 
 namespace smpl {
 namespace {
@@ -32,8 +33,10 @@ bool parseCorner(const std::string& token, const ObjData& obj, std::pair<int, in
 }
 
 Result<ObjData> parseObj(const std::string& path) {
-  // Through readFileBytes: devices are refused and the size is charged to the memory budget.
-  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
+  // Through readFileBytes: devices are refused, the first bytes must be text and
+  // the size within 256 MiB (kUvObjInput) before the rest is read, and the
+  // buffer is charged to the memory budget.
+  Result<std::vector<uint8_t>> bytes = readFileBytes(path, kUvObjInput);
   if (!bytes) return bytes.error();
   std::istringstream in(std::string(bytes->begin(), bytes->end()));
   bytes = std::vector<uint8_t>();
@@ -45,10 +48,12 @@ Result<ObjData> parseObj(const std::string& path) {
     if (tag == "v") {
       ++obj.positions;
     } else if (tag == "vt") {
-      Eigen::Vector2f uv;
-      if (!(ls >> uv.x() >> uv.y()))
+      double uv[2];  // as doubles, so 1e39 is named as out of range, not as malformed
+      if (!(ls >> uv[0] >> uv[1]))
         return makeError(path + ":" + std::to_string(line_no) + ": malformed 'vt' line");
-      obj.uvs.push_back(uv);
+      const std::string where = path + ":" + std::to_string(line_no);
+      if (Status st = checkTexCoords(uv, 2, where, "'vt'"); !st) return st.error();
+      obj.uvs.push_back(Eigen::Vector2f(static_cast<float>(uv[0]), static_cast<float>(uv[1])));
     } else if (tag == "f") {
       std::vector<std::pair<int, int>> face;
       for (std::string token; ls >> token;) {

@@ -117,6 +117,38 @@ Status checkFrameRate(double fps, const std::string& context, const std::string&
   return Status();
 }
 
+Status checkTexCoords(const double* values, size_t count, const std::string& context,
+                      const std::string& key) {
+  for (size_t i = 0; i < count; ++i)
+    if (!(std::abs(values[i]) <= kMaxTexCoord))
+      return makeError(context + ": " + key + " element " + std::to_string(i) + " is " +
+                       number(values[i]) + "; expected finite texture coordinates within " +
+                       number(kMaxTexCoord));
+  return Status();
+}
+
+Status checkDmplBasisValues(const Array& eigvec, const std::string& context) {
+  for (size_t i = 0; i < eigvec.data.size(); ++i) {
+    const double v = eigvec.data[i];
+    if (!(std::abs(v) <= kMaxDmplDisplacement))
+      return makeError(context + ": 'eigvec' element " + std::to_string(i) + " is " + number(v) +
+                       "; expected finite values within " + number(kMaxDmplDisplacement) +
+                       " m per unit coefficient");
+  }
+  return Status();
+}
+
+Status checkDmplValues(const Eigen::MatrixXd& dmpls, const std::string& context) {
+  for (Eigen::Index t = 0; t < dmpls.rows(); ++t)
+    for (Eigen::Index d = 0; d < dmpls.cols(); ++d)
+      if (!(std::abs(dmpls(t, d)) <= kMaxCoefficient))
+        return makeError(context + ": 'dmpls' frame " + std::to_string(t) + " column " +
+                         std::to_string(d) + " is " + number(dmpls(t, d)) +
+                         "; expected a finite value with magnitude at most " +
+                         number(kMaxCoefficient));
+  return Status();
+}
+
 Status checkMotionValues(Motion* m, const std::string& path) {
   if (Status st = checkFrameRate(m->fps, path, "the frame rate"); !st) return st;
   if (Status st = checkCoefficients(m->betas, path, "'betas'"); !st) return st;

@@ -13,6 +13,15 @@
 //   face indices        integral (1.5 is refused, not truncated), >= 0, < 2^31.
 //   frame rates         1 to 10000 frames per second (kMinFrameRate..kMaxFrameRate).
 //   translations        |component| <= 10000 m (kMaxTranslation).
+//   UV coordinates      finite, |value| <= 1000 (kMaxTexCoord; 1 = one texture
+//                       width: UDIM layouts use 0..10), from .npy, .obj or the
+//                       model file's vt.
+//   DMPL basis          `eigvec` finite, |value| <= 10 m per unit coefficient
+//                       (kMaxDmplDisplacement: soft tissue moves centimetres;
+//                       the public basis stays below 0.1).
+//   DMPL coefficients   a motion's `dmpls` finite, |value| <= 1000
+//                       (kMaxCoefficient, as betas: the coefficients are in
+//                       the basis' standard deviations).
 //   rotation matrices   orthonormal with det +1: ||R^T R - I||_F <= 1e-3
 //                       (kRotationTolerance, float32 storage is ~1e-7). Within
 //                       the tolerance R is replaced by its nearest rotation
@@ -37,6 +46,8 @@ constexpr double kMaxTranslation = 1e4;  // metres
 constexpr double kMinFrameRate = 1.0;    // frames per second
 constexpr double kMaxFrameRate = 10000.0;
 constexpr double kRotationTolerance = 1e-3;  // Frobenius norm of R^T R - I
+constexpr double kMaxTexCoord = 1e3;
+constexpr double kMaxDmplDisplacement = 10.0;  // metres per unit DMPL coefficient
 
 // Betas or expression coefficients; `what` names them in errors ("'betas'").
 Status checkCoefficients(const std::vector<double>& values, const std::string& context,
@@ -50,6 +61,19 @@ Status checkIndices(const Array& a, const std::string& context, const std::strin
 
 // A frame rate in [kMinFrameRate, kMaxFrameRate]; `key` names where it came from.
 Status checkFrameRate(double fps, const std::string& context, const std::string& key);
+
+// `count` UV coordinates (u, v interleaved or one column after the other: only
+// the values matter); `key` names them ("'vt'", "UV coordinates"), element i
+// is named in the error.
+Status checkTexCoords(const double* values, size_t count, const std::string& context,
+                      const std::string& key);
+
+// A DMPL basis `eigvec` (N,3,D): finite, within kMaxDmplDisplacement.
+Status checkDmplBasisValues(const Array& eigvec, const std::string& context);
+
+// A motion's DMPL coefficients `dmpls` (T x D): finite, within
+// kMaxCoefficient; the error names the frame and the column.
+Status checkDmplValues(const Eigen::MatrixXd& dmpls, const std::string& context);
 
 // A loaded motion: frame rate, translations, betas and rotation matrices (the
 // latter re-orthonormalised within the tolerance, hence the pointer).

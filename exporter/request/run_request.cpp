@@ -181,11 +181,13 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
   const std::string buffer_path = gltfBufferPath(r, r.out);
   Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, buffer_path));
   if (!files) return exportFailure(r.out, files.error(), "");
-  const std::string sidecar = sidecarJson(asset, producer);
   std::vector<FileContent> contents = {
       FileContent{r.out, files->bytes.data(), files->bytes.size()}};
   if (!buffer_path.empty())
     contents.push_back(FileContent{buffer_path, files->buffer.data(), files->buffer.size()});
+  // The sidecar records the size and SHA-256 of each file written with it
+  // (batch mode checks them, metadata_json.h).
+  const std::string sidecar = sidecarJson(asset, producer, contents);
   contents.push_back(FileContent{r.out + ".smpl.json", sidecar.data(), sidecar.size()});
   if (Status st = writeFilesTogether(contents); !st)
     return fail(ErrorKind::Write, "saving", r.out, st.message());

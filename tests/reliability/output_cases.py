@@ -12,6 +12,7 @@ Run: /usr/bin/python3 output_cases.py SMPL_EXPORT FIXTURE_DIR WORK_DIR
 import json
 import os
 import pathlib
+import re
 import shutil
 import signal
 import subprocess
@@ -35,13 +36,6 @@ def fresh(name):
 
 def temps(folder):
     return sorted(p.name for p in pathlib.Path(folder).iterdir() if ".smpl.tmp-" in p.name or ".tmp" in p.name)
-
-
-def dead_pid():
-    """A pid that is not running (a child that has exited and been reaped)."""
-    p = subprocess.Popen(["true"])
-    p.wait()
-    return p.pid
 
 
 # -- kind 3: an output (or its sidecar) that is an input is refused, exit 1 --
@@ -287,26 +281,50 @@ def killed_run():
     check("kill.only_dot_temporaries_left",
           all(n.startswith(".") and ".smpl.tmp-" in n for n in left) and left,
           f"left: {left}")
-    ours = {f".big.fbx.smpl.tmp-{proc.pid}", f".big.fbx.smpl.json.smpl.tmp-{proc.pid}"}
-    check("kill.temporary_named_after_output_and_pid", set(left) <= ours, f"left: {left}")
-    # Another output's stale temporary is not touched (a live run's: unit test FileIo).
-    other = d / f".other.fbx.smpl.tmp-{dead_pid()}"
+    # ".<output>.smpl.tmp-<8 hex tag>-<16 hex random>" (core/io/file_io.h): named
+    # after the output, unpredictable (no pid: a link planted under a guessed
+    # name is never followed, safety_cases.py).
+    ours = re.compile(r"^\.big\.fbx(\.smpl\.json)?\.smpl\.tmp-[0-9a-f]{8}-[0-9a-f]{16}(-old)?$")
+    check("kill.temporary_named_after_output_unpredictably",
+          all(ours.match(n) and str(proc.pid) not in n for n in left), f"left: {left}")
+    # Another output's temporary (same pattern) and a live writer's temporary
+    # of this output (its flock held by another process) are not touched.
+    other = d / ("." + left[0][1:].replace("big.fbx", "other.fbx", 1))
     other.write_text("x")
+    live = d / (left[0][:-16] + "0123456789abcdef")
+    live.write_text("x")
+    holder = subprocess.Popen([sys.executable, "-c", "import fcntl, sys, time; f = open(sys.argv[1]); "
+                               "fcntl.flock(f, fcntl.LOCK_EX); print('locked', flush=True); time.sleep(120)",
+                               str(live)], stdout=subprocess.PIPE)
+    holder.stdout.readline()
     expect_success("kill.next_run_succeeds", [exe, "--model", "builtin", "--out", out, "-q"], outputs=[out])
+    holder.kill()
+    holder.wait()
     left = sorted(n for n in os.listdir(d) if n != "long.npz")
     check("kill.next_run_removed_stale_temporaries",
-          left == [other.name, "big.fbx", "big.fbx.smpl.json"], f"left: {left}")
-    # Batch: stale temporaries of planned outputs (even up-to-date ones) go.
+          left == sorted([other.name, live.name, "big.fbx", "big.fbx.smpl.json"]), f"left: {left}")
+    # Batch: stale temporaries of planned outputs (even up-to-date ones) go:
+    # a forced rebuild killed mid-write leaves them, the next run removes them.
     mdir, odir = fresh("kill_batch/motions"), fresh("kill_batch/out")
-    shutil.copy(motions / "smpl_72.npz", mdir / "a.npz")
-    argv = [exe, "--model", "builtin", "--motion-dir", mdir, "--out-dir", odir, "-q"]
-    expect_success("kill.batch_first_run", argv, outputs=[odir / "a.glb"])
-    stale = [odir / f".a.glb.smpl.tmp-{dead_pid()}", odir / f".a.glb.smpl.json.smpl.tmp-{dead_pid()}-old"]
-    for s in stale:
-        s.write_text("partial")
+    shutil.copy(long_motion, mdir / "a.npz")
+    argv = [exe, "--model", "builtin", "--motion-dir", mdir, "--out-dir", odir, "--fps", "1000", "-q"]
+    expect_success("kill.batch_first_run", argv, outputs=[odir / "a.glb"], timeout=600)
+    stale = []
+    for attempt in range(3):
+        proc = subprocess.Popen([str(a) for a in argv + ["--force"]], stdout=subprocess.DEVNULL,
+                                stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + 120
+        while proc.poll() is None and time.monotonic() < deadline and not stale:
+            stale = [odir / n for n in os.listdir(odir) if n.startswith(".a.glb.smpl.tmp-")]
+            time.sleep(0.001)
+        proc.send_signal(signal.SIGKILL)
+        proc.wait()
+        if stale:
+            break
+    check("kill.batch_killed_mid_write", bool(stale), f"left: {sorted(os.listdir(odir))}")
     expect_success("kill.batch_rerun", argv, stderr_contains=["batch: 0 converted, 1 up to date, 0 failed"])
-    check("kill.batch_removed_stale_temporaries", not any(os.path.lexists(s) for s in stale),
-          f"left: {sorted(os.listdir(odir))}")
+    check("kill.batch_removed_stale_temporaries", not any(os.path.lexists(s) for s in stale) and
+          not [n for n in os.listdir(odir) if ".smpl.tmp-" in n], f"left: {sorted(os.listdir(odir))}")
 
 
 # -- kind 9: output and sidecar are committed together --

@@ -77,6 +77,12 @@ TEST(DmplCoefficients, ReadFromMotionAndCheckedOnlyWhenUsed) {
   ASSERT_FALSE(st.ok());
   EXPECT_EQ(st.message(),
             "w.npz: 'dmpls' has 6 columns; the DMPL basis basis.npz has 8 directions");
+  Motion huge = *m;  // finite as doubles, beyond float32: refused where it enters
+  huge.dmpls(7, 1) = 1e39;
+  st = checkDmplCoefficients(huge, "huge.npz", 8, "basis.npz");
+  ASSERT_FALSE(st.ok());
+  EXPECT_EQ(st.message().rfind("huge.npz: 'dmpls' frame 7 column 1 is 1e+39", 0), 0u)
+      << st.message();
 }
 
 TEST(DmplLayout, WeightsSpanZeroToOneAndStaticIsRest) {

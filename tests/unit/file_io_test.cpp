@@ -3,18 +3,20 @@
 #include "core/io/file_io.h"
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <regex>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace smpl {
@@ -44,6 +46,11 @@ class FileIo : public ::testing::Test {
   }
   std::string dir_;
 };
+
+std::string readText(const std::string& path) {
+  Result<std::vector<uint8_t>> r = readFileBytes(path);
+  return r ? std::string(r->begin(), r->end()) : "<" + r.message() + ">";
+}
 
 TEST_F(FileIo, WriteThenReadRoundTripsBinaryData) {
   std::string bytes(300000, '\0');  // larger than the read chunk, with NULs
@@ -107,15 +114,40 @@ TEST_F(FileIo, FailedRenameRemovesTheTemporary) {
   std::remove((path + "/keep").c_str());
 }
 
-std::string readText(const std::string& path) {
-  Result<std::vector<uint8_t>> r = readFileBytes(path);
-  return r ? std::string(r->begin(), r->end()) : "<" + r.message() + ">";
+// "<dir>/.<name>.smpl.tmp-<8 hex tag>-<16 hex random>": named after the output,
+// a new unpredictable name every time, and short enough for any legal name.
+TEST_F(FileIo, TemporaryIsDotPrefixedNamedAfterTheOutputAndUnpredictable) {
+  const std::regex pattern(R"(/data/out/\.walk\.glb\.smpl\.tmp-[0-9a-f]{8}-[0-9a-f]{16})");
+  const std::string a = tempPathFor("/data/out/walk.glb"), b = tempPathFor("/data/out/walk.glb");
+  EXPECT_TRUE(std::regex_match(a, pattern)) << a;
+  EXPECT_NE(a, b);
+  EXPECT_EQ(a.substr(0, a.size() - 16), b.substr(0, b.size() - 16));  // same output, same tag
+  EXPECT_EQ(a.find(std::to_string(::getpid())), std::string::npos);   // no pid in the name
+  EXPECT_EQ(tempPathFor("walk.glb").rfind(".walk.glb.smpl.tmp-", 0), 0u);
+  // Every legal name (255 bytes) has a temporary whose backup ("-old") fits too.
+  const std::string longest(255, 'n');
+  EXPECT_LE(baseName(tempPathFor("/d/" + longest)).size() + 4, 255u);
+  // Names that differ only after the cut still get different temporaries (the tag).
+  const std::string p1 = tempPathFor("/d/" + longest),
+                    p2 = tempPathFor("/d/" + longest.substr(1) + "m");
+  EXPECT_NE(p1.substr(0, p1.size() - 16), p2.substr(0, p2.size() - 16));
 }
 
-TEST_F(FileIo, TemporaryIsDotPrefixedAndNamedAfterTheOutput) {
-  const std::string pid = std::to_string(::getpid());
-  EXPECT_EQ(tempPathFor("/data/out/walk.glb"), "/data/out/.walk.glb.smpl.tmp-" + pid);
-  EXPECT_EQ(tempPathFor("walk.glb"), ".walk.glb.smpl.tmp-" + pid);
+// Legal output names of 229..255 bytes are written (the temporary's name was
+// too long before); 256 bytes is refused before anything is created.
+TEST_F(FileIo, LongestLegalNamesAreWritten) {
+  for (size_t n : {229u, 245u, 255u}) {
+    const std::string path = dir_ + "/" + std::string(n - 4, 'a') + ".glb";
+    Status st = writeFileAtomic(path, std::string("x"));
+    EXPECT_TRUE(st.ok()) << n << ": " << st.message();
+    EXPECT_EQ(readText(path), "x");
+    std::remove(path.c_str());
+  }
+  const std::string too_long = dir_ + "/" + std::string(256, 'a');
+  Status st = writeFileAtomic(too_long, std::string("x"));
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find(std::strerror(ENAMETOOLONG)), std::string::npos) << st.message();
+  EXPECT_TRUE(list().empty());
 }
 
 TEST_F(FileIo, PairIsWrittenTogether) {
@@ -173,41 +205,126 @@ TEST_F(FileIo, FailedOutputKeepsTheOldSidecar) {
   EXPECT_EQ(list().size(), 2u);
 }
 
-// Stale temporaries of our outputs (dead pid) go; a live run's, other
-// outputs' and unrelated files stay.
+// Stale temporaries (and backups) of our outputs, which no one holds locked,
+// go; a live writer's (locked), other outputs', links, folders and files that
+// only look similar stay.
 TEST_F(FileIo, RemovesOnlyStaleTemporariesOfItsOutputs) {
-  pid_t child = ::fork();
-  if (child == 0) ::_exit(0);
-  ASSERT_GT(child, 0);
-  int status = 0;
-  ::waitpid(child, &status, 0);  // now a pid that is not alive
-  pid_t sleeper = ::fork();      // another live process
-  if (sleeper == 0) {
-    ::pause();
-    ::_exit(0);
-  }
-  ASSERT_GT(sleeper, 0);
-  const std::string dead = std::to_string(child), live = std::to_string(sleeper);
-  const std::vector<std::string> files = {".out.glb.smpl.tmp-" + dead,
-                                          ".out.glb.smpl.json.smpl.tmp-" + dead,
-                                          ".out.glb.smpl.tmp-" + dead + "-old",
-                                          ".out.glb.smpl.tmp-" + live,
-                                          ".other.glb.smpl.tmp-" + dead,
-                                          "out.glb.smpl.tmp-" + dead,
-                                          ".out.glb.tmp-" + dead};
-  for (const std::string& f : files) std::ofstream(dir_ + "/" + f) << "x";
-  std::ofstream(dir_ + "/.out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid()))
-      << "x";  // this run's
+  const std::string out = dir_ + "/out.glb", side = out + ".smpl.json";
+  const std::string stale = tempPathFor(out), stale_side = tempPathFor(side),
+                    stale_backup = tempPathFor(out) + "-old", live = tempPathFor(side),
+                    other = tempPathFor(dir_ + "/other.glb"), link = tempPathFor(out),
+                    folder = tempPathFor(out);
+  for (const std::string& f : {stale, stale_side, stale_backup, live, other})
+    std::ofstream(f) << "x";
+  ASSERT_EQ(::symlink("out.glb", link.c_str()), 0);
+  ASSERT_EQ(::mkdir(folder.c_str(), 0755), 0);
+  const std::vector<std::string> similar = {baseName(stale) + "x", baseName(stale).substr(1),
+                                            ".out.glb.smpl.tmp-" + std::to_string(::getpid()),
+                                            baseName(stale).substr(0, baseName(stale).size() - 1)};
+  for (const std::string& f : similar) std::ofstream(dir_ + "/" + f) << "x";
+  const int held = ::open(live.c_str(), O_RDONLY | O_CLOEXEC);  // a live writer's lock
+  ASSERT_EQ(::flock(held, LOCK_EX), 0);
   const int removed = removeStaleTemps(dir_, {"out.glb", "out.glb.smpl.json"});
-  ::kill(sleeper, SIGKILL);
-  ::waitpid(sleeper, &status, 0);
+  ::close(held);
   EXPECT_EQ(removed, 3);
   std::vector<std::string> left = list();
   std::sort(left.begin(), left.end());
-  std::vector<std::string> want = {files[3], files[4], files[5], files[6],
-                                   ".out.glb.smpl.json.smpl.tmp-" + std::to_string(::getpid())};
+  std::vector<std::string> want = {baseName(live), baseName(other), baseName(link),
+                                   baseName(folder)};
+  want.insert(want.end(), similar.begin(), similar.end());
   std::sort(want.begin(), want.end());
   EXPECT_EQ(left, want);
+  ::rmdir(folder.c_str());
+}
+
+// A write holds its temporary locked until the commit: a cleanup running at
+// the same time (another process's removeStaleTemps) must not take it.
+TEST_F(FileIo, LiveTemporaryIsNotRemovedByACleanupMeanwhile) {
+  // The random source runs while the write creates its temporary; the cleanup
+  // here runs right after (the name is known), before any byte is written.
+  setTempRandomForTesting(+[]() -> std::string { return "00000000000000aa"; });
+  const std::string out = dir_ + "/out.glb";
+  std::vector<uint8_t> big(64 << 20, 7);  // long enough to clean while it is written
+  std::thread writer([&] { EXPECT_TRUE(writeFileAtomic(out, big.data(), big.size()).ok()); });
+  const std::string temp = tempPathFor(out);  // the same name (fixed random part)
+  struct stat st {};
+  for (int i = 0; i < 100000 && ::lstat(temp.c_str(), &st) != 0; ++i) std::this_thread::yield();
+  const bool seen = ::lstat(temp.c_str(), &st) == 0;
+  const int removed = seen ? removeStaleTemps(dir_, {"out.glb"}) : -1;
+  writer.join();
+  setTempRandomForTesting(nullptr);
+  EXPECT_TRUE(seen);
+  EXPECT_EQ(removed, 0);
+  EXPECT_EQ(readText(out).size(), big.size());
+}
+
+// O_CREAT | O_EXCL | O_NOFOLLOW: a symbolic link (or a file) planted under the
+// very name the write draws is never followed or truncated; the write draws
+// another name, and the link's target is untouched.
+TEST_F(FileIo, PlantedLinkAtTheTemporaryNameIsNeverFollowed) {
+  static int calls = 0;
+  calls = 0;
+  setTempRandomForTesting(+[]() -> std::string {
+    return ++calls <= 2 ? "0000000000000001" : "0000000000000002";  // 1st, 2nd draw: planted
+  });
+  const std::string out = dir_ + "/out.glb", target = dir_ + "/outside.txt";
+  std::ofstream(target) << "precious";
+  const std::string planted = tempPathFor(out);  // draw 1: the name the write draws first
+  ASSERT_EQ(::symlink(target.c_str(), planted.c_str()), 0);
+  Status st = writeFileAtomic(out, std::string("new output"));  // draw 2: planted, 3: free
+  setTempRandomForTesting(nullptr);
+  ASSERT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(readText(target), "precious");
+  EXPECT_EQ(readText(out), "new output");
+  struct stat ls {};
+  ASSERT_EQ(::lstat(out.c_str(), &ls), 0);
+  EXPECT_TRUE(S_ISREG(ls.st_mode));
+  ASSERT_EQ(::lstat(planted.c_str(), &ls), 0);
+  EXPECT_TRUE(S_ISLNK(ls.st_mode));  // the planted link itself is left as it was
+  EXPECT_EQ(calls, 3);
+}
+
+// A symbolic link at the output's (or the sidecar's) own name is replaced by
+// the new file; its target outside the folder is never written.
+TEST_F(FileIo, LinkAtTheOutputNameIsReplacedNotFollowed) {
+  const std::string out = dir_ + "/out.glb", side = out + ".smpl.json";
+  const std::string target = dir_ + "/outside.txt";
+  std::ofstream(target) << "precious";
+  ASSERT_EQ(::symlink(target.c_str(), out.c_str()), 0);
+  ASSERT_EQ(::symlink(target.c_str(), side.c_str()), 0);
+  const std::string a = "new output", b = "new sidecar";
+  ASSERT_TRUE(writeFilesTogether({{out, a.data(), a.size()}, {side, b.data(), b.size()}}).ok());
+  EXPECT_EQ(readText(target), "precious");
+  for (const std::string& p : {out, side}) {
+    struct stat ls {};
+    ASSERT_EQ(::lstat(p.c_str(), &ls), 0);
+    EXPECT_TRUE(S_ISREG(ls.st_mode)) << p;
+  }
+  EXPECT_EQ(readText(out), a);
+  EXPECT_EQ(list().size(), 3u);  // no temporaries or backups left
+}
+
+// Two writers of the same pair at once (threads here; processes in the
+// reliability suite): commits are serialised, so after every race the pair on
+// disk comes from one writer.
+TEST_F(FileIo, ConcurrentWritersLeaveOneConsistentPair) {
+  const std::string out = dir_ + "/out.glb", side = out + ".smpl.json";
+  int mixed = 0;
+  for (int race = 0; race < 100; ++race) {
+    std::vector<std::thread> writers;
+    for (int w = 0; w < 2; ++w)
+      writers.emplace_back([&, w] {
+        const std::string a = "output of " + std::to_string(w),
+                          b = "sidecar of " + std::to_string(w);
+        EXPECT_TRUE(
+            writeFilesTogether({{out, a.data(), a.size()}, {side, b.data(), b.size()}}).ok());
+      });
+    for (std::thread& t : writers) t.join();
+    const std::string a = readText(out), b = readText(side);
+    if (a.substr(a.size() - 1) != b.substr(b.size() - 1)) ++mixed;
+  }
+  EXPECT_EQ(mixed, 0);
+  EXPECT_EQ(list().size(), 2u);
 }
 
 TEST(BaseName, LastPathComponent) {

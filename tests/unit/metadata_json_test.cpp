@@ -99,5 +99,35 @@ TEST(MetadataJson, SidecarAddsProducerLast) {
   EXPECT_EQ(producerHashOf(""), "");
 }
 
+// The sidecar records every file of its output (name, size, SHA-256 of the
+// bytes written), and reads the record back; malformed records read as none.
+TEST(MetadataJson, SidecarRecordsEveryOutputFile) {
+  const std::string glb = "glTF bytes", bin = std::string(1000, '\0');
+  const std::vector<FileContent> outputs = {{"/out/walk.gltf", glb.data(), glb.size()},
+                                            {"/out/walk\xff.bin", bin.data(), bin.size()}};
+  const std::string sidecar = sidecarJson(metadataAsset(), "0123456789abcdef", outputs);
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(sidecar);
+  EXPECT_EQ(std::prev(j.end()).key(), "producer");
+  ASSERT_EQ(j["producer"]["outputs"].size(), 2u);
+  EXPECT_EQ(j["producer"]["outputs"][0]["file"], "walk.gltf");
+  EXPECT_EQ(j["producer"]["outputs"][0]["bytes"], glb.size());
+  // sha256sum of "glTF bytes" (an independent implementation's digest):
+  EXPECT_EQ(j["producer"]["outputs"][0]["sha256"],
+            "80dcc14bfc3491e609e212c9518577319eac1125b73b5a00d466a57de9787542");
+  EXPECT_EQ(j["producer"]["outputs"][1]["file"], "walk\\xff.bin");  // escaped, not replaced
+  const std::vector<RecordedOutput> back = recordedOutputsOf(sidecar);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].file, "walk\\xff.bin");
+  EXPECT_EQ(back[1].bytes, 1000u);
+  EXPECT_EQ(back[1].sha256, j["producer"]["outputs"][1]["sha256"]);
+  EXPECT_EQ(producerHashOf(sidecar), "0123456789abcdef");
+  EXPECT_TRUE(recordedOutputsOf(sidecarJson(metadataAsset(), "0123456789abcdef")).empty());
+  EXPECT_TRUE(recordedOutputsOf(R"({"producer": {"outputs": [{"file": 1}]}})").empty());
+  EXPECT_TRUE(recordedOutputsOf(R"({"producer": {"outputs": [{"file": "a", "bytes": -1,
+                                    "sha256": "x"}]}})")
+                  .empty());
+  EXPECT_TRUE(recordedOutputsOf("[").empty());
+}
+
 }  // namespace
 }  // namespace smpl

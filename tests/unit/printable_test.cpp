@@ -63,5 +63,38 @@ TEST(Printable, PickleGlobalNameIsEscapedInTheError) {
   EXPECT_NE(d.message().find("os\\x1b[31m.sys\\x0dtem"), std::string::npos) << d.message();
 }
 
+// Error lines keep their reason: a long path loses its middle, never the end.
+TEST(Printable, MiddleIsCutNotTheEnd) {
+  const std::string path = "/data/" + std::string(5000, 'a') + "/out.glb";
+  const std::string line = "Error saving " + path + ": cannot create: File name too long";
+  const std::string cut = printableMiddle(line, 4096);
+  EXPECT_LE(cut.size(), 4096u);
+  EXPECT_EQ(cut.rfind("Error saving /data/aaa", 0), 0u);
+  EXPECT_NE(cut.find("aaa...aaa"), std::string::npos);
+  EXPECT_NE(cut.find("/out.glb: cannot create: File name too long"), std::string::npos);
+  EXPECT_EQ(printableMiddle(cut, 4096), cut);  // idempotent
+  EXPECT_EQ(printableMiddle("short", 4096), "short");
+}
+
+TEST(Printable, MiddleCutKeepsCharactersAndEscapesWhole) {
+  // Multi-byte characters and \xNN escapes around the cut are never split.
+  std::string text;
+  for (int i = 0; i < 200; ++i) text += i % 2 ? "\xe2\x9c\x93" : "\x01";
+  for (size_t max : {20u, 21u, 22u, 23u, 24u, 25u, 50u, 51u}) {
+    const std::string cut = printableMiddle(text, max);
+    EXPECT_LE(cut.size(), max);
+    EXPECT_EQ(printable(cut, 100000), cut) << max;  // still well-formed, printable text
+    const size_t dots = cut.find("...");
+    ASSERT_NE(dots, std::string::npos);
+    const std::string head = cut.substr(0, dots), tail = cut.substr(dots + 3);
+    const std::string all = printable(text, 100000);
+    EXPECT_EQ(all.compare(0, head.size(), head), 0) << max;
+    EXPECT_EQ(all.compare(all.size() - tail.size(), tail.size(), tail), 0) << max;
+    EXPECT_TRUE(head.empty() || head.back() != '\\');
+    EXPECT_TRUE(tail.empty() ||
+                (tail[0] == '\\' || (static_cast<uint8_t>(tail[0]) & 0xC0) != 0x80));
+  }
+}
+
 }  // namespace
 }  // namespace smpl

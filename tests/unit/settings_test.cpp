@@ -81,8 +81,9 @@ TEST(Settings, RejectsBeforeWork) {
       {{"--model", "builtin", "stray", "--out", "a.glb"}, "unexpected argument 'stray'"},
       {{"--model", "builtin", "--out"}, "option --out needs a value"},
       {{"--model", "builtin", "--out", "a.glb", "--betas", "1,x"},
-       "--betas: 'x' is not a finite number"},
-      {{"--model", "builtin", "--out", "a.glb", "--betas", "1,nan"}, "not a finite number"},
+       "--betas: 'x' is not a decimal number"},
+      {{"--model", "builtin", "--out", "a.glb", "--betas", "1,nan"},
+       "'nan' is not a decimal number"},
       {{"--model", "builtin", "--out", "a.glb", "--fbx-units", "cm"},
        "--fbx-units applies only to .fbx"},
       {{"--model", "builtin", "--out", "a.glb", "--correctives", "some"},
@@ -142,8 +143,8 @@ TEST(Settings, MotionFormatAndShardOptions) {
     const char* message;
   };
   const Bad cases[] = {
-      {{"--source-fps", "nan"}, "--source-fps: 'nan' is not a finite number"},
-      {{"--source-fps", "inf"}, "--source-fps: 'inf' is not a finite number"},
+      {{"--source-fps", "nan"}, "--source-fps: 'nan' is not a decimal number"},
+      {{"--source-fps", "inf"}, "--source-fps: 'inf' is not a decimal number"},
       {{"--shard", "8/8"}, "--shard: expected I/N"},
       {{"--shard", "-1/8"}, "--shard: expected I/N"},
       {{"--shard", "1/0"}, "--shard: expected I/N"},
@@ -182,6 +183,71 @@ TEST(SettingsMemory, MemoryLimitIsParsedAndChecked) {
   EXPECT_EQ(s.message().rfind("--memory-limit: expected a size such as 512M or 4G", 0), 0u)
       << s.message();
   EXPECT_NE(usageText().find("--memory-limit SIZE"), std::string::npos);
+}
+
+// One number grammar for every numeric option (core/number_text.h): "0x10",
+// "+4", " 4", "inf" are refused by all of them; integers are digits only
+// ("1e1", "4.0" refused); decimals may use a fraction and an exponent.
+TEST(SettingsNumbers, EveryNumericOptionUsesTheOneGrammar) {
+  struct Opt {
+    std::vector<const char*> base;  // what the option needs besides itself
+    const char* name;
+    const char* good;  // a valid value of the option
+    bool integer;
+  };
+  const std::vector<const char*> glb = {"--model", "builtin", "--out", "a.glb"};
+  const std::vector<const char*> fbx = {"--model", "builtin", "--out", "a.fbx"};
+  const std::vector<const char*> motion = {"--model", "builtin",  "--out",
+                                           "a.glb",   "--motion", "m.npz"};
+  const std::vector<const char*> batch = {"--model", "builtin",   "--motion-dir",
+                                          "m",       "--out-dir", "o"};
+  const std::vector<const char*> dmpl = {"--model", "builtin", "--out", "a.glb", "--dmpl", "d.npz"};
+  const Opt options[] = {
+      {glb, "--betas", "0.5", false},
+      {glb, "--expression", "0.5", false},
+      {glb, "--max-influences", "8", true},
+      {glb, "--corrective-basis", "8", true},
+      {glb, "--corrective-epsilon", "1e-3", false},
+      {glb, "--shape-keys", "2", true},
+      {glb, "--expression-keys", "2", true},
+      {dmpl, "--dmpl-count", "2", true},
+      {fbx, "--fbx-compress-level", "3", true},
+      {glb, "--threads", "2", true},
+      {motion, "--source-fps", "3e1", false},
+      {motion, "--fps", "2.5e1", false},
+      {motion, "--frames", "10:", true},
+      {batch, "--shard", "1/2", true},
+      {glb, "--memory-limit", "1.5e3M", false},
+  };
+  for (const Opt& o : options) {
+    std::vector<const char*> args = o.base;
+    args.push_back(o.name);
+    args.push_back(o.good);
+    Result<Settings> ok = parse(args);
+    EXPECT_TRUE(ok.ok()) << o.name << " " << o.good << ": " << ok.message();
+    std::vector<std::string> bad = {"0x10", "+4", " 4", "4 ", "inf", "nan", "0x1p3", "4,"};
+    if (o.integer) bad.insert(bad.end(), {"1e1", "4.0"});
+    if (std::string(o.name) == "--memory-limit") bad = {"0x10G", "+1G", " 1G", "infG", "1.5e3 M"};
+    if (std::string(o.name) == "--frames") bad = {"0x10:", "1e1:", "+1:", ":0x20", " 1:"};
+    if (std::string(o.name) == "--shard") bad = {"0x1/2", "1/0x2", "+1/2", "1e0/2", "1/ 2"};
+    if (std::string(o.name) == "--betas" || std::string(o.name) == "--expression")
+      bad.erase(bad.begin() + 2, bad.begin() + 4);  // blanks around list items are allowed
+    for (const std::string& v : bad) {
+      args.back() = v.c_str();
+      Result<Settings> s = parse(args);
+      EXPECT_FALSE(s.ok()) << o.name << " '" << v << "'";
+      if (!s.ok()) {
+        EXPECT_NE(s.message().find(o.name), std::string::npos) << s.message();
+      }
+    }
+  }
+  Result<Settings> spaced = parse({"--model", "builtin", "--out", "a.glb", "--betas", "0.5, -1.2"});
+  ASSERT_TRUE(spaced.ok()) << spaced.message();
+  EXPECT_EQ(spaced->request.betas, (std::vector<double>{0.5, -1.2}));
+  Result<Settings> limit =
+      parse({"--model", "builtin", "--out", "a.glb", "--memory-limit", "1e3M"});
+  ASSERT_TRUE(limit.ok()) << limit.message();
+  EXPECT_EQ(limit->request.memory_limit, 1000ull << 20);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <set>
 
 #include "core/load/model_loader.h"
@@ -89,6 +91,19 @@ TEST(UvSource, NumpyPairErrors) {
   EXPECT_NE(rows.message().find("smplx_pair_ft.npy: UV faces (one row per model face) has shape ("),
             std::string::npos)
       << rows.message();
+}
+
+// An OBJ texture coordinate beyond float32 (or the plausible range) is named
+// with its line, not read as Inf (nor as a "malformed" line).
+TEST(UvSource, ObjCoordinatesAreRangeChecked) {
+  const BodyModel m = release();
+  const std::string path = ::testing::TempDir() + "uv_range_" + std::to_string(::getpid()) + ".obj";
+  std::ofstream(path) << "vt 0.5 0.5\nvt 1e39 0\nf 1/1 2/2 1/1\n";
+  Result<UvLayout> r = loadUvLayout(path, m);
+  std::remove(path.c_str());
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.message().rfind(path + ":2: 'vt' element 0 is 1e+39; expected finite texture", 0), 0u)
+      << r.message();
 }
 
 }  // namespace

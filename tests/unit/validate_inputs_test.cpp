@@ -128,5 +128,37 @@ TEST(ValidateInputs, TranslationsBetasAndFpsOfAMotion) {
   EXPECT_FALSE(checkMotionValues(&m, "walk.npz"));
 }
 
+// UVs and DMPL arrays are checked where they enter, naming the input and
+// key: a value beyond float32 is not left for the writer to find (exit 3,
+// naming the output).
+TEST(ValidateInputs, TexCoordsAndDmplArrays) {
+  const double uv[4] = {0, 1, 9.5, -1000};
+  EXPECT_TRUE(checkTexCoords(uv, 4, "uv.npy", "UV coordinates"));
+  for (double bad : {1e39, 1000.5, std::numeric_limits<double>::quiet_NaN()}) {
+    const double values[3] = {0.5, 0.5, bad};
+    Status st = checkTexCoords(values, 3, "uv.npy", "UV coordinates");
+    ASSERT_FALSE(st) << bad;
+    EXPECT_EQ(st.message().rfind("uv.npy: UV coordinates element 2 is ", 0), 0u) << st.message();
+  }
+  Array eigvec;
+  eigvec.shape = {2, 3, 1};
+  eigvec.data = {0.01, -0.02, 0, 0, 10, -10};
+  EXPECT_TRUE(checkDmplBasisValues(eigvec, "dmpl.npz"));
+  eigvec.data[4] = 1e39;
+  Status st = checkDmplBasisValues(eigvec, "dmpl.npz");
+  ASSERT_FALSE(st);
+  EXPECT_EQ(st.message(),
+            "dmpl.npz: 'eigvec' element 4 is 1e+39; expected finite values within 10 m per unit "
+            "coefficient");
+  Eigen::MatrixXd dmpls = Eigen::MatrixXd::Constant(5, 8, 2.5);
+  EXPECT_TRUE(checkDmplValues(dmpls, "walk.npz"));
+  dmpls(3, 2) = -1e39;
+  st = checkDmplValues(dmpls, "walk.npz");
+  ASSERT_FALSE(st);
+  EXPECT_EQ(st.message(),
+            "walk.npz: 'dmpls' frame 3 column 2 is -1e+39; expected a finite value with magnitude "
+            "at most 1000");
+}
+
 }  // namespace
 }  // namespace smpl

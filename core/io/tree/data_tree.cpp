@@ -97,7 +97,9 @@ Result<Container> sniffContainer(const uint8_t* data, size_t size, const std::st
 Result<Container> sniffContainer(const std::string& path) {
   Result<MappedFile> file = MappedFile::open(path);
   if (!file) return file.error();
-  return sniffContainer(file->data(), file->size(), baseName(path));
+  Result<Container> container = sniffContainer(file->data(), file->size(), baseName(path));
+  if (Status st = file->intact(); !st) return st.error();  // shrank while read (mapping_guard.h)
+  return container;
 }
 
 Result<std::vector<std::string>> containerKeys(const std::string& path) {
@@ -155,8 +157,11 @@ Result<DataNode> readDataTree(const std::string& path, const std::vector<std::st
   const std::string context = baseName(path);
   Result<Container> container = sniffContainer(file->data(), file->size(), context);
   if (!container) return container.error();
-  if (*container != Container::Npz)
-    return readAs(*container, file->data(), file->size(), context, npz_keys);
+  if (*container != Container::Npz) {
+    Result<DataNode> tree = readAs(*container, file->data(), file->size(), context, npz_keys);
+    if (Status st = file->intact(); !st) return st.error();  // shrank while read: zeros were read
+    return tree;
+  }
   Result<NpzArchive> npz = NpzArchive::open(path);  // mapped, members read lazily
   if (!npz) return npz.error();
   return readNpzTree(*npz, npz_keys);

@@ -15,8 +15,10 @@ Result<DataNode> member(const NpzArchive& npz, const std::string& key) {
   if (*object) {
     Result<ZipBytes> bytes = npz.memberView(key);
     if (!bytes) return bytes.error();
-    return parseNpyTree(bytes->data, bytes->size,
-                        npz.context() + "/" + printable(npz.memberName(key)));
+    Result<DataNode> tree = parseNpyTree(bytes->data, bytes->size,
+                                         npz.context() + "/" + printable(npz.memberName(key)));
+    if (Status st = npz.intact(); !st) return st.error();  // a stored member is read in place
+    return tree;
   }
   Result<Array> array = npz.get(key);
   if (!array) return array.error();

@@ -1,7 +1,7 @@
 // SHA-256 through OpenSSL's EVP digest API (Debian's libssl-dev): a well-kept
 // implementation rather than our own. Files are hashed in 1 MiB chunks, so
 // memory stays flat whatever the output size.
-#include "cli/sha256.h"
+#include "core/io/sha256.h"
 
 #include <openssl/evp.h>
 
@@ -39,11 +39,13 @@ std::string finish(EVP_MD_CTX* ctx) {
 
 }  // namespace
 
-std::string sha256Hex(const std::string& bytes) {
+std::string sha256Hex(const void* data, size_t size) {
   DigestContext ctx = newSha256();
-  if (!ctx || EVP_DigestUpdate(ctx.get(), bytes.data(), bytes.size()) != 1) return std::string();
+  if (!ctx || EVP_DigestUpdate(ctx.get(), data, size) != 1) return std::string();
   return finish(ctx.get());
 }
+
+std::string sha256Hex(const std::string& bytes) { return sha256Hex(bytes.data(), bytes.size()); }
 
 Result<std::string> sha256File(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
