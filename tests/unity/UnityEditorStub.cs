@@ -39,7 +39,24 @@ namespace UnityEditor
             return new TextAsset(File.ReadAllText(file)) { name = Path.GetFileNameWithoutExtension(file) } as T;
         }
 
-        public static string GetAssetPath(UnityEngine.Object asset) { return ""; }
+        /// <summary>Assets "saved" by CreateAsset: asset path -> object (nothing is written to disk).</summary>
+        public static readonly Dictionary<string, UnityEngine.Object> Created = new Dictionary<string, UnityEngine.Object>();
+
+        public static void CreateAsset(UnityEngine.Object asset, string path)
+        {
+            if (asset == null || string.IsNullOrEmpty(path) || !path.StartsWith("Assets/"))
+                throw new ArgumentException("CreateAsset needs an object and a path under Assets/: " + path);
+            Created[path] = asset;
+        }
+
+        public static string GenerateUniqueAssetPath(string path) { return path; }
+
+        public static string GetAssetPath(UnityEngine.Object asset)
+        {
+            foreach (var kv in Created)
+                if (kv.Value == asset) return kv.Key;
+            return "";
+        }
     }
 
     public static class PrefabUtility

@@ -14,6 +14,10 @@ namespace UnityEngine
         public float x, y, z;
         public Vector3(float x, float y, float z) { this.x = x; this.y = y; this.z = z; }
         public static Vector3 right { get { return new Vector3(1, 0, 0); } }
+        public static Vector3 one { get { return new Vector3(1, 1, 1); } }
+        public static Vector3 operator +(Vector3 a, Vector3 b) { return new Vector3(a.x + b.x, a.y + b.y, a.z + b.z); }
+        public static Vector3 operator -(Vector3 a, Vector3 b) { return new Vector3(a.x - b.x, a.y - b.y, a.z - b.z); }
+        public float magnitude { get { return (float)Math.Sqrt(x * x + y * y + z * z); } }
     }
 
     public struct Quaternion
@@ -142,6 +146,8 @@ namespace UnityEngine
         Transform parentTransform;
         readonly List<Transform> children = new List<Transform>();
         public Quaternion localRotation = Quaternion.identity;
+        public Vector3 localPosition;
+        public Vector3 localScale = Vector3.one;
 
         public Transform parent
         {

@@ -25,9 +25,10 @@ if(SMPL_MCS AND SMPL_MONO)
   set(SMPL_CSHARP_EXE ${SMPL_CSHARP_DIR}/SmplCorrectivesTests.exe)
   add_custom_command(OUTPUT ${SMPL_CSHARP_EXE}
     COMMAND ${SMPL_MCS} -nologo -warnaserror+ -optimize+ -define:SMPL_EXPORT_MONO_TESTS
-            -out:${SMPL_CSHARP_EXE} ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs
+            -out:${SMPL_CSHARP_EXE} ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs ${CMAKE_CURRENT_LIST_DIR}/UnityAnimationStub.cs
             ${SMPL_UNITY_RUNTIME} ${SMPL_UNITY_TEST_SOURCES}
-    DEPENDS ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs ${SMPL_UNITY_RUNTIME} ${SMPL_UNITY_TEST_SOURCES}
+    DEPENDS ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs ${CMAKE_CURRENT_LIST_DIR}/UnityAnimationStub.cs
+            ${SMPL_UNITY_RUNTIME} ${SMPL_UNITY_TEST_SOURCES}
     COMMENT "Compiling the Unity runtime and its tests with mcs")
   add_custom_target(smpl-csharp-tests ALL DEPENDS ${SMPL_CSHARP_EXE})
   add_test(NAME unity_csharp COMMAND ${SMPL_MONO} ${SMPL_CSHARP_EXE} ${SMPL_CSHARP_REFERENCE_JSON})
@@ -48,8 +49,9 @@ if(SMPL_MCS AND SMPL_MONO)
   file(GLOB SMPL_UNITY_EDITOR_SOURCES CONFIGURE_DEPENDS
        ${PROJECT_SOURCE_DIR}/unity/Editor/*.cs ${PROJECT_SOURCE_DIR}/unity/Tests/Editor/*.cs
        ${PROJECT_SOURCE_DIR}/unity/Samples~/Demo/*.cs)
-  set(SMPL_EDITMODE_STUB_SOURCES ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs ${CMAKE_CURRENT_LIST_DIR}/UnityEditorStub.cs
-      ${CMAKE_CURRENT_LIST_DIR}/EditModeRunner.cs ${CMAKE_CURRENT_LIST_DIR}/DemoTests.cs)
+  set(SMPL_EDITMODE_STUB_SOURCES ${CMAKE_CURRENT_LIST_DIR}/UnityEngineStub.cs ${CMAKE_CURRENT_LIST_DIR}/UnityAnimationStub.cs
+      ${CMAKE_CURRENT_LIST_DIR}/UnityEditorStub.cs ${CMAKE_CURRENT_LIST_DIR}/EditModeRunner.cs
+      ${CMAKE_CURRENT_LIST_DIR}/DemoTests.cs ${CMAKE_CURRENT_LIST_DIR}/HumanoidTests.cs)
   set(SMPL_EDITMODE_EXE ${SMPL_CSHARP_DIR}/SmplEditModeTests.exe)
   add_custom_command(OUTPUT ${SMPL_EDITMODE_EXE}
     COMMAND ${SMPL_MCS} -nologo -warnaserror+ -out:${SMPL_EDITMODE_EXE} -r:System.Core.dll
@@ -61,7 +63,18 @@ if(SMPL_MCS AND SMPL_MONO)
 else()
   add_test(NAME unity_editmode_stub COMMAND ${CMAKE_COMMAND} -E false)
 endif()
-set_tests_properties(unity_editmode_stub PROPERTIES LABELS csharp)
+
+# The bodies the Humanoid tests (HumanoidTests.cs, in the EditMode exe) read:
+# the SMPL, SMPL-H and SMPL-X fixtures exported with default options.
+set(SMPL_HUMANOID_DIR ${SMPL_CSHARP_DIR}/humanoid)
+file(MAKE_DIRECTORY ${SMPL_HUMANOID_DIR})
+foreach(kind smpl smplh smplx)
+  add_test(NAME unity_humanoid_export.${kind}
+    COMMAND smpl-export --model ${SMPL_FIXTURE_DIR}/models/${kind}_small.npz --out ${SMPL_HUMANOID_DIR}/${kind}.glb)
+  set_tests_properties(unity_humanoid_export.${kind} PROPERTIES LABELS csharp FIXTURES_SETUP unity_humanoid_bodies)
+endforeach()
+set_tests_properties(unity_editmode_stub PROPERTIES LABELS csharp FIXTURES_REQUIRED unity_humanoid_bodies
+  ENVIRONMENT SMPL_HUMANOID_DIR=${SMPL_HUMANOID_DIR})
 
 # The C++ reference data shipped for Unity's Test Runner
 # (unity/Tests/Data/csharp_reference_smpl.json) must equal a fresh run on the
