@@ -13,8 +13,9 @@ scripts/check-version.py.
 import os
 
 import bpy
-from bpy.props import StringProperty
+from bpy.props import BoolProperty, StringProperty
 from bpy_extras.io_utils import ImportHelper
+from mathutils import Matrix
 
 from . import correctives
 
@@ -83,15 +84,112 @@ class SMPL_OT_disable(bpy.types.Operator):
         return {"FINISHED"}
 
 
-def import_asset(filepath):
+PROP_GROUND_OFFSET = "smpl_ground_offset_m"  # on the armature: the lift feet on ground applied
+
+
+def _clip_fps(filepath):
+    """The first baked clip's fps from the file's metadata (animations[0].fps), or None."""
+    meta = correctives.metadata_from_file(filepath) or {}
+    clips = meta.get("animations")
+    if isinstance(clips, list) and clips and isinstance(clips[0], dict):
+        fps = clips[0].get("fps")
+        if isinstance(fps, (int, float)) and fps > 0:
+            return float(fps)
+    return None
+
+
+def _set_scene_fps(scene, fps):
+    """scene.render.fps / fps_base = fps (integer fps, fps_base for rates such as 29.97)."""
+    scene.render.fps = max(1, int(round(fps)))
+    scene.render.fps_base = scene.render.fps / fps
+
+
+def _action_range(objects):
+    """(first, last) integer frame covering the active actions of the objects
+    and of their shape keys, or None if none is animated."""
+    import math
+    ranges = []
+    for obj in objects:
+        for owner in (obj, getattr(getattr(obj, "data", None), "shape_keys", None)):
+            ad = getattr(owner, "animation_data", None)
+            if ad is not None and ad.action is not None:
+                ranges.append(tuple(ad.action.frame_range))
+    if not ranges:
+        return None
+    return int(math.floor(min(r[0] for r in ranges))), int(math.ceil(max(r[1] for r in ranges)))
+
+
+def _lowest_z(meshes, depsgraph):
+    """Lowest world z (metres, Blender's Z up) of the evaluated meshes."""
+    lowest = float("inf")
+    for mesh_obj in meshes:
+        ev = mesh_obj.evaluated_get(depsgraph)
+        me = ev.to_mesh()
+        if len(me.vertices):
+            import numpy as np
+            co = np.empty(len(me.vertices) * 3, dtype=np.float64)
+            me.vertices.foreach_get("co", co)
+            m = np.array(ev.matrix_world)
+            z = co.reshape(-1, 3) @ m[2, :3] + m[2, 3]
+            lowest = min(lowest, float(z.min()))
+        ev.to_mesh_clear()
+    return lowest
+
+
+def put_on_ground(scene, objects, frames=None):
+    """Lift the imported objects (their top-level ones, as one rigid move
+    along world Z) so that the lowest vertex of their meshes is at z = 0:
+    over every frame of `frames` (first, last) if given (the clip, posed with
+    its correctives), else in the current pose. Bones and shape keys are not
+    touched, so the correctives are unaffected. Returns the lift in metres
+    (also stored as the armature property smpl_ground_offset_m), or None if
+    there is no mesh."""
+    meshes = [o for o in objects if o.type == "MESH"]
+    if not meshes:
+        return None
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    if frames is None:
+        lowest = _lowest_z(meshes, depsgraph)
+    else:
+        current = scene.frame_current
+        lowest = float("inf")
+        for frame in range(frames[0], frames[1] + 1):
+            scene.frame_set(frame)
+            lowest = min(lowest, _lowest_z(meshes, bpy.context.evaluated_depsgraph_get()))
+        scene.frame_set(current)
+    if lowest == float("inf"):
+        return None
+    inside = set(objects)
+    for obj in objects:
+        if obj.parent not in inside:
+            obj.matrix_world = Matrix.Translation((0.0, 0.0, -lowest)) @ obj.matrix_world
+    for obj in objects:
+        if obj.type == "ARMATURE":
+            obj[PROP_GROUND_OFFSET] = -lowest
+    bpy.context.view_layer.update()
+    return -lowest
+
+
+def import_asset(filepath, feet_on_ground=False, set_timeline=True):
     """Import a .glb/.gltf/.fbx written by smpl-export, bind and enable its
-    correctives. Returns the list of (armature, mesh) pairs bound."""
+    correctives. Returns the list of (armature, mesh) pairs bound.
+
+    set_timeline: for a file with a baked clip, the scene rate is set to the
+    clip's fps (metadata animations[0].fps) before a glTF import (the glTF
+    importer keys at t x scene fps; the FBX importer sets it from the file),
+    and the scene's frame range to the imported actions' range.
+    feet_on_ground: lift the body so its lowest vertex is at z = 0 over the
+    whole clip (or in the rest pose without one); see put_on_ground."""
     ext = os.path.splitext(filepath)[1].lower()
+    scene = bpy.context.scene
     before = set(bpy.data.objects)
     if ext in (".glb", ".gltf"):
         import numpy as np
         if not hasattr(np, "bool"):  # Debian numpy vs Blender 3.4's glTF importer
             np.bool = bool
+        fps = _clip_fps(filepath) if set_timeline else None
+        if fps is not None:
+            _set_scene_fps(scene, fps)
         bpy.ops.import_scene.gltf(filepath=filepath)
     elif ext == ".fbx":
         bpy.ops.import_scene.fbx(filepath=filepath)
@@ -103,6 +201,12 @@ def import_asset(filepath):
     for arm, mesh in pairs:
         correctives.bind(arm, mesh, source_path=filepath)
         correctives.enable(arm, mesh)
+    frames = _action_range(new)
+    if set_timeline and frames is not None:
+        scene.frame_start, scene.frame_end = frames
+        scene.frame_set(frames[0])
+    if feet_on_ground:
+        put_on_ground(scene, new, frames)
     return pairs
 
 
@@ -117,10 +221,17 @@ class SMPL_OT_import(bpy.types.Operator, ImportHelper):
         return context.mode == "OBJECT"
 
     filter_glob: StringProperty(default="*.glb;*.gltf;*.fbx", options={"HIDDEN"})
+    feet_on_ground: BoolProperty(
+        name="Feet on ground", default=True,
+        description="Lift the body so its lowest point (over the whole clip, or in the rest pose) is at Z = 0")
+    set_timeline: BoolProperty(
+        name="Set timeline to clip", default=True,
+        description="Set the scene's frame rate and frame range to the imported clip's")
 
     def execute(self, context):
         try:
-            pairs = import_asset(self.filepath)
+            pairs = import_asset(self.filepath, feet_on_ground=self.feet_on_ground,
+                                 set_timeline=self.set_timeline)
         except (ValueError, RuntimeError) as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}

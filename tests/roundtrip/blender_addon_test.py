@@ -95,7 +95,7 @@ def main():
     args = parse_args()
     install(args.zip)
     from smpl_correctives import correctives
-    bpy.ops.smpl.import_asset(filepath=os.path.abspath(args.asset))
+    bpy.ops.smpl.import_asset(filepath=os.path.abspath(args.asset), feet_on_ground=False)  # world positions as exported
     arms = [o for o in bpy.data.objects if o.type == "ARMATURE"]
     meshes = [o for o in bpy.data.objects if o.type == "MESH" and o.data.shape_keys]
     rt.check(len(arms) == 1 and len(meshes) == 1, "import: expected one armature and one mesh")

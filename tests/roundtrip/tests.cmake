@@ -8,7 +8,8 @@
 #                                add-on and compares with the reference (1e-5 m)
 #   roundtrip.validator          Khronos glTF validator on every exported GLB
 #   blender.addon.*              the add-on alone, on GLBs written by numpy
-#                                (synthetic_asset.py), and installed from its zip
+#                                (synthetic_asset.py), and installed from its zip;
+#                                blender.addon.ground: feet on ground and the timeline on import
 #
 # Blender and node are required: when missing the tests fail, they never skip.
 # Labels: blender, validator.
@@ -172,6 +173,26 @@ add_test(NAME blender.addon.install
 set_tests_properties(blender.addon.install PROPERTIES
   FIXTURES_REQUIRED "synthetic_55_m55;roundtrip_dir" LABELS blender)
 add_dependencies(smpl-reference blender_addon)  # the install test needs the zip built
+
+# The import options "Feet on ground" and "Set timeline to clip"
+# (blender_addon_ground.py): a 60-frame clip and a static body, the model's
+# own weights (all influences, truncated = unchanged) so numpy is the reference.
+set(SMPL_GROUND_COMMON --model ${SMPL_FIXTURE_DIR}/models/smpl_small.npz --max-influences all
+    --skin-weights truncated --quiet)
+add_test(NAME blender.addon.ground.export_anim
+  COMMAND smpl-export ${SMPL_GROUND_COMMON} --motion ${SMPL_FIXTURE_DIR}/motions/smpl_72.npz
+          --out ${SMPL_ROUNDTRIP_DIR}/ground_anim.glb)
+add_test(NAME blender.addon.ground.export_static
+  COMMAND smpl-export ${SMPL_GROUND_COMMON} --out ${SMPL_ROUNDTRIP_DIR}/ground_static.glb)
+set_tests_properties(blender.addon.ground.export_anim blender.addon.ground.export_static PROPERTIES
+  FIXTURES_SETUP addon_ground FIXTURES_REQUIRED roundtrip_dir LABELS blender)
+add_test(NAME blender.addon.ground
+  COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_addon_ground.py --
+          --addon-dir ${PROJECT_SOURCE_DIR}/blender --model ${SMPL_FIXTURE_DIR}/models/smpl_small.npz
+          --motion ${SMPL_FIXTURE_DIR}/motions/smpl_72.npz --asset ${SMPL_ROUNDTRIP_DIR}/ground_anim.glb
+          --static ${SMPL_ROUNDTRIP_DIR}/ground_static.glb)
+set_tests_properties(blender.addon.ground PROPERTIES
+  FIXTURES_REQUIRED "addon_ground;roundtrip_dir" LABELS blender TIMEOUT 600)
 
 # Baked animation (motions) through Blender and the validator; batch CLI.
 include(${CMAKE_CURRENT_LIST_DIR}/anim_tests.cmake)
