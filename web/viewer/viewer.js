@@ -2,8 +2,14 @@
 // baked animations, toggle the pose correctives, pose joints with sliders,
 // and show the counts and the per-frame corrective weights.
 //
+// The floor grid is at the body's lowest point over its clip (the rest
+// pose's for a file without one), so a body exported with --origin floor or
+// an AMASS clip (feet at y = 0 in its world) stands on it; the camera frames
+// the box the body sweeps over the whole clip, so it stays in view while
+// playing.
+//
 // window.smplViewer (for scripts and the browser test): {load(files),
-// info(), setPose(axisAngles), vertexWorld(i), correctives}.
+// info(), setPose(axisAngles), vertexWorld(i), framing(), camera, correctives}.
 import * as THREE from 'three';
 import { FBXLoader } from 'three/addons/loaders/FBXLoader.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
@@ -11,6 +17,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { applyFbxUnitScale, bindCorrectives, metadataFromGltf } from 'smpl-correctives';
 
 const $ = (id) => document.getElementById(id);
+const MAX_BOUND_SAMPLES = 300;  // clip times skinned on the CPU for the animated bounds
 const SLIDER_JOINTS = [  // joint, axis (model space), range in radians
   ['spine1', 'x', 1.0], ['left_shoulder', 'z', 1.5], ['right_shoulder', 'z', 1.5], ['left_elbow', 'y', 2.0],
   ['right_elbow', 'y', 2.0], ['left_hip', 'x', 1.5], ['left_knee', 'x', 2.2], ['right_knee', 'x', 2.2],
@@ -35,7 +42,7 @@ controls.update();
 const clock = new THREE.Clock();
 
 const state = { root: null, mesh: null, correctives: null, mixer: null, action: null, playing: false,
-  bones: {}, restQuaternions: {}, metadata: null, info: {}, lastWeightsDraw: 0 };
+  bones: {}, restQuaternions: {}, metadata: null, info: {}, lastWeightsDraw: 0, bounds: null, floorY: 0 };
 
 function resize() {
   const w = view.clientWidth, h = view.clientHeight;
@@ -103,7 +110,7 @@ function show(root, metadata, animations, name) {
   fillClips(animations);
   fillSliders();
   status(warnings.join('\n'));
-  frameCamera(mesh);
+  frameCamera(animatedBounds(mesh));
 }
 
 function modelVertexCount(mesh, format) {
@@ -149,7 +156,15 @@ function fillClips(animations) {
   select.innerHTML = '';
   animations.forEach((clip, i) => select.add(new Option(`${clip.name || 'clip ' + i} (${clip.duration.toFixed(2)} s)`, i)));
   select.disabled = animations.length === 0;
-  if (animations.length) selectClip(0);
+  $('play').disabled = animations.length === 0;
+  $('scrub').disabled = animations.length === 0;
+  if (animations.length) {
+    selectClip(0);
+  } else {  // a file without clips: nothing to play, scrub back at 0
+    $('scrub').max = 1;
+    $('scrub').value = 0;
+    setPlaying(false);
+  }
 }
 
 function selectClip(index) {
@@ -220,16 +235,55 @@ function vertexWorld(i) {
   return [v.x, v.y, v.z];
 }
 
-function frameCamera(mesh) {
-  mesh.computeBoundingBox();  // SkinnedMesh: the posed vertices (three's CPU skinning)
-  const box = mesh.boundingBox.clone().applyMatrix4(mesh.matrixWorld);
-  const center = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3()).length();
-  controls.target.copy(center);
-  camera.position.copy(center).add(new THREE.Vector3(0, size * 0.15, size * 1.6));
-  grid.scale.setScalar(Math.max(size, 0.1) / 2);
+/** World box of the skinned mesh in its current pose (three's CPU skinning of every vertex). */
+function posedBox(mesh) {
+  state.root.updateMatrixWorld(true);
+  mesh.computeBoundingBox();  // SkinnedMesh: the posed vertices, in the mesh's space
+  return mesh.boundingBox.clone().applyMatrix4(mesh.matrixWorld);
+}
+
+/**
+ * The box (scene units, metres) the body sweeps over the selected clip: the
+ * union of its posed boxes at the clip's key times (at most
+ * MAX_BOUND_SAMPLES of them, evenly spread, first and last included), or the
+ * current pose's box without a clip. Leaves the clip at time 0.
+ */
+function animatedBounds(mesh) {
+  if (!state.action) return posedBox(mesh);
+  const clip = state.action.getClip();
+  const times = new Set([0, clip.duration]);
+  for (const track of clip.tracks) for (const t of track.times) times.add(t);
+  let sorted = [...times].filter((t) => t >= 0 && t <= clip.duration).sort((a, b) => a - b);
+  if (sorted.length > MAX_BOUND_SAMPLES) {
+    const n = MAX_BOUND_SAMPLES - 1;
+    sorted = [...new Set(Array.from({ length: n + 1 }, (_, i) => sorted[Math.round((i * (sorted.length - 1)) / n)]))];
+  }
+  const box = new THREE.Box3();
+  for (const t of sorted) {
+    state.mixer.setTime(t);
+    box.union(posedBox(mesh));
+  }
+  state.mixer.setTime(0);
+  return box;
+}
+
+/** Floor grid at the box's lowest point, camera on the box's centre, far enough to see all of it. */
+function frameCamera(box) {
+  const center = box.getCenter(new THREE.Vector3()), extent = box.getSize(new THREE.Vector3());
+  const size = Math.max(extent.length(), 0.1);
+  state.bounds = box.clone();
+  state.floorY = box.min.y;
+  grid.scale.setScalar(Math.max(extent.x, extent.z, size / 2) / 2 * 1.5);
   grid.position.set(center.x, box.min.y, center.z);
+  // Distance so the box's bounding sphere fits the vertical and horizontal field of view.
+  const vfov = THREE.MathUtils.degToRad(camera.fov) / 2;
+  const hfov = Math.atan(Math.tan(vfov) * camera.aspect);
+  const distance = (size / 2) * 1.1 / Math.sin(Math.min(vfov, hfov));
+  const direction = new THREE.Vector3(0, 0.15, 1).normalize();
+  controls.target.copy(center);
+  camera.position.copy(center).addScaledVector(direction, distance);
   camera.near = size / 100;
-  camera.far = size * 100;
+  camera.far = size * 100 + distance;
   camera.updateProjectionMatrix();
   controls.update();
 }
@@ -282,7 +336,10 @@ for (const target of [drop, view]) {
   });
 }
 $('play').addEventListener('click', () => setPlaying(!state.playing));
-$('clip').addEventListener('change', (e) => selectClip(Number(e.target.value)));
+$('clip').addEventListener('change', (e) => {
+  selectClip(Number(e.target.value));
+  frameCamera(animatedBounds(state.mesh));
+});
 $('scrub').addEventListener('input', (e) => {
   if (!state.mixer || !state.action) return;
   $('pose-mode').checked = false;
@@ -299,8 +356,18 @@ $('pose-mode').addEventListener('change', (e) => {
   }
 });
 
+/** Where the view is: floor height, the animated bounds (min, max), play state. */
+function framing() {
+  const b = state.bounds;
+  return { floorY: state.floorY, gridY: grid.position.y, playing: state.playing,
+    time: state.action ? state.action.time : 0, hasClip: !!state.action,
+    bounds: b ? { min: b.min.toArray(), max: b.max.toArray() } : null };
+}
+
 window.smplViewer = {
-  load, setPose, vertexWorld,
+  load, setPose, vertexWorld, framing, camera, grid,
+  /** Sets the clip's time (seconds), paused; for scripts and tests. */
+  setTime: (t) => { if (state.action) { setPlaying(false); state.mixer.setTime(t); step(0); } },
   info: () => ({ ...state.info }),
   get correctives() { return state.correctives; },
 };
