@@ -20,19 +20,22 @@ if [[ $(id -u) -eq 0 ]]; then chroot_cmd=(chroot); else chroot_cmd=(unshare -r c
 rm -rf "$work" && mkdir -p "$work/pkg" "$work/host"
 (cd "$work/host" && "$dynamic" --model builtin --out body.glb --quiet)
 
-(cd "$work/pkg" && cpack -G "TGZ;DEB" --config "$build/CPackConfig.cmake" >cpack.log 2>&1) ||
+(cd "$work/pkg" && cpack -G "TGZ;DEB" --config "$build/CPackConfig.cmake" -B "$work/pkg" >cpack.log 2>&1) ||
   fail "cpack: $(tail -5 "$work/pkg/cpack.log")"
 name=smpl-export-$version-linux-x86_64
 tgz=$work/pkg/$name.tar.gz deb=$work/pkg/smpl-export_${version}_amd64.deb
 [[ -f $tgz && -f $deb ]] || fail "cpack wrote $(ls "$work/pkg" | tr '\n' ' '), expected $name.tar.gz and smpl-export_${version}_amd64.deb"
 
 # The tarball: layout, a static binary, and it runs in an empty root.
+tar -tzf "$tgz" >"$work/tgz.list"
 for f in bin/smpl-export share/man/man1/smpl-export.1 share/bash-completion/completions/smpl-export \
          share/smpl-export/blender/smpl_correctives.zip share/doc/smpl-export/LICENSE; do
-  tar -tzf "$tgz" | grep -qx "$name/$f" || fail "$tgz lacks $name/$f"
+  grep -qx "$name/$f" "$work/tgz.list" || fail "$tgz lacks $name/$f"
 done
 mkdir -p "$work/troot" && tar -xzf "$tgz" -C "$work/troot"
-readelf -lW "$work/troot/$name/bin/smpl-export" | grep -q "program interpreter" && fail "$name/bin/smpl-export is not static"
+if readelf -lW "$work/troot/$name/bin/smpl-export" | grep "program interpreter"; then
+  fail "$name/bin/smpl-export is not static"
+fi
 "${chroot_cmd[@]}" "$work/troot" "/$name/bin/smpl-export" --model builtin --out body.glb --quiet ||
   fail "$name/bin/smpl-export in an empty root: exit $?"
 cmp "$work/troot/body.glb" "$work/host/body.glb" || fail "tarball binary: body.glb differs from the dynamic build's"
@@ -49,7 +52,8 @@ root=$work/root
 mkdir -p "$root/var/lib/dpkg/info" "$root/var/lib/dpkg/updates" "$root/tmp"
 : >"$root/var/lib/dpkg/status"
 dpkg --root="$root" --log=/dev/null -i "$deb" >"$work/dpkg.log" 2>&1 || fail "dpkg -i: $(tail -5 "$work/dpkg.log")"
-dpkg --root="$root" -s smpl-export | grep -qx "Status: install ok installed" || fail "dpkg: smpl-export not installed"
+dpkg --root="$root" -s smpl-export >"$work/dpkg.status" || fail "dpkg -s: smpl-export not installed"
+grep -qx "Status: install ok installed" "$work/dpkg.status" || fail "dpkg: $(grep Status "$work/dpkg.status")"
 for f in usr/bin/smpl-export usr/share/man/man1/smpl-export.1 usr/share/bash-completion/completions/smpl-export \
          usr/share/zsh/vendor-completions/_smpl-export usr/share/fish/vendor_completions.d/smpl-export.fish \
          usr/share/doc/smpl-export/LICENSE usr/share/smpl-export/blender/smpl_correctives.zip \
@@ -63,7 +67,7 @@ for g in body.glb body.glb.smpl.json; do
   cmp "$root/$g" "$work/host/$g" || fail ".deb binary: $g differs from the dynamic build's"
 done
 dpkg --root="$root" --log=/dev/null -r smpl-export >>"$work/dpkg.log" 2>&1 || fail "dpkg -r: $(tail -5 "$work/dpkg.log")"
-left=$(cd "$root" && find usr -type f 2>/dev/null | head -5)
+left=$(cd "$root" && find . -type f -not -path './var/lib/dpkg/*' -not -name 'body.glb*' | sort | tr '\n' ' ')
 [[ -z $left ]] || fail "dpkg -r left files: $left"
 echo "cpack: $name.tar.gz ($(stat -c %s "$tgz") bytes) runs in an empty root; smpl-export_${version}_amd64.deb" \
      "($(stat -c %s "$deb") bytes) installs with dpkg into a fresh root, its quick start writes the dynamic build's bytes, dpkg -r removes it"

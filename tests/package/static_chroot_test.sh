@@ -14,10 +14,10 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 [[ -x $static ]] || fail "no static binary at '$static' (configure the tests with -DSMPL_STATIC_BUILD_DIR=<a SMPL_STATIC=ON build>; scripts/test.sh builds build-static)"
 
 # No program interpreter, no shared library.
-if readelf -lW "$static" | grep -q "Requesting program interpreter"; then
+if readelf -lW "$static" | grep "Requesting program interpreter"; then
   fail "$static asks for a program interpreter (not static)"
 fi
-if readelf -dW "$static" 2>/dev/null | grep -q "(NEEDED)"; then
+if readelf -dW "$static" 2>/dev/null | grep "(NEEDED)"; then
   fail "$static needs shared libraries: $(readelf -dW "$static" | grep NEEDED | tr -s ' ' | tr '\n' ';')"
 fi
 

@@ -9,3 +9,23 @@
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
 #include <tiny_gltf.h>
+
+namespace tinygltf {
+
+// The default image callbacks, which the other files (compiled without the
+// macros above, as for the shared library) name in TinyGLTF's constructor.
+// smpl-export's models have no images, so these are never called; if one is,
+// it fails with a message instead of decoding without stb_image.
+bool LoadImageData(Image*, const int, std::string* err, std::string*, int, int,
+                   const unsigned char*, int, void*) {
+  if (err) *err += "images are not supported by this build (SMPL_STATIC)\n";
+  return false;
+}
+
+bool WriteImageData(const std::string*, const std::string*, const Image*, bool,
+                    std::string* out_uri, void*) {
+  if (out_uri) out_uri->clear();
+  return false;
+}
+
+}  // namespace tinygltf
