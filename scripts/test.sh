@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh Debian machine: install dependencies,
-# build twice (Release for the integration tests; clang ASan + UBSan for the
-# unit tests and the fuzzers), run each libFuzzer target briefly, then every
+# build three times (Release for the integration tests; the static release
+# binary, from the same objects; clang ASan + UBSan for the unit tests and the
+# fuzzers), run each libFuzzer target briefly, then every
 # CTest test (unit tests sanitized; CLI, reliability, headless-Blender round
 # trips, glTF validator, web, runtimes, C# on the Release binaries); ctest's
 # summaries and then the wall time of each phase are the last things printed.
@@ -36,20 +37,29 @@ phase "web (npm ci)" bash -c 'cd web && npm ci --no-audit --no-fund --loglevel=e
 # ccache (a test dependency) makes rebuilds of an unchanged tree nearly free.
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-# Two builds, each source file compiled once per build:
+# Three builds, each source file compiled once per build:
 #  build-test  Release (the quick start's flags): smpl-export, the tools and the
 #              integration tests (CLI, reliability, Blender, validator, web,
-#              runtimes, C#), which so run the binaries users run.
+#              runtimes, C#, package), which so run the binaries users run.
+#  build-static  the release binary (SMPL_STATIC=ON: no shared library, no
+#              loader) and its installed files only; compiled with
+#              build-test's flags, so its objects come from ccache. The
+#              package tests of build-test run it in an empty chroot and
+#              install its .deb.
 #  build-san   clang with AddressSanitizer + UBSan and libFuzzer coverage on
 #              every library: the unit tests and the fuzz targets share it.
 #              -O1 -g1 (ASan's recommended level, line tables for its stack
 #              traces); clang compiles this configuration in a third to a half
 #              of g++'s CPU time (demo_body_test.cpp: 21 s vs 58 s).
-# Both use one fixture folder (generated once, by the first build).
+# build-test and build-san use one fixture folder (generated once, by the first build).
 # Options given explicitly: a build-test left by an older test.sh (sanitized) is reconfigured.
 cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Release -DSMPL_SANITIZE=OFF -DSMPL_FUZZ=OFF \
-  -DSMPL_RELIABILITY_EXE= -DSMPL_TEST_SET=integration "${launcher[@]}" >/dev/null
+  -DSMPL_RELIABILITY_EXE= -DSMPL_TEST_SET=integration -DSMPL_STATIC_BUILD_DIR="$PWD/build-static" \
+  "${launcher[@]}" >/dev/null
 phase "release build (integration)" cmake --build build-test -j"$jobs"
+cmake -S . -B build-static -DCMAKE_BUILD_TYPE=Release -DSMPL_STATIC=ON -DSMPL_BUILD_TESTS=OFF \
+  "${launcher[@]}" >/dev/null
+phase "static build (release binary)" cmake --build build-static -j"$jobs"
 CC=clang CXX=clang++ cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSMPL_FUZZ=ON -DSMPL_TEST_SET=unit \
   -DSMPL_FIXTURE_DIR="$PWD/build-test/fixtures" "${launcher[@]}" >/dev/null

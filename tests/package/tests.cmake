@@ -1,0 +1,20 @@
+# Packaging (packaging/CMakeLists.txt, scripts/release.sh): the generated man
+# page and completions, the cmake --install tree of this build (label cli),
+# and the static binary and its packages (label package). The static tests
+# need a SMPL_STATIC=ON build beside this one (scripts/test.sh builds
+# build-static and passes it); without one they fail, saying so.
+set(SMPL_STATIC_BUILD_DIR "" CACHE PATH "A SMPL_STATIC=ON build whose binary and packages the package tests check")
+add_test(NAME package.completions
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/completions_test.py $<TARGET_FILE:smpl-export>
+          ${CMAKE_BINARY_DIR}/completions ${CMAKE_BINARY_DIR}/man/smpl-export.1)
+add_test(NAME package.install
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/install_test.sh ${CMAKE_BINARY_DIR} ${PROJECT_VERSION}
+          ${CMAKE_CURRENT_BINARY_DIR}/package_install)
+set_tests_properties(package.completions package.install PROPERTIES LABELS cli)
+add_test(NAME package.static_chroot
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/static_chroot_test.sh ${SMPL_STATIC_BUILD_DIR}/cli/smpl-export
+          $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/package_static_chroot)
+add_test(NAME package.cpack
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/cpack_test.sh ${SMPL_STATIC_BUILD_DIR} $<TARGET_FILE:smpl-export>
+          ${PROJECT_VERSION} ${CMAKE_CURRENT_BINARY_DIR}/package_cpack)
+set_tests_properties(package.static_chroot package.cpack PROPERTIES LABELS package)
