@@ -108,6 +108,7 @@ struct Context {
 // D_i (3 x |S|) of one vertex, or an empty matrix where the guard keeps the model's deltas.
 Eigen::MatrixXd fitVertex(const Context& c, Eigen::Index i,
                           const std::vector<Eigen::Index>& features) {
+  if (features.empty()) return Eigen::MatrixXd();  // moved by the root alone: nothing to refit
   const VertexPoses v = vertexPoses(c.model, c.body, c.skin, c.train, i);
   const Eigen::MatrixXd fs = selectRows(c.train.features, features);  // |S| x T
   Eigen::Matrix3Xd z(3, v.error.cols());  // rest-frame targets R_p^{-1} e_p

@@ -64,8 +64,8 @@ JointClass classify(const std::string& raw) {
   std::string rest = name;
   if (name.rfind("left_", 0) == 0) c.side = 1, rest = name.substr(5);
   if (name.rfind("right_", 0) == 0) c.side = -1, rest = name.substr(6);
-  if (c.side == 0) {
-    if (centralRanges().count(name)) c.kind = name;
+  if (c.side == 0 && centralRanges().count(name)) {
+    c.kind = name;
     return c;
   }
   if (rest.rfind("eye", 0) == 0) rest = "eye";
@@ -78,12 +78,17 @@ JointClass classify(const std::string& raw) {
   return c;
 }
 
+// A sided joint without a side in its name (MANO's wrist, index1, ...: a
+// file holds either hand) gets the union of both sides' ranges.
 JointRange rangeOf(const JointClass& c) {
   if (c.kind.empty()) return {{{-0.3, 0.3}, {-0.3, 0.3}, {-0.3, 0.3}}};
-  if (c.side == 0) return centralRanges().at(c.kind);
+  if (centralRanges().count(c.kind)) return centralRanges().at(c.kind);
   JointRange r = leftRanges().at(c.kind);
-  if (c.side < 0)
-    for (int a = 1; a < 3; ++a) r[a] = {-r[a].hi, -r[a].lo};
+  for (int a = 1; a < 3; ++a) {
+    const AxisRange mirrored{-r[a].hi, -r[a].lo};
+    if (c.side < 0) r[a] = mirrored;
+    if (c.side == 0) r[a] = {std::min(r[a].lo, mirrored.lo), std::max(r[a].hi, mirrored.hi)};
+  }
   return r;
 }
 

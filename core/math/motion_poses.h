@@ -24,7 +24,9 @@
 //   reach    per arm r: shoulder raises and swings forward, elbow bends;
 //   grip     per hand g: every finger joint curls together;
 //   lean     spine chain bends and twists, split over spine1..3 and neck.
-// Noise: uniform, 35% of each axis's half range. Unknown joint names get
+// Noise: uniform, 35% of each axis's half range. Joints named without a
+// side (MANO: wrist, index1, ...) get the union of both sides' ranges and
+// no shared activity. Unknown joint names get
 // +-0.3 rad per axis, independent. The root (pelvis) orientation is uniform
 // in +-pi about every axis (it moves the body rigidly). Random numbers come
 // from splitmix64 (pose_sampler.h): the same seed gives the same poses on
