@@ -162,13 +162,23 @@ const std::vector<OptionSpec> kOptions = {
     {"--skin-weights", nullptr, "truncated|optimized", Applies::Any, nullptr,
      "truncated: the N largest weights, renormalised; optimized (default): the best-fitting N "
      "of the vertex's largest weights, with weights fitted to the unpruned model over 48 "
-     "training poses (lower error on held-out poses; the summary shows both)",
+     "motion-like training poses (lower error on held-out poses; the summary shows both)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--skin-weights", {"truncated", "optimized"});
        if (!c) return Status(c.error());
        return s->request.skin_weights =
                   *c == 0 ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized,
               Status();
+     }},
+    {"--corrective-refit", nullptr, "on|off", Applies::Any, nullptr,
+     "on (default): refit the corrective deltas of vertices whose influences were cut so that "
+     "the exported skin + correctives reproduce the unpruned model (240 motion-like training "
+     "poses; a vertex keeps the model's deltas where the refit is worse on validation poses); "
+     "off: the model's posedirs as they are. The summary shows the error with and without",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--corrective-refit", {"on", "off"});
+       if (!c) return Status(c.error());
+       return s->request.corrective_refit = *c == 0, Status();
      }},
     {"--correctives", nullptr, "all|none", Applies::Any, nullptr,
      "pose-corrective morph targets (default all)",

@@ -22,7 +22,11 @@ void printSummary(const std::string& out, const ExportReport& r) {
         "%.3f mm",
         r.max_influences, err.poses, skinWeightMethodName(r.options.skin_weights), err.mean_m * 1e3,
         err.max_m * 1e3);
-    if (r.options.skin_weights != SkinWeightMethod::Truncated)
+    if (err.refit) std::printf(" with corrective refit");
+    if (err.refit)
+      std::printf("; without refit mean %.3f mm, max %.3f mm", err.without_refit.mean_m * 1e3,
+                  err.without_refit.max_m * 1e3);
+    if (r.options.skin_weights != SkinWeightMethod::Truncated || err.refit)
       std::printf("; truncated mean %.3f mm, max %.3f mm", err.truncated.mean_m * 1e3,
                   err.truncated.max_m * 1e3);
     std::printf("\n");

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/math/corrective_refit.h"
 #include "core/memory_budget.h"
 
 namespace smpl {
@@ -154,6 +155,10 @@ struct Asset {
   // needs_mesh = false): `mesh` is empty and validateAssetStructure does not
   // require one. Last: keeps aggregate initialisers of the fields above valid.
   bool skeleton_only = false;
+  // The refitted corrective rows the morph targets carry (empty: posedirs
+  // as is), kept so the error report measures what was written; writers
+  // ignore it (the targets already hold the deltas).
+  CorrectiveRefit corrective_refit;
 };
 
 }  // namespace smpl

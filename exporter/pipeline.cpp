@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/load/uv_source.h"
+#include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
 #include "exporter/corrective_basis.h"
@@ -56,6 +57,21 @@ MorphTarget directionTarget(std::string name, const Eigen::MatrixXd& dirs, int c
   return t;
 }
 
+// Pose feature n's deltas as exported (the refitted rows where there are,
+// core/math/corrective_refit.h), divided by `scale`, as asset-vertex deltas.
+MorphTarget correctiveTarget(std::string name, const BodyModel& model,
+                             const CorrectiveRefit& refit, int n,
+                             const std::vector<int>& source_vertex, double scale) {
+  if (refit.empty()) return directionTarget(std::move(name), model.posedirs, n, source_vertex, scale);
+  MorphTarget t;
+  t.name = std::move(name);
+  t.deltas.resize(static_cast<Eigen::Index>(source_vertex.size()), 3);
+  for (size_t i = 0; i < source_vertex.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      t.deltas(i, c) = static_cast<float>(refit.delta(model, 3 * source_vertex[i] + c, n) / scale);
+  return t;
+}
+
 // Unit encoding of feature n: weight = 0.5 f + offset keeps weights in [0, 1].
 CorrectiveLayout encodedLayout(const BodyModel& model, int n, CorrectiveEncoding encoding) {
   CorrectiveLayout c{n, correctiveTargetName(model, n), 1.0, 0.0};
@@ -78,7 +94,8 @@ void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
 
 // Split encoding of feature n (pipeline.h): one rectified target per sign
 // the feature can take; delta = P_n / scale, so weight * delta = f P_n.
-void addSplitCorrective(const BodyModel& model, int n, Asset* asset) {
+void addSplitCorrective(const BodyModel& model, const CorrectiveRefit& refit, int n,
+                        Asset* asset) {
   const bool diagonal = (n % 9) / 3 == n % 3;
   const std::string name = correctiveTargetName(model, n);
   std::vector<CorrectiveLayout> parts;
@@ -89,14 +106,15 @@ void addSplitCorrective(const BodyModel& model, int n, Asset* asset) {
              CorrectiveLayout{n, name + "_neg", -1.0, 0.0, true}};
   for (const CorrectiveLayout& c : parts) {
     asset->mesh.morph_targets.push_back(
-        directionTarget(c.target, model.posedirs, n, asset->mesh.source_vertex, c.scale));
+        correctiveTarget(c.target, model, refit, n, asset->mesh.source_vertex, c.scale));
     asset->metadata.correctives.push_back(c);
   }
 }
 
-void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+void addCorrectives(const BodyModel& model, const ExportOptions& o, const CorrectiveRefit& refit,
+                    Asset* asset) {
   if (o.encoding == CorrectiveEncoding::Split) {
-    for (int n = 0; n < model.numPoseFeatures(); ++n) addSplitCorrective(model, n, asset);
+    for (int n = 0; n < model.numPoseFeatures(); ++n) addSplitCorrective(model, refit, n, asset);
     return;
   }
   SkinnedMesh& mesh = asset->mesh;
@@ -106,9 +124,9 @@ void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset
     const CorrectiveLayout c = encodedLayout(model, n, o.encoding);
     // weight * delta must equal f * P: delta = P / scale; the offset's
     // contribution at every pose is removed from the stored base mesh.
-    MorphTarget t = directionTarget(c.target, model.posedirs, n, mesh.source_vertex, c.scale);
+    MorphTarget t = correctiveTarget(c.target, model, refit, n, mesh.source_vertex, c.scale);
     t.rest_weight = static_cast<float>(c.offset);
-    if (c.offset != 0.0) shift += (c.offset / c.scale) * model.posedirs.col(n);
+    if (c.offset != 0.0) shift += (c.offset / c.scale) * refit.column(model, n);
     mesh.morph_targets.push_back(std::move(t));
     asset->metadata.correctives.push_back(c);
   }
@@ -118,6 +136,7 @@ void addCorrectives(const BodyModel& model, const ExportOptions& o, Asset* asset
 // K principal components instead of P targets (corrective_basis.h): the
 // scale/offset of each keeps its weight in [-1, 1] (Signed) or [0, 1] (Unit)
 // for every pose.
+// Fitted to the model's posedirs: a basis export is not refitted (refitsCorrectives).
 Status addCorrectiveBasis(const BodyModel& model, const ExportOptions& o, Asset* asset) {
   Result<CorrectiveBasisFit> fit = fitCorrectiveBasis(model.posedirs, o.corrective_basis);
   if (!fit) return fit.error();
@@ -144,13 +163,14 @@ Status addCorrectiveBasis(const BodyModel& model, const ExportOptions& o, Asset*
   return Status();
 }
 
-Status addMorphTargets(const BodyModel& model, const ExportOptions& o, Asset* asset) {
+Status addMorphTargets(const BodyModel& model, const ExportOptions& o,
+                       const CorrectiveRefit& refit, Asset* asset) {
   std::vector<MorphTarget>& targets = asset->mesh.morph_targets;
   const std::vector<int>& src = asset->mesh.source_vertex;
   if (o.correctives && o.corrective_basis > 0) {
     if (Status s = addCorrectiveBasis(model, o, asset); !s) return s;
   } else if (o.correctives) {
-    addCorrectives(model, o, asset);
+    addCorrectives(model, o, refit, asset);
   }
   // Counts beyond the model's directions are clamped (a precondition: the
   // request refuses them first, exporter/request/check_request.h).
@@ -247,7 +267,9 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
   fillMetadata(model, o, &asset.metadata);
   asset.metadata.max_influences = m;
-  if (Status s = addMorphTargets(model, o, &asset); !s) return s.error();
+  if (refitsCorrectives(o))
+    asset.corrective_refit = refitCorrectives(model, *body, skin, CorrectiveRefitOptions());
+  if (Status s = addMorphTargets(model, o, asset.corrective_refit, &asset); !s) return s.error();
   return asset;
 }
 

@@ -51,6 +51,11 @@ struct ExportOptions {
   int max_influences = 4;          // 1..K (clamped), or kAllInfluences
   SkinWeightMethod skin_weights = SkinWeightMethod::Optimized;  // --skin-weights
   bool correctives = true;                                      // one morph target per pose feature
+  // --corrective-refit: the corrective deltas of vertices whose influences
+  // were cut are refitted so that the exported skin + correctives reproduce
+  // the unpruned model (core/math/corrective_refit.h); false: posedirs as is.
+  // Applies to per-feature targets only (refitsCorrectives).
+  bool corrective_refit = true;
   CorrectiveEncoding encoding =
       CorrectiveEncoding::Auto;  // resolved by the caller; Auto acts as Signed here
   int corrective_basis = 0;      // > 0: K principal components of posedirs replace the P
@@ -66,6 +71,14 @@ struct ExportOptions {
   // no UVs, no skin (nothing fitted), no morph targets.
   bool mesh = true;
 };
+
+// Whether an export with `o` refits its correctives: corrective_refit, with
+// per-feature corrective targets (a --corrective-basis export keeps the
+// model's posedirs: its K components are a lossy fit of them, documented and
+// tested as such; the refit would change what they approximate).
+inline bool refitsCorrectives(const ExportOptions& o) {
+  return o.mesh && o.correctives && o.corrective_refit && o.corrective_basis == 0;
+}
 
 // The rest asset: skeleton, mesh, skin (exportSkin), morph targets. The
 // options' ranges are checked before, once, by the request

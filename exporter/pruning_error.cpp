@@ -6,6 +6,7 @@
 
 #include "core/math/forward.h"
 #include "core/math/forward_batch.h"
+#include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
 #include "exporter/export_skin.h"
@@ -22,35 +23,44 @@ ForwardInput shapeInput(const ExportOptions& options) {
   return input;
 }
 
-// The errors of several weight matrices on the same held-out poses, all
-// poses at once through the batched forward pass (forwardBatchSkins: the
-// corrective GEMM in float, once for the unpruned model and every weight
-// set; < 1e-6 m from forward(), far below the millimetres measured here).
+// One skin to measure: dense N x K weights, and for the refit its sparse
+// form and the refitted correctives (null: the model's).
+struct SkinCase {
+  Eigen::MatrixXd weights;
+  const SparseSkin* skin = nullptr;
+  const CorrectiveRefit* refit = nullptr;
+};
+
+// The errors of several skins on the same frames, all frames at once through
+// the batched forward pass (forwardBatchSkins: the corrective GEMM in float,
+// once for the unpruned model and every weight set; < 1e-6 m from forward(),
+// far below the millimetres measured here); a refit's change is added in
+// double (addRefitCorrection).
 Result<std::vector<SkinError>> measureSkinErrors(const BodyModel& model,
                                                  const ExportOptions& options,
-                                                 const std::vector<const Eigen::MatrixXd*>& weights,
-                                                 int poses) {
+                                                 const std::vector<SkinCase>& cases,
+                                                 const std::vector<Rotations>& frames) {
   const ForwardInput shape = shapeInput(options);
   Result<ShapedBody> body = shapeBody(model, shape.betas, shape.expression);
   if (!body) return body.error();
-  std::vector<Rotations> frames;
-  for (const Eigen::VectorXd& pose : samplePoses(model.numJoints(), poses, /*seed=*/20261124))
-    frames.push_back(rotationsFromAxisAngle(pose));
   std::vector<const Eigen::MatrixXd*> skins = {nullptr};  // the model's own weights first
-  for (const Eigen::MatrixXd* w : weights) {
-    if (w->rows() != model.numVertices() || w->cols() != model.numJoints())
+  for (const SkinCase& c : cases) {
+    if (c.weights.rows() != model.numVertices() || c.weights.cols() != model.numJoints())
       return makeError("skin weights override has the wrong shape");
-    skins.push_back(w);
+    skins.push_back(&c.weights);
   }
   BatchInput in;
   in.body = &*body;
   in.frames = &frames;
   in.block = 16;  // two blocks for the default 32 poses: both cores
   in.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const std::vector<Eigen::MatrixXd> posed = forwardBatchSkins(model, in, skins);
-  std::vector<SkinError> errs(weights.size());
+  std::vector<Eigen::MatrixXd> posed = forwardBatchSkins(model, in, skins);
+  std::vector<SkinError> errs(cases.size());
   const Eigen::Index n = model.numVertices();
-  for (size_t i = 0; i < weights.size(); ++i) {
+  const double count = static_cast<double>(frames.size()) * double(n);
+  for (size_t i = 0; i < cases.size(); ++i) {
+    if (cases[i].refit && cases[i].skin)
+      addRefitCorrection(model, *body, *cases[i].skin, *cases[i].refit, frames, &posed[i + 1]);
     double sum = 0.0;
     for (Eigen::Index t = 0; t < posed[0].cols(); ++t)
       for (Eigen::Index v = 0; v < n; ++v) {
@@ -59,16 +69,35 @@ Result<std::vector<SkinError>> measureSkinErrors(const BodyModel& model,
         sum += d;
         errs[i].max_m = std::max(errs[i].max_m, d);
       }
-    errs[i].mean_m = poses > 0 ? sum / (static_cast<double>(poses) * n) : 0.0;
+    errs[i].mean_m = count > 0 ? sum / count : 0.0;
   }
   return errs;
 }
 
 }  // namespace
 
+std::vector<Rotations> heldOutFrames(const BodyModel& model, int poses, bool motion_like) {
+  const std::vector<Eigen::VectorXd> p =
+      motion_like ? sampleMotionPoses(model.joint_names, poses, /*seed=*/20261125)
+                  : samplePoses(model.numJoints(), poses, /*seed=*/20261124);
+  std::vector<Rotations> frames;
+  for (const Eigen::VectorXd& pose : p) frames.push_back(rotationsFromAxisAngle(pose));
+  return frames;
+}
+
 Result<SkinError> measureSkinError(const BodyModel& model, const ExportOptions& options,
                                    const Eigen::MatrixXd& weights, int poses) {
-  Result<std::vector<SkinError>> errs = measureSkinErrors(model, options, {&weights}, poses);
+  Result<std::vector<SkinError>> errs =
+      measureSkinErrors(model, options, {SkinCase{weights}}, heldOutFrames(model, poses));
+  if (!errs) return errs.error();
+  return errs->front();
+}
+
+Result<SkinError> measureSkinOn(const BodyModel& model, const ExportOptions& options,
+                                const SparseSkin& skin, const CorrectiveRefit* refit,
+                                const std::vector<Rotations>& frames) {
+  Result<std::vector<SkinError>> errs = measureSkinErrors(
+      model, options, {SkinCase{denseWeights(skin, model.numJoints()), &skin, refit}}, frames);
   if (!errs) return errs.error();
   return errs->front();
 }
@@ -88,29 +117,37 @@ SparseSkin skinOfAsset(const SkinnedMesh& mesh, int num_vertices) {
 }
 
 Result<PruningError> measurePruningError(const BodyModel& model, const ExportOptions& options,
-                                         int poses, const SparseSkin* exported_skin) {
+                                         int poses, const SparseSkin* exported_skin,
+                                         const CorrectiveRefit* exported_refit) {
   ForwardInput shape = shapeInput(options);
   Result<ShapedBody> body = shapeBody(model, shape.betas, shape.expression);
   if (!body) return body.error();
   PruningError err;
   err.influences = influencesFor(model, options);
   err.poses = poses;
-  const Eigen::MatrixXd truncated =
-      denseWeights(pruneWeights(model.weights, err.influences), model.numJoints());
-  if (options.skin_weights == SkinWeightMethod::Truncated) {
-    Result<std::vector<SkinError>> t = measureSkinErrors(model, options, {&truncated}, poses);
-    if (!t) return t.error();
-    err.truncated = t->front();
-    err.mean_m = err.truncated.mean_m, err.max_m = err.truncated.max_m;
-    return err;
+  const SparseSkin truncated = pruneWeights(model.weights, err.influences);
+  const SparseSkin skin = exported_skin ? *exported_skin
+                          : options.skin_weights == SkinWeightMethod::Truncated
+                              ? truncated
+                              : exportSkin(model, *body, options);
+  CorrectiveRefit computed;
+  const CorrectiveRefit* refit = exported_refit;
+  if (!refit && refitsCorrectives(options)) {
+    computed = refitCorrectives(model, *body, skin, CorrectiveRefitOptions());
+    refit = &computed;
   }
-  const Eigen::MatrixXd exported = denseWeights(
-      exported_skin ? *exported_skin : exportSkin(model, *body, options), model.numJoints());
+  err.refit = refit && !refit->empty();
+  const int k = model.numJoints();
+  std::vector<SkinCase> cases = {SkinCase{denseWeights(truncated, k)},
+                                 SkinCase{denseWeights(skin, k)}};
+  if (err.refit) cases.push_back(SkinCase{cases[1].weights, &skin, refit});
   Result<std::vector<SkinError>> e =
-      measureSkinErrors(model, options, {&truncated, &exported}, poses);
+      measureSkinErrors(model, options, cases, heldOutFrames(model, poses));
   if (!e) return e.error();
   err.truncated = (*e)[0];
-  err.mean_m = (*e)[1].mean_m, err.max_m = (*e)[1].max_m;
+  err.without_refit = (*e)[1];
+  const SkinError& exported = e->back();
+  err.mean_m = exported.mean_m, err.max_m = exported.max_m;
   return err;
 }
 

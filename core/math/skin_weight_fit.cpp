@@ -8,39 +8,16 @@
 #include <thread>
 #include <vector>
 
+#include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
+#include "core/math/skinning_transforms.h"
 
 namespace smpl {
 namespace {
 
-using Affine = Eigen::Matrix<double, 3, 4>;
-
 // Joints a vertex's support is chosen from: its largest non-zero weights
 // (at least 12, at least 2M).
 constexpr int kMaxCandidates = 12;
-
-// A_k = G_k [I | -J_k] of every joint for one pose (docs/file-contract.md).
-std::vector<Affine> skinningTransforms(const BodyModel& model, const Eigen::MatrixXd& joints,
-                                       const Rotations& r) {
-  const int k_count = model.numJoints();
-  std::vector<Eigen::Matrix3d> rot(k_count);
-  std::vector<Eigen::Vector3d> trans(k_count);
-  std::vector<Affine> a(k_count);
-  for (int k = 0; k < k_count; ++k) {
-    const int p = model.parents[k];
-    const Eigen::Vector3d j = joints.row(k).transpose();
-    if (p < 0) {
-      rot[k] = r[k];
-      trans[k] = j;
-    } else {
-      rot[k] = rot[p] * r[k];
-      trans[k] = rot[p] * (j - joints.row(p).transpose()) + trans[p];
-    }
-    a[k].leftCols<3>() = rot[k];
-    a[k].col(3) = trans[k] - rot[k] * j;
-  }
-  return a;
-}
 
 struct TrainingSet {
   std::vector<std::vector<Affine>> transforms;  // [pose][joint]
@@ -49,7 +26,8 @@ struct TrainingSet {
 
 TrainingSet trainingSet(const BodyModel& model, const ShapedBody& body, const SkinFitOptions& o) {
   const std::vector<Eigen::VectorXd> poses =
-      samplePoses(model.numJoints(), o.training_poses, o.seed, o.pose_scale);
+      o.motion_like ? sampleMotionPoses(model.joint_names, o.training_poses, o.seed)
+                    : samplePoses(model.numJoints(), o.training_poses, o.seed, o.pose_scale);
   TrainingSet ts;
   Eigen::MatrixXd features(model.numPoseFeatures(), static_cast<Eigen::Index>(poses.size()));
   for (size_t p = 0; p < poses.size(); ++p) {

@@ -23,9 +23,12 @@
 // the subset of lowest training error wins. Guard: a vertex whose fit is
 // worse than truncation at its worst training pose keeps the truncated
 // weights. A vertex with at most M non-zero weights keeps its exact weights.
-// Poses: samplePoses (core/math/pose_sampler.h) with a seed of its own, so
-// reports that measure the error on the default report seed (20261124)
-// measure held-out poses (the same distribution, other samples).
+// Poses: motion-like poses (sampleMotionPoses, core/math/motion_poses.h:
+// joint ranges and correlations of captured motion) with a seed of their
+// own; trained on uniform random poses instead (motion_like = false), the
+// fit overfitted them and was worse than truncation at the maximum on a real
+// AMASS clip (issue 25). Reports that measure the error on the report seeds
+// (exporter/pruning_error.h) measure held-out poses.
 // Deterministic: the result does not depend on the thread count.
 #pragma once
 
@@ -40,9 +43,10 @@ namespace smpl {
 
 struct SkinFitOptions {
   int max_influences = 4;           // M, 1..K (a precondition: clamped to it, not checked)
-  int training_poses = 48;          // poses of the fit (axis-angle, uniform in +-pose_scale rad)
-  uint64_t seed = 0x5157a11f17ull;  // training set; differs from the report's held-out seed
-  double pose_scale = 0.6;          // radians, as samplePoses
+  int training_poses = 48;          // poses of the fit
+  uint64_t seed = 0x5157a11f17ull;  // training set; differs from the report's held-out seeds
+  bool motion_like = true;          // sampleMotionPoses; false: uniform in +-pose_scale rad
+  double pose_scale = 0.6;          // radians, as samplePoses (motion_like false only)
   int threads = 2;                  // worker threads over vertices (result is thread-independent)
   double prior_strength = 0.1;      // lambda / mean Gram diagonal: pull toward the prior weights
   int exhaustive_limit = 70;        // try every M-subset of the candidates up to this many subsets

@@ -11,6 +11,7 @@ ExportOptions exportOptionsOf(const ExportRequest& r, const std::vector<double>&
   o.max_influences = r.all_influences ? kAllInfluences : r.max_influences;
   o.skin_weights = r.skin_weights;
   o.correctives = r.correctives;
+  o.corrective_refit = r.corrective_refit;
   o.encoding = r.encoding;
   o.corrective_basis = r.corrective_basis;
   o.shape_keys = r.shape_keys;

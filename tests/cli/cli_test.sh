@@ -77,7 +77,14 @@ status=$?
 check "export smpl_small: $(cat "$work/summary")" $status
 grep -q "morph targets" "$work/summary"; check "summary printed" $?
 grep -q "skinning error of 4 influences" "$work/summary"; check "pruning error printed" $?
-grep -q "optimized mean .* mm, max .* mm; truncated mean .* mm, max .* mm" "$work/summary"; check "fitted and truncated skin errors printed" $?
+grep -q "optimized mean .* mm, max .* mm with corrective refit; without refit mean .* mm, max .* mm; truncated mean .* mm, max .* mm" "$work/summary"; check "refit, fitted and truncated skin errors printed: $(cat "$work/summary")" $?
+expect_failure bad-corrective-refit 1 "--corrective-refit" --model builtin --out "$work/out.glb" --corrective-refit maybe
+# --corrective-refit off: the model's posedirs as they are, the summary says nothing of a refit,
+# and the file differs from the default (refitted deltas) in its morph deltas only.
+"$exe" --model "$models/smpl_small.npz" --out "$work/plain.glb" --betas 0.5,-1 --corrective-refit off >"$work/plain" 2>&1
+check "export --corrective-refit off: $(cat "$work/plain")" $?
+! grep -q "refit" "$work/plain"; check "--corrective-refit off: no refit in the summary" $?
+! cmp -s "$work/a.glb" "$work/plain.glb"; check "--corrective-refit changes the stored deltas" $?
 [ -s "$work/a.glb.smpl.json" ]; check "sidecar written" $?
 "$exe" --model "$models/smpl_small.npz" --out "$work/b.glb" --betas 0.5,-1 -q
 cmp -s "$work/a.glb" "$work/b.glb"; check "GLB output is deterministic" $?

@@ -220,6 +220,38 @@ def key_blocks(mesh_obj, targets, evaluated=True):
     return [table[t] for t in targets]
 
 
+def file_posedirs(mesh_obj, entries, model, index, got_weights):
+    """The corrective deltas the file carries, as (N,3,P) posedirs in model
+    vertex order: each feature's first entry decoded (posedirs_n = scale x
+    delta for every encoding). Where the file's skin keeps all of a vertex's
+    model influences they must equal posedirs (1e-6 m, float32 keys);
+    elsewhere --corrective-refit may have refitted them
+    (docs/file-contract.md), and the reference poses the file's deltas, as
+    it takes the file's weights."""
+    posedirs = model["posedirs"]
+    n = len(mesh_obj.data.vertices)
+    first = {}
+    for e in entries:
+        first.setdefault(e["feature"], e)
+    blocks = key_blocks(mesh_obj, [first[f]["target"] for f in sorted(first)], evaluated=False)
+    basis = np.empty(n * 3, dtype=np.float32)
+    mesh_obj.data.shape_keys.reference_key.data.foreach_get("co", basis)
+    linear = np.array(mesh_obj.matrix_world, dtype=np.float64)[:3, :3]
+    co = np.empty(n * 3, dtype=np.float32)
+    cut = ((model["weights"] > 0).sum(1) > (got_weights > 0).sum(1))[index]
+    out = posedirs.astype(np.float64).copy()
+    worst = 0.0
+    for f, kb in zip(sorted(first), blocks):
+        kb.data.foreach_get("co", co)
+        delta = first[f].get("scale", 1.0) * rt.world_to_model(
+            (co.astype(np.float64) - basis).reshape(n, 3) @ linear.T)
+        out[index[cut], :, f] = delta[cut]
+        worst = max(worst, np.abs(delta[~cut] - posedirs[index[~cut], :, f]).max(initial=0.0))
+    print("morph_delta_err_m %.3e (refitted vertices: %d)" % (worst, int(cut.sum())))
+    rt.check(worst <= 1e-6, "morph target deltas differ from posedirs by %.3g" % worst)
+    return out
+
+
 def corrective_entries(asset):
     """The metadata's corrective entries (signed, unit or split: one or two per feature)."""
     import json
@@ -334,6 +366,7 @@ def main():
     # The skin as the file carries it (optimized weights are fitted, not a truncation).
     got_weights = rt.file_weights(mesh_obj, ref.names, index, len(ref.v_shaped))
     ref.weights = rt.check_weights(got_weights, m, skin_method, model, None)
+    ref.model = dict(model, posedirs=file_posedirs(mesh_obj, entries, model, index, got_weights))
     ratio = motion["fps"] / fps_out  # source frames per output frame
     count = int(np.floor((motion["frames"] - 1) / ratio + 1e-9)) + 1
     ctx = {"fmt": fmt, "arm": arm, "mesh": mesh_obj, "ref": ref, "index": index, "m": m,

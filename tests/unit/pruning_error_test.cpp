@@ -10,6 +10,7 @@
 
 #include "core/demo/demo_body.h"
 #include "core/load/model_loader.h"
+#include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
@@ -18,9 +19,12 @@
 namespace smpl {
 namespace {
 
-// Mean and max vertex distance, all weights vs `weights`, by forward().
+// Mean and max vertex distance, all weights vs `weights` (posed with the
+// correctives of `pruned_model`: the model, or a copy with refitted
+// posedirs), by forward().
 SkinError referenceError(const BodyModel& model, const ExportOptions& o,
-                         const Eigen::MatrixXd& weights, int poses) {
+                         const Eigen::MatrixXd& weights, int poses,
+                         const BodyModel* pruned_model = nullptr) {
   ForwardInput in;
   in.betas = Eigen::Map<const Eigen::VectorXd>(o.betas.data(), Eigen::Index(o.betas.size()));
   SkinError e;
@@ -30,7 +34,8 @@ SkinError referenceError(const BodyModel& model, const ExportOptions& o,
     in.weights = nullptr;
     const Eigen::MatrixXd full = forward(model, in)->vertices;
     in.weights = &weights;
-    const Eigen::VectorXd d = (full - forward(model, in)->vertices).rowwise().norm();
+    const Eigen::VectorXd d =
+        (full - forward(pruned_model ? *pruned_model : model, in)->vertices).rowwise().norm();
     sum += d.sum();
     e.max_m = std::max(e.max_m, d.maxCoeff());
   }
@@ -54,14 +59,22 @@ void checkModel(const BodyModel& model, const std::vector<double>& betas) {
       shapeBody(model, Eigen::Map<const Eigen::VectorXd>(betas.data(), Eigen::Index(betas.size())));
   ASSERT_TRUE(body.ok()) << body.message();
   const SparseSkin fitted = exportSkin(model, *body, o);
-  Result<PruningError> e = measurePruningError(model, o, poses, &fitted);
+  const CorrectiveRefit refit = refitCorrectives(model, *body, fitted, CorrectiveRefitOptions());
+  ASSERT_FALSE(refit.empty());
+  Result<PruningError> e = measurePruningError(model, o, poses, &fitted, &refit);
   ASSERT_TRUE(e.ok()) << e.message();
   EXPECT_EQ(e->poses, poses);
   EXPECT_EQ(e->influences, 3);
   const Eigen::MatrixXd truncated = denseWeights(pruneWeights(model.weights, 3), model.numJoints());
   expectClose(e->truncated, referenceError(model, o, truncated, poses), "truncated");
-  expectClose(SkinError{e->mean_m, e->max_m},
-              referenceError(model, o, denseWeights(fitted, model.numJoints()), poses), "fitted");
+  const Eigen::MatrixXd dense = denseWeights(fitted, model.numJoints());
+  EXPECT_TRUE(e->refit);
+  expectClose(e->without_refit, referenceError(model, o, dense, poses), "fitted");
+  BodyModel refitted = model;  // the posedirs the export writes
+  refitted.posedirs = refit.posedirs(model);
+  expectClose(SkinError{e->mean_m, e->max_m}, referenceError(model, o, dense, poses, &refitted),
+              "fitted + refit");
+  EXPECT_LT(e->mean_m, e->without_refit.mean_m);
 }
 
 TEST(PruningError, MatchesTheReferenceForwardPassOnTheBuiltinBody) {

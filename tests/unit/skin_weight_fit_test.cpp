@@ -55,17 +55,24 @@ struct Errors {
   SkinError truncated, fitted;
 };
 
+// Truncated and fitted weights alone (model's correctives; the refit:
+// corrective_refit_test) on 32 held-out motion-like poses, the distribution
+// the fit trains on (core/math/motion_poses.h, other seed).
 Errors heldOut(const BodyModel& model, int m) {
   ExportOptions o;
   o.max_influences = m;
-  o.skin_weights = SkinWeightMethod::Optimized;
-  Result<PruningError> e = measurePruningError(model, o, 32);
-  EXPECT_TRUE(e.ok()) << e.message();
-  return {e->truncated, SkinError{e->mean_m, e->max_m}};
+  const ShapedBody body = *shapeBody(model, Eigen::VectorXd());
+  const std::vector<Rotations> frames = heldOutFrames(model, 32, /*motion_like=*/true);
+  Result<SkinError> t = measureSkinOn(model, o, pruneWeights(model.weights, m), nullptr, frames);
+  Result<SkinError> f = measureSkinOn(model, o, exportSkin(model, body, o), nullptr, frames);
+  EXPECT_TRUE(t.ok() && f.ok());
+  return {*t, *f};
 }
 
 // Issue 13's goal is 30% below truncation; every M-subset of the fixture's
-// at most 6 influences (exhaustive support) brings it to 44% (greedy: 40%).
+// at most 6 influences (exhaustive support) brings it to 72% on motion-like
+// poses (smpl-skin-report; 28% on uniform random poses, which it no longer
+// trains on: issue 25).
 TEST(FitSkinWeights, HeldOutErrorOnTheSmplFixtureIsWellBelowTruncation) {
   Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   ASSERT_TRUE(model.ok()) << model.message();
@@ -79,9 +86,12 @@ TEST(FitSkinWeights, HeldOutErrorOnTheSmplFixtureIsWellBelowTruncation) {
 // vertex's joints do better than 15% on these very poses (see the next
 // test). The fit gains 11% and, pulled toward the truncated weights, does
 // not raise the worst vertex (without the pull: 2.44 mm against 2.35 mm).
+// Motion-like held-out poses: 36% below truncation in the mean, 63% at the
+// maximum (smpl-skin-report). On uniform random poses the weights alone are
+// 18% worse (the refit, on by default, brings the export 65% below there).
 TEST(FitSkinWeights, HeldOutMeanErrorOfTheBuiltinBodyIsBelowTruncation) {
   const Errors e = heldOut(demoBody(), 4);
-  EXPECT_LE(e.fitted.mean_m, 0.9 * e.truncated.mean_m)
+  EXPECT_LE(e.fitted.mean_m, 0.8 * e.truncated.mean_m)
       << e.fitted.mean_m << " vs " << e.truncated.mean_m;
   EXPECT_LE(e.fitted.max_m, e.truncated.max_m) << e.fitted.max_m << " vs " << e.truncated.max_m;
 }
@@ -97,6 +107,7 @@ TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
   SkinFitOptions o;
   o.training_poses = 32;
   o.seed = 20261124;  // exporter/pruning_error.h's held-out poses
+  o.motion_like = false;  // those poses are uniform random
   o.prior_strength = 0.0;
   o.guard = false;
   o.l1_iterations = 30;
@@ -106,7 +117,9 @@ TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
   };
   Result<SkinError> bound = heldOutError();
   ASSERT_TRUE(bound.ok()) << bound.message();
-  const Errors e = heldOut(model, 4);
+  ExportOptions four;  // the export's fit and truncation on the same (uniform) poses
+  const Errors e{*measureSkinError(model, four, denseWeights(pruneWeights(model.weights, 4), model.numJoints()), 32),
+                 *measureSkinError(model, four, denseWeights(exportSkin(model, *body, four), model.numJoints()), 32)};
   EXPECT_LT(bound->mean_m, e.fitted.mean_m);
   EXPECT_GT(bound->mean_m, 0.7 * e.truncated.mean_m)
       << bound->mean_m << " vs " << e.truncated.mean_m;

@@ -6,6 +6,7 @@
 //
 //   smpl-reference --model PATH|builtin --out PREFIX [--betas v,v,..]
 //                  [--max-influences M] [--skin-weights truncated|optimized]
+//                  [--corrective-refit on|off]
 //                  [--poses P] [--seed S] [--dump-model]
 //
 // Output: PREFIX.json, a header
@@ -13,12 +14,14 @@
 //    "num_joints","arrays":{name:{"shape":[..],"offset":o}}}
 // and PREFIX.bin, the arrays as little-endian float64, C order, `offset`
 // counted in doubles. Arrays: poses (P,K,3) axis-angle, features (P,9(K-1)),
-// joints (P,K,3) posed, vertices_pruned (P,N,3) (the exported skin),
+// joints (P,K,3) posed, vertices_pruned (P,N,3) (the exported skin and the
+// exported correctives: refitted to that skin, core/math/corrective_refit.h,
+// unless --corrective-refit off),
 // vertices_full (P,N,3), v_shaped (N,3), rest_joints (K,3), skin_weights (N,K)
 // (the exported skin, dense); the header also names "skin_weights"; with --dump-model also posedirs
 // (N,3,9(K-1)) and weights (N,K), for models that have no file (builtin).
 //
-// --model, --betas, --max-influences and --skin-weights are the export's own
+// --model, --betas, --max-influences, --skin-weights and --corrective-refit are the export's own
 // options: they are parsed by smpl-export's option table (cli/options.h) into
 // an ExportRequest, checked by the request's checks and the model loaded by
 // its ModelSource (exporter/request/), so this tool takes exactly what
@@ -36,6 +39,7 @@
 
 #include "cli/options.h"
 #include "cli/settings.h"
+#include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
@@ -83,7 +87,8 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
     const char* v = i + 1 < argc ? argv[i + 1] : nullptr;
     bool needs = a != "--dump-model";
     if (needs && !v) return *error = a + ": missing value", false;
-    if (a == "--model" || a == "--betas" || a == "--max-influences" || a == "--skin-weights") {
+    if (a == "--model" || a == "--betas" || a == "--max-influences" || a == "--skin-weights" ||
+        a == "--corrective-refit") {
       smpl::Status st = smpl::findOption(a)->apply(v, &o->export_settings);
       if (!st) return *error = st.message(), false;
     } else if (a == "--out") {
@@ -159,8 +164,13 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "smpl-reference: %s\n", body.message().c_str());
     return 3;
   }
-  const Eigen::MatrixXd pruned =
-      smpl::denseWeights(smpl::exportSkin(*model, *body, export_options), k);
+  const smpl::SparseSkin skin = smpl::exportSkin(*model, *body, export_options);
+  const Eigen::MatrixXd pruned = smpl::denseWeights(skin, k);
+  // The exported correctives: refitted to the skin unless --corrective-refit off.
+  smpl::BodyModel exported = *model;
+  if (smpl::refitsCorrectives(export_options))
+    exported.posedirs =
+        smpl::refitCorrectives(*model, *body, skin, smpl::CorrectiveRefitOptions()).posedirs(*model);
   const std::vector<Eigen::VectorXd> poses = smpl::samplePoses(k, p, o.seed, 0.6);
   Eigen::MatrixXd pose_rows(p, 3 * k), features(p, 9 * (k - 1)), joints(p, 3 * k);
   Eigen::MatrixXd v_pruned(p, 3 * n), v_full(p, 3 * n), v_shaped, rest_joints;
@@ -169,7 +179,7 @@ int main(int argc, char** argv) {
     in.betas = betas;
     in.rotations = smpl::rotationsFromAxisAngle(poses[i]);
     in.weights = &pruned;
-    smpl::Result<smpl::ForwardResult> a = smpl::forward(*model, in);
+    smpl::Result<smpl::ForwardResult> a = smpl::forward(exported, in);
     in.weights = nullptr;
     smpl::Result<smpl::ForwardResult> b = smpl::forward(*model, in);
     if (!a || !b) {
