@@ -7,7 +7,7 @@ set -euo pipefail
 
 build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev
             libssl-dev libdeflate-dev pkg-config)
-test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy python3-torch blender
+test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy python3-torch python3-joblib blender
            libassimp-dev mono-mcs ccache chromium clang-format)
 
 pkgs=("${build_pkgs[@]}")
