@@ -75,3 +75,10 @@ add_test(NAME cli.layouts.generation_equivalent
           --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases generation
           --equivalent --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_generation_equivalent)
 set_tests_properties(cli.layouts.generation cli.layouts.generation_equivalent PROPERTIES LABELS web)
+
+# The README's `cmake --build build --target ...` commands work in a build configured as its
+# quick start configures one (tools are defined even with the tests off): configure only.
+add_test(NAME cli.readme_build_commands
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/readme_build_commands.py ${PROJECT_SOURCE_DIR}
+          ${CMAKE_CURRENT_BINARY_DIR} ${CMAKE_COMMAND})
+set_tests_properties(cli.readme_build_commands PROPERTIES LABELS cli)
