@@ -96,10 +96,28 @@ bool report(const std::string& title, const BodyModel& model) {
 }  // namespace
 }  // namespace smpl
 
+namespace {
+constexpr const char* kUsage =
+    "Usage: smpl-skin-report [--poses N] [MODEL ...]\n"
+    "Held-out skin error of truncated vs fitted weights (N = 1, 2, 4, 8 influences) for the\n"
+    "built-in body, then each model file (.npz or .pkl); N held-out poses (default 32).\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace smpl;
+  // --help anywhere prints the usage; any other dash argument but a leading
+  // --poses N is an unknown option (never read as a model path).
+  const bool poses = argc > 2 && std::string(argv[1]) == "--poses";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") return std::printf("%s", kUsage), 0;
+    if (arg.size() > 1 && arg[0] == '-' && !(poses && i <= 2))
+      return std::fprintf(stderr, "Error in arguments: unknown option '%s'\n%s", arg.c_str(),
+                          kUsage),
+             1;
+  }
   int first = 1;
-  if (argc > 2 && std::string(argv[1]) == "--poses") {
+  if (poses) {
     held_out_poses = std::atoi(argv[2]);
     first = 3;
     if (held_out_poses < 1) return std::fprintf(stderr, "--poses: expected N >= 1\n"), 1;
