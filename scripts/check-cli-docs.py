@@ -134,7 +134,7 @@ def readme_options(readme):
 
 
 def main():
-    exe, repo = sys.argv[1], sys.argv[2]
+    exe, repo = os.path.abspath(sys.argv[1]), sys.argv[2]
     write = "--write" in sys.argv[3:]
     help_text = subprocess.run([exe, "--help"], check=True, capture_output=True, text=True).stdout
     problems = []

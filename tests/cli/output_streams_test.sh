@@ -38,11 +38,11 @@ check "-q keeps the warning: $(cat "$err")" $st
 
 # 3. Batch: [k/N] per file; the DMPL hint of three motions folded into one line with its count.
 mkdir -p "$work/motions"
-for name in walk_a walk_b walk_c; do cp "$fixtures/motions/amass_smplh.npz" "$work/motions/$name.npz"; done
+for name in walk_a walk_b walk_c; do cp "$fixtures/dmpl/amass_smplh_dmpl.npz" "$work/motions/$name.npz"; done
 "$exe" --model builtin --motion-dir "$work/motions" --out-dir "$work/batch" --threads 2 >"$out" 2>"$err"
 st=$?; check "batch: $(cat "$err")" $st
 for k in 1 2 3; do
-  grep -q "^\[$k/3\] $work/batch/walk_[abc].glb: 240 frames, " "$out"; st=$?; check "batch line [$k/3]: $(cat "$out")" $st
+  grep -q "^\[$k/3\] $work/batch/walk_[abc].glb: 90 frames, " "$out"; st=$?; check "batch line [$k/3]: $(cat "$out")" $st
 done
 ! grep -q "ETA" "$out"; st=$?; check "no ETA when stdout is not a terminal" $st
 [ "$(grep -c "DMPL soft-tissue" "$err")" = 1 ]; st=$?; check "one DMPL hint line: $(cat "$err")" $st
