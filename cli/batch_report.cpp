@@ -20,7 +20,8 @@ std::string formatDuration(double seconds) {
 std::string batchProgressPrefix(size_t k, size_t n, double elapsed_s, bool eta) {
   std::string text = "[" + std::to_string(k) + "/" + std::to_string(n);
   if (eta && k > 0 && k < n)
-    text += ", ETA " + formatDuration(elapsed_s / static_cast<double>(k) * static_cast<double>(n - k));
+    text +=
+        ", ETA " + formatDuration(elapsed_s / static_cast<double>(k) * static_cast<double>(n - k));
   return text + "] ";
 }
 
@@ -32,7 +33,7 @@ std::vector<std::string> BatchNotes::folded() const {
   struct Group {
     size_t order;
     std::string first;  // the note as the first motion had it
-    size_t count = 0;  // motions that have it
+    size_t count = 0;   // motions that have it
     size_t last = static_cast<size_t>(-1);
   };
   std::map<std::string, Group> groups;  // by the note without the motion's name

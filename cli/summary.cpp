@@ -46,10 +46,10 @@ void drawProgress(const std::string& name, double fraction) {
   if (name != current || fraction <= 0) current = name, start = Clock::now();
   const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   const int width = 24, filled = static_cast<int>(fraction * width);
-  const std::string eta =
-      fraction >= 1.0   ? formatDuration(elapsed) + "     "
-      : fraction > 0.02 ? "ETA " + formatDuration(elapsed / fraction * (1 - fraction))
-                        : "ETA ?   ";
+  const std::string eta = fraction >= 1.0 ? formatDuration(elapsed) + "     "
+                          : fraction > 0.02
+                              ? "ETA " + formatDuration(elapsed / fraction * (1 - fraction))
+                              : "ETA ?   ";
   std::fprintf(stderr, "\rbaking %-20.20s [%s%s] %3d%% %s", printable(name).c_str(),
                std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
                static_cast<int>(fraction * 100), eta.c_str());

@@ -194,9 +194,10 @@ std::vector<std::string> listModelFolder(const std::string& dir) {
   // Links are followed (a cluster's shared models are usually links, to files
   // or to kind folders); the depth limit bounds a link loop. Paths are the
   // links' own, relative to `dir` by name: fs::relative would resolve them.
-  fs::recursive_directory_iterator it(
-      dir, fs::directory_options::skip_permission_denied | fs::directory_options::follow_directory_symlink,
-      ec),
+  fs::recursive_directory_iterator it(dir,
+                                      fs::directory_options::skip_permission_denied |
+                                          fs::directory_options::follow_directory_symlink,
+                                      ec),
       end;
   for (; !ec && it != end; it.increment(ec)) {
     if (it.depth() >= 2) it.disable_recursion_pending();

@@ -35,9 +35,8 @@ TEST(BatchReport, NotesOfOneMotionKeepItsNameAndMotionOrder) {
   BatchNotes notes(3);
   notes.set(2, "c", {"c: assumed 30 fps", "shared"});
   notes.set(0, "a", {"a: 2 of 4 joints dropped", "shared", "shared"});  // twice: one motion
-  EXPECT_EQ(notes.folded(),
-            (std::vector<std::string>{"a: 2 of 4 joints dropped", "shared (2 motions)",
-                                      "c: assumed 30 fps"}));
+  EXPECT_EQ(notes.folded(), (std::vector<std::string>{"a: 2 of 4 joints dropped",
+                                                      "shared (2 motions)", "c: assumed 30 fps"}));
 }
 
 TEST(BatchReport, NoNotesNoLines) { EXPECT_TRUE(BatchNotes(4).folded().empty()); }
