@@ -1,5 +1,7 @@
 #include "cli/batch.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -10,6 +12,7 @@
 #include <thread>
 
 #include "cli/batch_plan.h"
+#include "cli/batch_report.h"
 #include "cli/manifest.h"
 #include "cli/sha256.h"
 #include "core/load/motion.h"
@@ -52,14 +55,23 @@ std::string extensionList() {
 }
 
 void printHeader(const Settings& s, const BatchPlan& plan) {
-  for (const std::string& note : plan.notes) std::printf("note: %s\n", note.c_str());
+  if (!s.quiet)
+    for (const std::string& note : plan.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
   for (const std::string& error : plan.errors) std::fprintf(stderr, "%s\n", error.c_str());
   if (plan.listed == 0)
-    std::fprintf(stderr, "Warning: no motions (%s) in %s\n", extensionList().c_str(),
+    std::fprintf(stderr, "warning: no motions (%s) in %s\n", extensionList().c_str(),
                  s.request.motion_dir.c_str());
   else if (plan.outputs.empty() && !s.quiet)
-    std::printf("note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index,
-                s.shard_count, plan.listed, s.request.motion_dir.c_str());
+    std::fprintf(stderr, "note: shard %d/%d of the %zu motions in %s is empty\n", s.shard_index,
+                 s.shard_count, plan.listed, s.request.motion_dir.c_str());
+}
+
+// After the batch: each distinct note once (stderr; a note many motions share
+// with its count), unless quiet; warnings (a folder's model fallback) always.
+void printFolded(const BatchNotes& notes, const BatchNotes& warnings, bool quiet) {
+  for (const std::string& w : warnings.folded()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (quiet) return;
+  for (const std::string& n : notes.folded()) std::fprintf(stderr, "note: %s\n", n.c_str());
 }
 
 // The request of one planned output: its motion, output and recorded hash;
@@ -94,6 +106,20 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   const bool one_thread = workers > 1;
   std::atomic<size_t> next{0};
   std::mutex print;
+  const auto batch_start = std::chrono::steady_clock::now();
+  const bool eta = isatty(1) != 0;  // the time left, on a terminal only (output stays reproducible)
+  size_t finished = 0;
+  BatchNotes notes(motions.size()), warnings(motions.size());
+  // One line per finished file, "[k/N] what", under the print lock.
+  auto progress = [&](const std::string& what) {
+    ++finished;
+    if (s.quiet) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count();
+    std::printf("%s%s\n", batchProgressPrefix(finished, motions.size(), elapsed, eta).c_str(),
+                what.c_str());
+    if (eta) std::fflush(stdout);
+  };
   auto worker = [&] {
     for (size_t i; (i = next++) < motions.size();) {
       const auto start = std::chrono::steady_clock::now();
@@ -109,6 +135,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         entry.seconds = seconds();
         std::lock_guard<std::mutex> lock(print);
         ++summary.skipped;
+        progress(out + ": up to date");
         continue;
       }
       if (noPoseData(motions[i].motion)) {
@@ -117,8 +144,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         entry.seconds = seconds();
         std::lock_guard<std::mutex> lock(print);
         ++summary.no_poses;
-        if (!s.quiet)
-          std::printf("note: skipped %s: %s\n", entry.input.c_str(), entry.message.c_str());
+        progress(entry.input + ": skipped, " + entry.message);
         continue;
       }
       // Per motion: a folder picks the model by the decoded motion's kind and gender.
@@ -132,19 +158,23 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
       if (!r) {
         ++summary.failed;
         std::fprintf(stderr, "%s\n", r.message().c_str());
+        progress(entry.input + ": failed");
         continue;
       }
       ++summary.converted;
-      if (s.quiet) continue;
-      std::printf("%s: %d frames, %.2f MB, %.0f ms, model %s%s%s\n", out.c_str(), r->frames,
-                  r->bytes / 1e6, r->seconds * 1e3, r->model_path.c_str(),
-                  r->model_note.empty() ? "" : "; note: ", r->model_note.c_str());
-      for (const std::string& note : r->notes) std::printf("note: %s\n", note.c_str());
+      const std::string name = fs::path(motions[i].motion).stem().string();
+      notes.set(i, name, r->notes);
+      if (!r->model_note.empty()) warnings.set(i, name, {r->model_note});
+      char line[160];
+      std::snprintf(line, sizeof line, ": %d frames, %.2f MB, %.0f ms, model ", r->frames,
+                    r->bytes / 1e6, r->seconds * 1e3);
+      progress(out + line + r->model_path);
     }
   };
   std::vector<std::thread> pool;
   for (size_t t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
+  printFolded(notes, warnings, s.quiet);
   std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n",
               summary.converted, summary.skipped, summary.failed, summary.no_poses);
   if (record)

@@ -65,7 +65,7 @@ int runBatchMode(const Settings& s, ModelSource* models, Stage* stage) {
   Result<RunInputs> inputs = loadRunInputs(s.request, models);
   if (!inputs) return report(inputs.message(), exitCodeFor(inputs.kind()));
   if (!inputs->betas_note.empty() && !s.quiet)
-    std::printf("note: %s\n", inputs->betas_note.c_str());
+    std::fprintf(stderr, "note: %s\n", inputs->betas_note.c_str());
   stage->set("exporting", s.request.motion_dir, kExitExport);
   BatchSummary summary = runBatch(*models, s, *plan, *inputs);
   if (summary.manifest_failed) return kExitSave;
@@ -87,12 +87,15 @@ int run(int argc, char** argv, Stage* stage) {
   if (request.track.kind == TrackChoice::Kind::All) {  // one output per person
     Result<std::vector<ExportReport>> results = runTrackExports(request, &models);
     if (!results) return report(results.message(), exitCodeFor(results.kind()));
-    for (const ExportReport& r : *results)
+    for (const ExportReport& r : *results) {
+      printNotes(r, s.quiet);
       if (!s.quiet) printSummary(r.out, r);
+    }
     return kExitOk;
   }
   Result<ExportReport> result = runExportRequest(request, &models);
   if (!result) return report(result.message(), exitCodeFor(result.kind()));
+  printNotes(*result, s.quiet);
   if (!s.quiet) printSummary(request.out, *result);
   return kExitOk;
 }

@@ -386,7 +386,8 @@ const std::vector<OptionSpec> kOptions = {
        return s->request.memory_limit = *m, Status();
      },
      Hashed::No},
-    {"--quiet", "-q", nullptr, Applies::Any, nullptr, "no summary",
+    {"--quiet", "-q", nullptr, Applies::Any, nullptr,
+     "no summary, no notes (warnings and errors still go to stderr)",
      [](V, S* s) { return s->quiet = true, Status(); }, Hashed::No},
     {"--version", nullptr, nullptr, Applies::Any, nullptr, "print the version and exit",
      [](V, S* s) { return s->version = true, Status(); }, Hashed::No},
@@ -394,7 +395,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V, S* s) { return s->help = true, Status(); }, Hashed::No},
 };
 
-constexpr size_t kHelpColumn = 25, kWidth = 100;
+constexpr size_t kHelpColumn = 25, kWidth = 80;  // a terminal's 80 columns
 
 // Paragraphs ('\n') of `text` word-wrapped to `width` columns.
 std::vector<std::string> wrap(const std::string& text, size_t width) {
@@ -487,7 +488,7 @@ std::string appliesRule(const OptionSpec& option) {
 
 std::string usageText() {
   std::string out =
-      "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose correctives\n\n"
+      "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX, pose correctives\n\n"
       "Usage: smpl-export --model PATH|builtin --out FILE" +
       expand("{extensions|}") + " [options]\n" +
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
@@ -497,9 +498,11 @@ std::string usageText() {
         out += line + "\n";
     appendUsage(o, &out);
   }
-  out +=
-      "\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write output.\n"
-      "Reference: docs/cli.md\n";
+  for (const std::string& line :
+       wrap("\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write "
+            "output.\nReference: docs/cli.md",
+            kWidth))
+    out += line + "\n";
   return out;
 }
 

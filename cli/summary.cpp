@@ -1,20 +1,29 @@
 #include "cli/summary.h"
 
+#include <chrono>
 #include <cstdio>
 
+#include "cli/batch_report.h"
 #include "core/io/printable.h"
 #include "exporter/export_skin.h"
 
 namespace smpl {
 
+void printNotes(const ExportReport& r, bool quiet) {
+  // The model used is not the one asked for (a folder's fallback): a warning.
+  if (!r.model_note.empty())
+    std::fprintf(stderr, "warning: %s\n", printable(r.model_note, 4096).c_str());
+  if (quiet) return;
+  if (!r.betas_note.empty()) std::fprintf(stderr, "note: %s\n", r.betas_note.c_str());
+  for (const std::string& note : r.notes)
+    std::fprintf(stderr, "note: %s\n", printable(note, 4096).c_str());
+}
+
 void printSummary(const std::string& out, const ExportReport& r) {
-  if (!r.betas_note.empty()) std::printf("note: %s\n", r.betas_note.c_str());
-  if (!r.model_note.empty()) std::printf("note: %s\n", printable(r.model_note, 4096).c_str());
   std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n",
               printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
               r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
-  for (const std::string& note : r.notes) std::printf("note: %s\n", printable(note, 4096).c_str());
   if (r.skin_error_measured) {
     const PruningError& err = r.skin_error;
     std::printf(
@@ -35,9 +44,19 @@ void printSummary(const std::string& out, const ExportReport& r) {
 }
 
 void drawProgress(const std::string& name, double fraction) {
-  const int width = 30, filled = static_cast<int>(fraction * width);
-  std::fprintf(stderr, "\r%-24.24s [%s%s] %3d%%", name.c_str(), std::string(filled, '#').c_str(),
-               std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100));
+  using Clock = std::chrono::steady_clock;
+  static std::string current;  // the motion being baked, and when its bar started
+  static Clock::time_point start;
+  if (name != current || fraction <= 0) current = name, start = Clock::now();
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  const int width = 24, filled = static_cast<int>(fraction * width);
+  const std::string eta = fraction >= 1.0 ? formatDuration(elapsed) + "     "
+                          : fraction > 0.02
+                              ? "ETA " + formatDuration(elapsed / fraction * (1 - fraction))
+                              : "ETA ?   ";
+  std::fprintf(stderr, "\rbaking %-20.20s [%s%s] %3d%% %s", printable(name).c_str(),
+               std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(),
+               static_cast<int>(fraction * 100), eta.c_str());
   if (fraction >= 1.0) std::fprintf(stderr, "\n");
 }
 

@@ -105,6 +105,11 @@ def make_fixtures(work):
     return out
 
 
+def missing_fixtures(fixtures):
+    """FILES sources absent from `fixtures` (a script missing from SCRIPTS, or a stale folder)."""
+    return sorted({source for source in FILES.values() if not os.path.exists(os.path.join(fixtures, source))})
+
+
 def sandbox(fixtures, work):
     box = os.path.join(work, "sandbox")
     shutil.rmtree(box, ignore_errors=True)
@@ -160,6 +165,11 @@ def main():
     a = p.parse_args()
     work = a.work or tempfile.mkdtemp(prefix="smpl-samples-")
     fixtures = a.fixtures or make_fixtures(work)
+    missing = missing_fixtures(fixtures)
+    if missing:
+        print("%s: no %s (written by which tests/fixtures/make_*.py? %s)" % (
+            fixtures, ", ".join(missing), "run them with --fixtures" if a.fixtures else "add it to SCRIPTS"))
+        return 1
     box = sandbox(fixtures, work)
     env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(a.exe)) + os.pathsep + os.environ["PATH"])
     cmds = examples(a.readme)

@@ -26,8 +26,11 @@ a +90 degree turn about X. The glTF importer bakes that into the bones
 So C = A^-1 * Rx(90), A the armature object's world rotation at bind time.
 It is stored on the armature, so moving the character later changes nothing.
 
-Module use (no operator needed):
-    from smpl_correctives import correctives
+Module use (no operator needed), with the add-on enabled; the module is
+smpl_correctives.correctives as an add-on (Blender 3.4-4.1) and
+bl_ext.<repository>.smpl_correctives.correctives as an extension (4.2+):
+    import sys
+    correctives = next(m for n, m in sys.modules.items() if n.endswith("smpl_correctives.correctives"))
     correctives.bind(arm, mesh, source_path="body.glb")   # optional: reads metadata
     correctives.apply(arm, mesh)                          # once
     correctives.enable(arm, mesh)                         # every frame / edit

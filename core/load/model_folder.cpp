@@ -6,6 +6,8 @@
 #include <regex>
 #include <tuple>
 
+#include "core/io/printable.h"
+
 namespace smpl {
 namespace {
 
@@ -108,12 +110,23 @@ const Candidate* best(const std::vector<Candidate>& all, ModelKind kind,
   return pick;
 }
 
-std::string listing(const std::vector<Candidate>& all) {
+// The first 8 paths, comma-separated.
+std::string firstPaths(const std::vector<std::string>& paths) {
+  std::string s;
+  for (size_t i = 0; i < paths.size() && i < 8; ++i) s += (i ? ", " : "") + printable(paths[i]);
+  return s + (paths.size() > 8 ? ", ... (" + std::to_string(paths.size()) + " files)" : "");
+}
+
+// What the folder held: the model files recognised, else every file seen.
+std::string listing(const std::vector<Candidate>& all, const std::vector<std::string>& files) {
   if (all.empty())
-    return "no model files with the released names (e.g. SMPLX_NEUTRAL.npz, SMPL_FEMALE.pkl)";
-  std::string s = "found ";
-  for (size_t i = 0; i < all.size() && i < 8; ++i) s += (i ? ", " : "") + all[i].path;
-  return s + (all.size() > 8 ? ", ..." : "");
+    return std::string(
+               "no model files with the released names (e.g. SMPLX_NEUTRAL.npz, SMPL_FEMALE.pkl)") +
+           (files.empty() ? "; no files in it or its subfolders"
+                          : "; files seen: " + firstPaths(files));
+  std::vector<std::string> paths;
+  for (const Candidate& c : all) paths.push_back(c.path);
+  return "found " + firstPaths(paths);
 }
 
 }  // namespace
@@ -140,7 +153,7 @@ Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
         kind = k;
         break;
       }
-    if (!kind) return makeError(folder + ": " + listing(all));
+    if (!kind) return makeError(folder + ": " + listing(all, files));
   }
   std::string want = *kind != ModelKind::Mano ? normalizeGender(gender)
                      : gender == "left"       ? "left"  // a left hand (HaMeR): MANO_LEFT
@@ -168,7 +181,7 @@ Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
                       : *kind == ModelKind::Mano  ? "MANO"
                                                   : "SMPL") +
                      "_" + (want == "right" ? "RIGHT" : "NEUTRAL") + "." + defaultExt(*kind) +
-                     "); " + listing(all));
+                     "); " + listing(all, files));
   ModelFileChoice out{c->path, c->kind, c->gender, ""};
   if (!note.empty()) out.note = note + "using " + c->path;
   return out;
@@ -178,12 +191,21 @@ std::vector<std::string> listModelFolder(const std::string& dir) {
   namespace fs = std::filesystem;
   std::vector<std::string> files;
   std::error_code ec;
-  fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+  // Links are followed (a cluster's shared models are usually links, to files
+  // or to kind folders); the depth limit bounds a link loop. Paths are the
+  // links' own, relative to `dir` by name: fs::relative would resolve them.
+  fs::recursive_directory_iterator it(dir,
+                                      fs::directory_options::skip_permission_denied |
+                                          fs::directory_options::follow_directory_symlink,
+                                      ec),
+      end;
   for (; !ec && it != end; it.increment(ec)) {
     if (it.depth() >= 2) it.disable_recursion_pending();
     std::error_code fec;
-    if (it->is_regular_file(fec))
-      files.push_back(fs::relative(it->path(), dir, fec).generic_string());
+    // A dangling link is listed too: picked, it fails to load with its reason.
+    const bool dangling = it->is_symlink(fec) && !it->exists(fec);
+    if (it->is_regular_file(fec) || dangling)
+      files.push_back(it->path().lexically_relative(dir).generic_string());
   }
   std::sort(files.begin(), files.end());
   return files;

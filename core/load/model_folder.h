@@ -38,12 +38,16 @@ std::string normalizeGender(const std::string& gender);
 
 // Pure: `files` are paths relative to the folder ('/'-separated); `kind`
 // empty = no motion; `gender` as a motion stores it ("" = unknown -> neutral).
-// Errors name `folder` and list what was found.
+// Errors name `folder` and list what was found (the model files recognised,
+// else every file seen, at most 8).
 Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
                                         std::optional<ModelKind> kind, const std::string& gender,
                                         const std::string& folder);
 
 // Regular files under `dir`, up to two folder levels deep, relative and sorted.
+// Symbolic links (to files or to folders) are followed and listed under their
+// own names (`smplx/SMPLX_NEUTRAL.npz` for a link smplx -> /shared/smplx); a
+// dangling link is listed too, so that picking it fails with its reason.
 std::vector<std::string> listModelFolder(const std::string& dir);
 
 }  // namespace smpl

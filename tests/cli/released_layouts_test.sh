@@ -95,11 +95,41 @@ grep -qx "model: $folder/SMPL_NEUTRAL.npz" "$work/out"; st=$?; check "neutral mo
 st=$?; check "mixed-gender batch: $(cat "$work/out")" $st
 for pair in f_walk:SMPL_FEMALE.pkl m_walk:SMPL_MALE.pkl n_walk:SMPL_NEUTRAL.npz; do
   name=${pair%%:*} model=${pair#*:}
-  grep -q "^$work/batch/$name.glb: .*, model $folder/$model" "$work/out"; st=$?; check "batch line for $name names $model: $(cat "$work/out")" $st
+  grep -q "^\[[1-3]/3\] $work/batch/$name.glb: .*, model $folder/$model" "$work/out"; st=$?; check "batch line for $name names $model: $(cat "$work/out")" $st
   grep -q "\"$model\"" "$work/batch/$name.glb.smpl.json"; st=$?; check "metadata of $name names $model" $st
 done
 # The female and male outputs differ (different models), proving the pick is used.
 ! cmp -s "$work/batch/f_walk.glb" "$work/batch/m_walk.glb"; st=$?; check "female and male outputs differ" $st
+
+# A folder of symbolic links (how clusters share the licensed models): file links
+# whose targets have other names, and a kind folder that is a link. Each pick is
+# the link's name, and the export equals the one from the real folder.
+mkdir -p "$work/store/v1" "$work/links"
+cp "$folder/SMPL_FEMALE.pkl" "$work/store/v1/a1b2c3"
+cp "$folder/SMPL_NEUTRAL.npz" "$work/store/v1/d4e5f6"
+ln -s "$work/store/v1/a1b2c3" "$work/links/SMPL_FEMALE.pkl"
+ln -s ../store/v1/d4e5f6 "$work/links/SMPL_NEUTRAL.npz"
+ln -s "$work/store/v1" "$work/links/smpl"  # a link to a folder (holds no released names)
+mkdir -p "$work/kindlink/real/smpl"
+cp "$folder/SMPL_MALE.pkl" "$work/kindlink/real/smpl/SMPL_MALE.pkl"
+mkdir -p "$work/links2"; ln -s "$work/kindlink/real/smpl" "$work/links2/smpl"
+"$exe" --model "$work/links" --motion "$rel/mixed_gender/f_walk.npz" --out "$work/lf.glb" >"$work/out" 2>&1
+st=$?; check "folder of links + female motion: $(cat "$work/out")" $st
+grep -qx "model: $work/links/SMPL_FEMALE.pkl" "$work/out"; st=$?; check "linked female model named by its link: $(cat "$work/out")" $st
+cmp -s "$work/lf.glb" "$work/fw.glb"; st=$?; check "export through a link equals the real file's" $st
+"$exe" --model "$work/links" --out "$work/ln.glb" >"$work/out" 2>&1
+grep -qx "model: $work/links/SMPL_NEUTRAL.npz" "$work/out"; st=$?; check "relative link to the neutral model: $(cat "$work/out")" $st
+"$exe" --model "$work/links2" --motion "$rel/mixed_gender/m_walk.npz" --out "$work/lm.glb" >"$work/out" 2>&1
+grep -qx "model: $work/links2/smpl/SMPL_MALE.pkl" "$work/out"; st=$?; check "kind folder that is a link: $(cat "$work/out")" $st
+# A dangling link with a released name: the load error names it and the reason.
+mkdir -p "$work/dangling"; ln -s "$work/nowhere.npz" "$work/dangling/SMPLX_NEUTRAL.npz"
+"$exe" --model "$work/dangling" --out "$work/d.glb" >"$work/out" 2>&1
+[ $? = 2 ]; st=$?; check "dangling link exits 2" $st
+grep -q "$work/dangling/SMPLX_NEUTRAL.npz.*No such file" "$work/out"; st=$?; check "dangling link error: $(cat "$work/out")" $st
+# A folder with files but no released names: the error lists what it saw.
+mkdir -p "$work/other"; cp "$folder/SMPL_NEUTRAL.npz" "$work/other/my_model.npz"
+"$exe" --model "$work/other" --out "$work/o.glb" >"$work/out" 2>&1
+grep -q "no model files with the released names.*files seen: my_model.npz" "$work/out"; st=$?; check "unrecognised names are listed: $(cat "$work/out")" $st
 
 # A folder without released names, or without the motion's kind: one error line, exit 2.
 mkdir -p "$work/empty"

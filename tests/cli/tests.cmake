@@ -75,3 +75,33 @@ add_test(NAME cli.layouts.generation_equivalent
           --fixtures ${SMPL_FIXTURE_DIR} --web-src ${PROJECT_SOURCE_DIR}/tests/web --cases generation
           --equivalent --work ${CMAKE_CURRENT_BINARY_DIR}/layouts_generation_equivalent)
 set_tests_properties(cli.layouts.generation cli.layouts.generation_equivalent PROPERTIES LABELS web)
+
+# The README's `cmake --build build --target ...` commands work in a build configured as its
+# quick start configures one (tools are defined even with the tests off): configure only.
+add_test(NAME cli.readme_build_commands
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/readme_build_commands.py ${PROJECT_SOURCE_DIR}
+          ${CMAKE_CURRENT_BINARY_DIR} ${CMAKE_COMMAND})
+set_tests_properties(cli.readme_build_commands PROPERTIES LABELS cli)
+
+# smpl-skin-report --help prints its usage (not read as a model path); an unknown option is
+# a usage error.
+add_test(NAME cli.skin_report_help COMMAND $<TARGET_FILE:smpl-skin-report> --help)
+set_tests_properties(cli.skin_report_help PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "^Usage: smpl-skin-report \\[--poses N\\] \\[MODEL \\.\\.\\.\\]")
+add_test(NAME cli.skin_report_unknown_option COMMAND $<TARGET_FILE:smpl-skin-report> --bogus)
+set_tests_properties(cli.skin_report_unknown_option PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "^Error in arguments: unknown option '--bogus'")
+
+# samples/run.py as the README says to run it by hand: no --fixtures, so it writes its own
+# fixtures with the scripts it lists (a script missing from its list fails here, not in CTest's
+# cli.readme_samples, which reuses the build's fixtures).
+add_test(NAME cli.readme_samples_by_hand
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/samples/run.py --exe $<TARGET_FILE:smpl-export>
+          --work ${CMAKE_CURRENT_BINARY_DIR}/readme_samples_by_hand)
+set_tests_properties(cli.readme_samples_by_hand PROPERTIES LABELS cli TIMEOUT 900)
+
+# Summary on stdout, notes and warnings on stderr, -q keeps warnings; batch [k/N] lines, ETA
+# on a terminal, repeated notes folded with their count (tests/cli/output_streams_test.sh).
+add_test(NAME cli.output_streams
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/output_streams_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli.output_streams PROPERTIES LABELS cli)

@@ -238,7 +238,7 @@ def symlink_loop():
             problems.append(f"no error line for {name}")
     if len(errors) != 4:
         problems.append(f"{len(errors)} error lines: {errors}")
-    if "folder.npz: not a regular file" not in out:
+    if "folder.npz: not a regular file" not in err:  # a note: on stderr
         problems.append("folder.npz not reported")
     if "batch: 2 converted, 0 up to date, 4 failed" not in out:
         problems.append(f"summary: {out.strip().splitlines()[-1:]}")

@@ -91,9 +91,61 @@ def check_playback(arm, mesh_obj, model, names, poses, weights, v_shaped, joints
     rt.check(worst <= 1e-5, "frame-change handler: vertex error %.3g m" % worst)
 
 
+README = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "README.md")
+
+
+def readme_import_line():
+    """The README's one-line import of the add-on's module (Blender add-on section)."""
+    with open(README, encoding="utf-8") as f:
+        lines = [l.strip() for l in f if l.startswith("    import sys; correctives = ")]
+    rt.check(len(lines) == 1, "README: expected one '    import sys; correctives = ...' line, got %d" % len(lines))
+    return lines[0] if lines else "correctives = None"
+
+
+def run_line(line):
+    scope = {}
+    try:
+        exec(line, scope)
+    except Exception as e:  # noqa: BLE001  (reported as a check failure)
+        rt.check(False, "README import line failed: %s: %s" % (type(e).__name__, e))
+    return scope.get("correctives")
+
+
+def check_readme_import():
+    """The README's import line finds the module as a legacy add-on (this
+    Blender) and as a Blender 4.2+ extension: the installed package loaded
+    under bl_ext.user_default.smpl_correctives, with the legacy names hidden."""
+    import importlib.util
+    import types
+    from smpl_correctives import correctives as legacy
+    line = readme_import_line()
+    rt.check(run_line(line) is legacy, "README import line: not smpl_correctives.correctives")
+    pkg_dir = os.path.dirname(legacy.__file__)
+    hidden = {n: sys.modules.pop(n) for n in list(sys.modules) if n.split(".")[0] == "smpl_correctives"}
+    try:
+        for name in ("bl_ext", "bl_ext.user_default"):
+            parent = types.ModuleType(name)
+            parent.__path__ = []
+            sys.modules[name] = parent
+        name = "bl_ext.user_default.smpl_correctives"
+        spec = importlib.util.spec_from_file_location(name, os.path.join(pkg_dir, "__init__.py"),
+                                                      submodule_search_locations=[pkg_dir])
+        ext = importlib.util.module_from_spec(spec)
+        sys.modules[name] = ext
+        spec.loader.exec_module(ext)
+        found = run_line(line)
+        rt.check(found is not None and found.__name__ == name + ".correctives" and hasattr(found, "apply"),
+                 "README import line as an extension: got %r" % found)
+    finally:
+        for n in [n for n in sys.modules if n.split(".")[0] == "bl_ext"]:
+            del sys.modules[n]
+        sys.modules.update(hidden)
+
+
 def main():
     args = parse_args()
     install(args.zip)
+    check_readme_import()
     from smpl_correctives import correctives
     bpy.ops.smpl.import_asset(filepath=os.path.abspath(args.asset), feet_on_ground=False)  # world positions as exported
     arms = [o for o in bpy.data.objects if o.type == "ARMATURE"]

@@ -82,9 +82,12 @@ TEST(ModelFolder, ErrorsNameTheFolderAndWhatWasFound) {
   EXPECT_EQ(
       pick({"SMPLX_NEUTRAL.npz"}, ModelKind::Smpl, ""),
       "error: models: no neutral SMPL model (e.g. smpl/SMPL_NEUTRAL.pkl); found SMPLX_NEUTRAL.npz");
-  EXPECT_EQ(pick({"notes.txt"}, std::nullopt, ""),
+  EXPECT_EQ(pick({"notes.txt", "my_smplx.npz"}, std::nullopt, ""),
             "error: models: no model files with the released names (e.g. SMPLX_NEUTRAL.npz, "
-            "SMPL_FEMALE.pkl)");
+            "SMPL_FEMALE.pkl); files seen: notes.txt, my_smplx.npz");
+  EXPECT_EQ(pick({}, std::nullopt, ""),
+            "error: models: no model files with the released names (e.g. SMPLX_NEUTRAL.npz, "
+            "SMPL_FEMALE.pkl); no files in it or its subfolders");
 }
 
 }  // namespace

@@ -166,21 +166,41 @@ bool report(const std::string& title, const BodyModel& model) {
 }  // namespace
 }  // namespace smpl
 
+namespace {
+constexpr const char* kUsage =
+    "Usage: smpl-skin-report [--poses N] [--motion FILE [--stride S]] [MODEL ...]\n"
+    "Held-out skin error of truncated vs fitted weights, with and without the corrective refit\n"
+    "(N = 1, 2, 4, 8 influences) for the built-in body, then each model file (.npz or .pkl);\n"
+    "N held-out poses (default 32); --motion: also the frames of a motion (every S-th).\n";
+
+bool isFlag(const std::string& a) { return a == "--poses" || a == "--stride" || a == "--motion"; }
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace smpl;
+  // --help anywhere prints the usage; leading --poses/--motion/--stride take a
+  // value; any other dash argument is an unknown option (never a model path).
   int first = 1;
-  for (; first + 1 < argc; first += 2) {
-    const std::string flag = argv[first], value = argv[first + 1];
+  while (first + 1 < argc && isFlag(argv[first])) first += 2;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") return std::printf("%s", kUsage), 0;
+    const bool value_of_flag = i < first && (i - 1) % 2 == 1;
+    if (arg.size() > 1 && arg[0] == '-' && !value_of_flag && !(i < first && isFlag(arg)))
+      return std::fprintf(stderr, "Error in arguments: unknown option '%s'\n%s", arg.c_str(),
+                          kUsage),
+             1;
+  }
+  for (int i = 1; i + 1 < first; i += 2) {
+    const std::string flag = argv[i], value = argv[i + 1];
     if (flag == "--poses") {
       held_out_poses = std::atoi(value.c_str());
       if (held_out_poses < 1) return std::fprintf(stderr, "--poses: expected N >= 1\n"), 1;
     } else if (flag == "--stride") {
       motion_stride = std::atoi(value.c_str());
       if (motion_stride < 1) return std::fprintf(stderr, "--stride: expected S >= 1\n"), 1;
-    } else if (flag == "--motion") {
-      motion_path = value;
     } else {
-      break;
+      motion_path = value;
     }
   }
   bool ok = report("builtin", demoBody());

@@ -13,7 +13,7 @@ CASES: one dict per case, the format every layouts/*_cases.py shares:
   args      extra smpl-export arguments
   outputs   None, or the output suffixes of --track all (WORK/<name><suffix>.glb)
   frames    three clip-relative frames; with outputs, a dict suffix -> three frames
-  notes     substrings the summary (stdout) must contain
+  notes     substrings stderr (the notes) must contain
   refusal   None, or {"exit": 2, "message": substring of the one stderr line,
             "forbid": substrings that line must not contain}
 

@@ -7,7 +7,7 @@
 Per case: smpl-export --model FIXTURES/models/<model>.npz --motion <fixture> (a folder:
 --motion-sequence) --out WORK/<name>.glb --skin-weights truncated --max-influences 4 <args>.
  - a refusal: the exit code, one line on stderr naming the problem, no output (nor temporary) left;
- - otherwise: exit 0, every `notes` substring on stdout and no `absent` one, the sidecar's
+ - otherwise: exit 0, every `notes` substring on stderr and no `absent` one, the sidecar's
    `motion_source` when the case gives `source`, then for each output the expected vertices
    (the case module's numpy reference) as JSON and three.js playing the GLB
    (tests/web/three_node_test.mjs --anim-reference ... --tol 1e-6);
@@ -100,10 +100,11 @@ def check_refusal(case, run, work):
 
 
 def check_notes(case, run):
-    problems = ["stdout lacks %r" % n for n in case.get("notes", []) if n not in run.stdout]
-    problems += ["stdout has %r" % n for n in case.get("absent", []) if n in run.stdout]
+    """Notes are on stderr (docs/cli.md "Outputs")."""
+    problems = ["stderr lacks %r" % n for n in case.get("notes", []) if n not in run.stderr]
+    problems += ["stderr has %r" % n for n in case.get("absent", []) if n in run.stderr]
     if problems:
-        problems.append("stdout was: %s" % " | ".join(run.stdout.strip().splitlines()))
+        problems.append("stderr was: %s" % " | ".join(run.stderr.strip().splitlines()))
     return problems
 
 
@@ -166,9 +167,9 @@ def run_case(mod, case, a, work):
         if problem:
             problems.append("%s: %s" % (os.path.basename(path), problem))
         for pattern, value in ref.get("numbers", {}).items():  # a note's number, printed with 3 decimals
-            found = re.search(pattern, run.stdout)
+            found = re.search(pattern, run.stderr)
             if not found:
-                problems.append("stdout lacks a note matching %r (numpy: %.3f)" % (pattern, value))
+                problems.append("stderr lacks a note matching %r (numpy: %.3f)" % (pattern, value))
             elif abs(float(found.group(1)) - value) > 0.0015:
                 problems.append("note says %s, numpy %.3f: %r" % (found.group(1), value, pattern))
     return worst, problems

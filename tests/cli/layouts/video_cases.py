@@ -7,7 +7,7 @@ tests/cli/layouts/run_cases.py --cases video.
 
 Each case: name, fixture (relative to FIXTURE_DIR; a folder is given to --motion-sequence), model,
 args, outputs (suffixes when --track all writes several files, else None), frames (three
-clip-relative frames), notes (substrings stdout must contain), absent (substrings it must not
+clip-relative frames), notes (substrings stderr must contain), absent (substrings it must not
 contain), source (what the sidecar's motion_source must say, or None), refusal (None or
 {"exit", "message"}).
 
