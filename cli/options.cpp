@@ -222,11 +222,10 @@ const std::vector<OptionSpec> kOptions = {
      [](V, S* s) { return s->request.quantize_animation = true, Status(); }},
     {"--preset", nullptr, "web|engine|archive", Applies::Any, nullptr,
      "a bundle of the size options; options given explicitly override it, and each applies only "
-     "where it can (the glTF-only ones to glTF, --quantize-animation with a motion). Sizes: "
-     "full-size "
-     "SMPL stand-in with a 120-frame motion; errors: max vertex distance to the model's math over "
-     "the "
-     "motion (tools/bench/preset_table.py):{presets}",
+     "where it can (the glTF-only ones to glTF, --quantize-animation with a motion). Measured "
+     "(tools/bench/preset_table.py) on a full-size SMPL stand-in (random values) with a 120-frame "
+     "motion: GLB size, and the added max vertex distance to the model's math over the "
+     "motion:{presets}",
      [](V v, S* s) { return s->preset = v, Status(); }},
     {"--gltf-embed", nullptr, nullptr, Applies::Format, nullptr,
      ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); "

@@ -41,17 +41,18 @@ const std::vector<Preset>& presets() {
         {"--corrective-epsilon", "1e-5"},
         {"--quantize-animation", ""},
         {"--meshopt", ""}},
-       "{web-measured}"},
+       "15.2 MB, 52% of the default export's 29.3 MB; +0.005 mm max error over the default"},
       {"engine",
        "what Unity, Unreal and Godot import without an extension or an encoding they may lack "
        "(no Draco, meshopt or quantisation; sparse accessors are core glTF; add "
        "--quantize-animation for importers that read normalised keys)",
        {{"--max-influences", "4"}, {"--corrective-epsilon", "1e-5"}},
-       "{engine-measured}"},
+       "29.3 MB, 100% (the stand-in's random correctives have no delta under 1e-5 m); +0.000 mm"},
       {"archive",
        "exact: every influence of the model, float data",
        {{"--max-influences", "all"}, {"--skin-weights", "truncated"}},
-       "{archive-measured}"},
+       "30.0 MB, 102%; 0.000 mm (the default export, pruned to 4 influences: 26.9 mm on this "
+       "random stand-in)"},
   };
   return table;
 }

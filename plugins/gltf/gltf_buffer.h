@@ -13,7 +13,7 @@
 namespace smpl {
 
 // EXT_meshopt_compression codecs (gltf_meshopt.h).
-enum class MeshoptMode { Attributes, Triangles };
+enum class MeshoptMode { Attributes, Indices };
 enum class MeshoptFilter { None, Quaternion };
 
 // One bufferView to compress with EXT_meshopt_compression (--meshopt).

@@ -10,7 +10,8 @@ namespace {
 
 const char kExtension[] = "EXT_meshopt_compression";
 
-// The view's bytes, encoded: the vertex codec (ATTRIBUTES) or the index codec (TRIANGLES).
+// The view's bytes, encoded: the vertex codec (ATTRIBUTES) or the index sequence codec
+// (INDICES: every index kept in place; the TRIANGLES codec may rotate a triangle's corners).
 Result<std::string> encodeView(const std::string& bin, const tinygltf::BufferView& view,
                                const MeshoptMark& mark, size_t count) {
   const auto* data = reinterpret_cast<const unsigned char*>(bin.data() + view.byteOffset);
@@ -33,9 +34,9 @@ Result<std::string> encodeView(const std::string& bin, const tinygltf::BufferVie
       }
       largest = std::max(largest, indices[i]);
     }
-    out.resize(meshopt_encodeIndexBufferBound(count, size_t(largest) + 1));
-    size = meshopt_encodeIndexBuffer(reinterpret_cast<unsigned char*>(&out[0]), out.size(),
-                                     indices.data(), count);
+    out.resize(meshopt_encodeIndexSequenceBound(count, size_t(largest) + 1));
+    size = meshopt_encodeIndexSequence(reinterpret_cast<unsigned char*>(&out[0]), out.size(),
+                                       indices.data(), count);
   }
   if (size == 0) return makeError("glTF writer: meshopt could not encode bufferView");
   out.resize(size);
@@ -48,7 +49,7 @@ nlohmann::json extensionOf(const MeshoptMark& mark, size_t offset, size_t length
                       {"byteLength", length},
                       {"byteStride", mark.element_size},
                       {"count", count},
-                      {"mode", mark.mode == MeshoptMode::Attributes ? "ATTRIBUTES" : "TRIANGLES"}};
+                      {"mode", mark.mode == MeshoptMode::Attributes ? "ATTRIBUTES" : "INDICES"}};
   if (mark.filter == MeshoptFilter::Quaternion) e["filter"] = "QUATERNION";
   return e;
 }

@@ -9,7 +9,9 @@
 //
 // Spec: KhronosGroup/glTF extensions/2.0/Vendor/EXT_meshopt_compression.
 // ATTRIBUTES: byteStride a multiple of 4, at most 256, byteLength = count *
-// byteStride; TRIANGLES: a triangle list of 2- or 4-byte indices. Filters:
+// byteStride; INDICES: 2- or 4-byte indices (the triangle list, kept exactly:
+// the TRIANGLES codec may rotate corners, so the view would not decode to the
+// same bytes). Filters:
 // QUATERNION (stride 8: the view holds meshopt_encodeFilterQuat's output,
 // decoded to normalised int16 x, y, z, w). Views meshopt cannot take (sparse
 // indices, 6-byte int16 triples, Draco's blob) stay uncompressed in buffer 0.
@@ -26,7 +28,7 @@
 namespace smpl {
 
 // With b.meshopt, marks bufferView `view` for compression: `element_size` bytes per element
-// (ATTRIBUTES: multiple of 4, <= 256; TRIANGLES: 2 or 4, the index size).
+// (ATTRIBUTES: multiple of 4, <= 256; INDICES: 2 or 4, the index size).
 void markMeshopt(GltfBuild& b, int view, MeshoptMode mode, int element_size,
                  MeshoptFilter filter = MeshoptFilter::None);
 

@@ -83,14 +83,14 @@ int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int targ
   return accessor;
 }
 
-// Integer accessor; meshopt takes index lists (TRIANGLES) and 4-byte-multiple elements.
+// Integer accessor; meshopt takes index lists (INDICES) and 4-byte-multiple elements.
 template <class T>
 int addIntegers(GltfBuild& b, const std::vector<T>& values, int component_type, int type,
                 int target) {
   const int view = addView(b, values.data(), values.size() * sizeof(T), target);
   const int element = int(sizeof(T)) * componentCount(type);
   if (target == TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER)
-    markMeshopt(b, view, MeshoptMode::Triangles, int(sizeof(T)));
+    markMeshopt(b, view, MeshoptMode::Indices, int(sizeof(T)));
   else if (element % 4 == 0)
     markMeshopt(b, view, MeshoptMode::Attributes, element);
   return addAccessor(b, view, component_type, type, values.size() / size_t(componentCount(type)));

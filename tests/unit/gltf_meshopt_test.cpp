@@ -69,8 +69,8 @@ std::string viewBytes(const Glb& g, size_t v) {
   EXPECT_EQ(count * stride, length) << "view " << v;
   const auto* src = reinterpret_cast<const unsigned char*>(g.bin.data()) + size_t(e["byteOffset"]);
   std::string out(length, '\0');
-  const int rc = e["mode"] == "TRIANGLES"
-                     ? meshopt_decodeIndexBuffer(&out[0], count, stride, src, e["byteLength"])
+  const int rc = e["mode"] == "INDICES"
+                     ? meshopt_decodeIndexSequence(&out[0], count, stride, src, e["byteLength"])
                      : meshopt_decodeVertexBuffer(&out[0], count, stride, src, e["byteLength"]);
   EXPECT_EQ(rc, 0) << "view " << v;
   if (e.value("filter", "NONE") == "QUATERNION") meshopt_decodeFilterQuat(&out[0], count, stride);
