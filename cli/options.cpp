@@ -223,9 +223,10 @@ const std::vector<OptionSpec> kOptions = {
     {"--preset", nullptr, "web|engine|archive", Applies::Any, nullptr,
      "a bundle of the size options; options given explicitly override it, and each applies only "
      "where it can (the glTF-only ones to glTF, --quantize-animation with a motion). Measured "
-     "(tools/bench/preset_table.py) on a full-size SMPL stand-in (random values) with a 120-frame "
-     "motion: GLB size, and the added max vertex distance to the model's math over the "
-     "motion:{presets}",
+     "(tools/bench/preset_table.py) on the built-in body with a 120-frame motion: GLB size, and "
+     "the "
+     "vertex distance to the model's math over the motion, added to the default export's:"
+     "{presets}",
      [](V v, S* s) { return s->preset = v, Status(); }},
     {"--gltf-embed", nullptr, nullptr, Applies::Format, nullptr,
      ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); "

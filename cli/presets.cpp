@@ -41,18 +41,17 @@ const std::vector<Preset>& presets() {
         {"--corrective-epsilon", "1e-5"},
         {"--quantize-animation", ""},
         {"--meshopt", ""}},
-       "15.2 MB, 52% of the default export's 29.3 MB; +0.005 mm max error over the default"},
+       "1.48 MB, 7% of the default export's 19.9 MB; max error -0.003 mm, mean +0.020 mm"},
       {"engine",
        "what Unity, Unreal and Godot import without an extension or an encoding they may lack "
        "(no Draco, meshopt or quantisation; sparse accessors are core glTF; add "
        "--quantize-animation for importers that read normalised keys)",
        {{"--max-influences", "4"}, {"--corrective-epsilon", "1e-5"}},
-       "29.3 MB, 100% (the stand-in's random correctives have no delta under 1e-5 m); +0.000 mm"},
+       "2.50 MB, 13%; max +0.000 mm, mean +0.0002 mm"},
       {"archive",
        "exact: every influence of the model, float data",
        {{"--max-influences", "all"}, {"--skin-weights", "truncated"}},
-       "30.0 MB, 102%; 0.000 mm (the default export, pruned to 4 influences: 26.9 mm on this "
-       "random stand-in)"},
+       "20.0 MB, 100%; exact: max 0.000 mm (the default's 4 influences: 1.66 mm)"},
   };
   return table;
 }
