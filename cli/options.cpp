@@ -7,6 +7,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "cli/presets.h"
 #include "cli/settings.h"
 #include "core/memory_budget.h"
 #include "core/number_text.h"
@@ -221,6 +222,22 @@ const std::vector<OptionSpec> kOptions = {
     {"--draco", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
      [](V, S* s) { return s->request.draco = true, Status(); }},
+    {"--meshopt", nullptr, nullptr, Applies::Format, nullptr,
+     "glTF: meshopt-compress vertex, index, morph-target and animation data "
+     "(EXT_meshopt_compression; three.js, Babylon.js and glTFast decode it)",
+     [](V, S* s) { return s->request.meshopt = true, Status(); }},
+    {"--quantize-animation", nullptr, nullptr, Applies::Format, nullptr,
+     "glTF: rotation keys as normalised int16, morph weight keys as normalised 16-bit integers "
+     "where they fit (core glTF 2.0, no extension); needs a motion",
+     [](V, S* s) { return s->request.quantize_animation = true, Status(); }},
+    {"--preset", nullptr, "web|engine|archive", Applies::Any, nullptr,
+     "a bundle of the size options; options given explicitly override it, and each applies only "
+     "where it can (the glTF-only ones to glTF, --quantize-animation with a motion). Measured "
+     "(tools/bench/preset_table.py) on the built-in body with a 120-frame motion: GLB size, and "
+     "the "
+     "vertex distance to the model's math over the motion, added to the default export's:"
+     "{presets}",
+     [](V v, S* s) { return s->preset = v, Status(); }},
     {"--gltf-embed", nullptr, nullptr, Applies::Format, nullptr,
      ".gltf: embed the buffer in the JSON as a base64 data URI (one file, a third larger); "
      "default: the "
@@ -430,7 +447,8 @@ std::string expand(std::string text) {
       {"{formats}", names},
       {"{default-format}", writerFormats().front().name},
       {"{extensions}", extensions},
-      {"{extensions|}", bars}};
+      {"{extensions|}", bars},
+      {"{presets}", text.find("{presets}") == std::string::npos ? "" : presetsHelp()}};
   for (const auto& [word, value] : words)
     for (size_t at; (at = text.find(word)) != std::string::npos;)
       text.replace(at, std::string(word).size(), value);

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "cli/options.h"
+#include "cli/presets.h"
 #include "core/io/printable.h"
 #include "exporter/request/check_request.h"
 
@@ -92,6 +93,8 @@ Result<Settings> parseSettings(int argc, const char* const* argv) {
     if (findOption(option.first)->hashed == Hashed::Value)
       s.request.hashed_options.push_back(option);
   if (s.help || s.version) return s;
+  if (!s.preset.empty())
+    if (Status st = applyPreset(s.preset, &s); !st) return st.error();
   if (Status st = checkRules(s); !st) return st.error();
   return s;
 }

@@ -25,6 +25,7 @@ struct Settings {
   bool quiet = false;                    // --quiet, -q: no summary
   bool help = false;
   bool version = false;
+  std::string preset;  // --preset web|engine|archive (cli/presets.h), applied after parsing
   // (name, value) of every option as given, in order (aliases as their option).
   std::vector<std::pair<std::string, std::string>> given_options;
 };

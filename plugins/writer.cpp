@@ -21,7 +21,7 @@ bool endsWithNoCase(const std::string& text, const std::string& suffix) {
 std::deque<WriterFormat>& table() {
   static std::deque<WriterFormat> rows = [] {
     const std::vector<std::string> gltf_options = {"--corrective-epsilon", "--quantize-morphs",
-                                                   "--draco"};
+                                                   "--draco", "--meshopt", "--quantize-animation"};
     std::vector<std::string> gltf_text_options = gltf_options;
     gltf_text_options.push_back("--gltf-embed");
     return std::deque<WriterFormat>{

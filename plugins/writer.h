@@ -30,6 +30,11 @@ struct WriterOptions {
                                  // (ExportOptions), which marks MorphTarget::quantized: writers
                                  // read the mark, not this flag
   bool draco = false;  // KHR_draco_mesh_compression for the base mesh (sequential, order kept)
+  // --meshopt: EXT_meshopt_compression of the vertex, index, morph and animation views
+  bool meshopt = false;
+  // --quantize-animation: rotation keys normalised int16, morph weight keys normalised
+  // (u)int16 where they fit (core glTF 2.0; plugins/gltf/gltf_writer.cpp)
+  bool quantize_animation = false;
 };
 
 struct Writer {
@@ -98,5 +103,9 @@ class ScopedWriterFormat {
   ScopedWriterFormat(const ScopedWriterFormat&) = delete;
   ScopedWriterFormat& operator=(const ScopedWriterFormat&) = delete;
 };
+
+// False in builds without meshoptimizer (SMPL_STATIC: Debian ships no static
+// libmeshoptimizer); --meshopt is then refused by the request check.
+bool meshoptAvailable();
 
 }  // namespace smpl

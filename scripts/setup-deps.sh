@@ -5,7 +5,7 @@
 #   scripts/setup-deps.sh --build  only what building smpl-export needs
 set -euo pipefail
 
-build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev
+build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev libmeshoptimizer-dev
             libssl-dev libdeflate-dev pkg-config python3)
 test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy python3-torch python3-joblib blender
            libassimp-dev mono-mcs ccache chromium clang-format zsh fish groff-base)

@@ -64,6 +64,10 @@ Status checkMorphOptions(const ExportRequest& r) {
     return usage(
         "--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
         "--expression-keys there are none");
+  if (r.quantize_animation && r.motions.empty() && r.motion_dir.empty())
+    return usage(
+        "--quantize-animation quantises animation keys; without --motion or --motion-dir there are "
+        "none");
   if (r.corrective_basis > 0 && r.encoding == CorrectiveEncoding::Split)
     return usage(
         "--corrective-basis conflicts with --corrective-weights split (basis weights are signed or "
@@ -135,6 +139,9 @@ Status checkRequest(const ExportRequest& r) {
   }
   if (!format)
     return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
+  if (r.meshopt && !meshoptAvailable())
+    return usage("--meshopt: this smpl-export was built without meshoptimizer (the static build: "
+                 "Debian ships no static libmeshoptimizer); use the Debian package build");
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }
 

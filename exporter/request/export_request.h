@@ -65,6 +65,8 @@ struct ExportRequest {
   double corrective_epsilon = 0.0;  // --corrective-epsilon M: metres in [0, 0.01] (glTF)
   bool quantize_morphs = false;     // --quantize-morphs (glTF int16 deltas)
   bool draco = false;               // --draco (glTF)
+  bool meshopt = false;             // --meshopt (glTF): EXT_meshopt_compression
+  bool quantize_animation = false;  // --quantize-animation (glTF): normalised int16 keys
   bool gltf_embed = false;          // --gltf-embed: .gltf buffer as a data URI (else FILE.bin)
   std::string fbx_units = "m";      // --fbx-units m|cm
   int fbx_version = 7400;           // --fbx-version 7400|7500

@@ -46,6 +46,8 @@ WriterOptions writerOptionsOf(const ExportRequest& r, const std::string& buffer_
   w.morph_epsilon = r.corrective_epsilon;
   w.quantize_morphs = r.quantize_morphs;
   w.draco = r.draco;
+  w.meshopt = r.meshopt;
+  w.quantize_animation = r.quantize_animation;
   return w;
 }
 

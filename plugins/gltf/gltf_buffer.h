@@ -12,9 +12,23 @@
 
 namespace smpl {
 
+// EXT_meshopt_compression codecs (gltf_meshopt.h).
+enum class MeshoptMode { Attributes, Indices };
+enum class MeshoptFilter { None, Quaternion };
+
+// One bufferView to compress with EXT_meshopt_compression (--meshopt).
+struct MeshoptMark {
+  int view = 0;
+  MeshoptMode mode = MeshoptMode::Attributes;
+  int element_size = 4;  // bytes per element (the extension's byteStride)
+  MeshoptFilter filter = MeshoptFilter::None;
+};
+
 struct GltfBuild {
   tinygltf::Model model;
-  std::string bin;  // buffer 0; every bufferView starts 4-byte aligned
+  std::string bin;                         // buffer 0; every bufferView starts 4-byte aligned
+  bool meshopt = false;                    // --meshopt: views are marked as they are added
+  std::vector<MeshoptMark> meshopt_marks;  // in view order
 };
 
 inline size_t align4(size_t n) { return (n + 3) & ~size_t(3); }

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "plugins/gltf/gltf_meshopt.h"
+
 namespace smpl {
 namespace {
 
@@ -38,6 +40,7 @@ int addDense(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
     for (size_t v = 0; v < v_count; ++v)
       for (int c = 0; c < 3; ++c) q[4 * v + size_t(c)] = quantize(d(Eigen::Index(v), c));
     const int view = addView(b, q.data(), q.size() * 2, TINYGLTF_TARGET_ARRAY_BUFFER, 8);
+    markMeshopt(b, view, MeshoptMode::Attributes, 8);
     accessor =
         addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, v_count, true);
     shortBounds(q, 4, false, &b.model.accessors[size_t(accessor)]);
@@ -46,6 +49,7 @@ int addDense(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
     for (size_t v = 0; v < v_count; ++v)
       for (int c = 0; c < 3; ++c) f[3 * v + size_t(c)] = d(Eigen::Index(v), c);
     const int view = addView(b, f.data(), f.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
+    markMeshopt(b, view, MeshoptMode::Attributes, 12);
     accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v_count);
     tinygltf::Accessor& a = b.model.accessors[size_t(accessor)];
     floatBounds(f.data(), v_count, 3, &a.minValues, &a.maxValues);
@@ -94,6 +98,7 @@ int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
     for (size_t i = 0; i < kept.size(); ++i)
       for (int c = 0; c < 3; ++c) f[3 * i + size_t(c)] = d(Eigen::Index(kept[i]), c);
     value_view = addView(b, f.data(), f.size() * 4, 0);
+    markMeshopt(b, value_view, MeshoptMode::Attributes, 12);  // (int16 triples, 6 bytes: not)
     floatBounds(f.data(), kept.size(), 3, &bounds.minValues, &bounds.maxValues);
     if (kept.size() < v_count) widenToZero(&bounds);
   }

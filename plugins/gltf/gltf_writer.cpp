@@ -2,10 +2,11 @@
 // buffer, one 4-byte aligned bufferView per accessor); tinygltf writes the
 // JSON, and the GLB container and binary chunk are laid out here
 // (gltf_buffer.h) so the buffer is copied once. Morph targets may be sparse or
-// quantized (gltf_morphs.h, morph_scales.h) and the base mesh Draco-compressed
-// (gltf_draco.h). Computes nothing about the body: it only converts layouts
-// (row-major floats, glTF's v = 1 - v, 4-slot skin sets) and tidies float
-// rounding so the Khronos validator reports no warnings.
+// quantized (gltf_morphs.h, morph_scales.h), the base mesh Draco-compressed
+// (gltf_draco.h), animation outputs normalised integers (--quantize-animation)
+// and the views meshopt-compressed (gltf_meshopt.h). Computes nothing about the body: it only
+// converts layouts (row-major floats, glTF's v = 1 - v, 4-slot skin sets) and tidies float rounding
+// so the Khronos validator reports no warnings.
 #include "plugins/gltf/gltf_writer.h"
 
 #include <tiny_gltf.h>
@@ -21,6 +22,7 @@
 #include "exporter/validate_asset.h"
 #include "plugins/gltf/gltf_buffer.h"
 #include "plugins/gltf/gltf_draco.h"
+#include "plugins/gltf/gltf_meshopt.h"
 #include "plugins/gltf/gltf_morphs.h"
 
 namespace smpl {
@@ -74,16 +76,23 @@ int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int targ
   const int n = componentCount(type);
   const size_t count = values.size() / size_t(n);
   const int view = addView(b, values.data(), values.size() * sizeof(float), target);
+  markMeshopt(b, view, MeshoptMode::Attributes, 4 * n);
   const int accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
   tinygltf::Accessor& a = b.model.accessors[size_t(accessor)];
   if (bounds && count > 0) floatBounds(values.data(), count, n, &a.minValues, &a.maxValues);
   return accessor;
 }
 
+// Integer accessor; meshopt takes index lists (INDICES) and 4-byte-multiple elements.
 template <class T>
 int addIntegers(GltfBuild& b, const std::vector<T>& values, int component_type, int type,
                 int target) {
   const int view = addView(b, values.data(), values.size() * sizeof(T), target);
+  const int element = int(sizeof(T)) * componentCount(type);
+  if (target == TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER)
+    markMeshopt(b, view, MeshoptMode::Indices, int(sizeof(T)));
+  else if (element % 4 == 0)
+    markMeshopt(b, view, MeshoptMode::Attributes, element);
   return addAccessor(b, view, component_type, type, values.size() / size_t(componentCount(type)));
 }
 
@@ -383,7 +392,50 @@ void addChannel(tinygltf::Animation& anim, int input, int output, int node, cons
   anim.channels.push_back(channel);
 }
 
-Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node) {
+// Rotation keys (x, y, z, w): float, or with --quantize-animation normalised
+// SHORT (core glTF 2.0 animation samplers: c = round(32767 q), decoded
+// max(c / 32767, -1)); with --meshopt the quantised keys are meshopt's
+// QUATERNION filter of the same quaternions (16-bit components).
+int addRotations(GltfBuild& b, const std::vector<float>& xyzw, bool quantize) {
+  if (!quantize) return addFloats(b, xyzw, TINYGLTF_TYPE_VEC4, 0, false);
+  std::vector<int16_t> q;
+  MeshoptFilter filter = MeshoptFilter::None;
+  if (b.meshopt) {
+    q = quaternionFilter(xyzw);
+    filter = MeshoptFilter::Quaternion;
+  } else {
+    q.resize(xyzw.size());
+    for (size_t i = 0; i < xyzw.size(); ++i)
+      q[i] = int16_t(std::nearbyint(std::max(-1.0f, std::min(1.0f, xyzw[i])) * 32767.0f));
+  }
+  const int view = addView(b, q.data(), q.size() * sizeof(int16_t), 0);
+  markMeshopt(b, view, MeshoptMode::Attributes, 8, filter);
+  return addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC4, xyzw.size() / 4,
+                     true);
+}
+
+// Morph weight keys: float, or with --quantize-animation normalised
+// UNSIGNED_SHORT (round(65535 w)) when every weight of the clip is in [0, 1]
+// (split, unit, DMPL and animated-expression weights), SHORT (round(32767 w))
+// when in [-1, 1]; otherwise (signed diagonal weights reach -2) float.
+int addMorphWeights(GltfBuild& b, const std::vector<float>& w, bool quantize) {
+  float lo = 0.f, hi = 0.f;
+  for (float v : w) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!quantize || lo < -1.f || hi > 1.f) return addFloats(b, w, TINYGLTF_TYPE_SCALAR, 0, false);
+  const bool positive = lo >= 0.f;
+  // meshopt takes 4-byte elements: an odd count gets one zero of padding.
+  std::vector<uint16_t> q(b.meshopt ? (w.size() + 1) / 2 * 2 : w.size(), 0);
+  for (size_t i = 0; i < w.size(); ++i)
+    q[i] = positive ? uint16_t(std::nearbyint(double(w[i]) * 65535.0))
+                    : uint16_t(int16_t(std::nearbyint(double(w[i]) * 32767.0)));
+  const int view = addView(b, q.data(), q.size() * sizeof(uint16_t), 0);
+  markMeshopt(b, view, MeshoptMode::Attributes, 4);
+  return addAccessor(
+      b, view, positive ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_SHORT,
+      TINYGLTF_TYPE_SCALAR, w.size(), true);
+}
+
+Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool quantize) {
   tinygltf::Animation anim;
   anim.name = clip.name;
   const std::vector<float> times(clip.times.begin(), clip.times.end());
@@ -398,7 +450,7 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node) {
       xyzw.insert(xyzw.end(),
                   {float(q.x() / n), float(q.y() / n), float(q.z() / n), float(q.w() / n)});
     }
-    addChannel(anim, input, addFloats(b, xyzw, TINYGLTF_TYPE_VEC4, 0, false), int(k), "rotation");
+    addChannel(anim, input, addRotations(b, xyzw, quantize), int(k), "rotation");
   }
   if (!clip.root_translation.empty()) {
     std::vector<float> xyz;
@@ -414,18 +466,20 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node) {
   }
   if (clip.morph_weights.size() > 0) {  // T x 0 without morph targets: no channel
     const std::vector<float> w = rowMajor(clip.morph_weights);
-    addChannel(anim, input, addFloats(b, w, TINYGLTF_TYPE_SCALAR, 0, false), mesh_node, "weights");
+    addChannel(anim, input, addMorphWeights(b, w, quantize), mesh_node, "weights");
   }
   b.model.animations.push_back(anim);
   return Status::success();
 }
 
-Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b) {
+Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b,
+                  MeshoptJson* meshopt) {
   Status st = validateAsset(asset);  // the same rules for every writer (exporter/validate_asset.h)
   if (!st) return st;
 
   tinygltf::Model& model = b.model;
   b.bin.reserve(estimatedBufferBytes(asset));
+  b.meshopt = options.meshopt;
   model.asset.version = "2.0";
   const std::string version = asset.metadata.exporter_version.empty()
                                   ? SMPL_EXPORT_VERSION
@@ -437,8 +491,13 @@ Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b
   addNodesAndSkin(b, asset);
   st = addMesh(b, asset, options);
   for (const AnimationClip& clip : asset.animations)
-    if (st) st = addAnimation(b, clip, int(asset.skeleton.names.size()));
+    if (st)
+      st = addAnimation(b, clip, int(asset.skeleton.names.size()), options.quantize_animation);
   if (!st) return st;
+  if (b.meshopt) requireExtension(model, "EXT_meshopt_compression");
+  Result<MeshoptJson> compressed = compressMeshoptViews(b);
+  if (!compressed) return compressed.error();
+  *meshopt = std::move(*compressed);
   b.bin.resize(align4(b.bin.size()), '\0');
   if (b.bin.size() > kMaxBufferBytes)
     return makeError("glTF writer: buffer of " + std::to_string(b.bin.size()) +
@@ -560,7 +619,8 @@ class GltfWriter : public Writer {
 
   Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const override {
     GltfBuild b;
-    Status st = buildModel(asset, options, b);
+    MeshoptJson meshopt;
+    Status st = buildModel(asset, options, b, &meshopt);
     if (!st) return st.error();
     const std::string byte_length = "\"byteLength\":" + std::to_string(b.bin.size());
     const bool external = !options.binary && !options.buffer_uri.empty();
@@ -572,7 +632,8 @@ class GltfWriter : public Writer {
     }
     Result<std::string> json = serializeJson(b.model, options.binary);
     if (!json) return json.error();
-    st = spliceMetadata(*json, metadataJson(asset));
+    st = spliceMeshoptJson(*json, meshopt, !options.binary);
+    if (st) st = spliceMetadata(*json, metadataJson(asset));
     if (st && options.binary)
       st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder),
                   byte_length);

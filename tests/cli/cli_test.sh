@@ -49,6 +49,9 @@ expect_failure too-many-influences 1 "Error in arguments: --max-influences must 
 expect_failure too-many-shape-keys 1 "Error in arguments: --shape-keys 100" --model "$models/smpl_small.npz" --out "$work/out.glb" --shape-keys 100
 expect_failure missing-uv 2 "Error loading $work/no_such.obj: cannot open: No such file or directory" --model "$models/smpl_small.npz" --out "$work/out.glb" --uv "$work/no_such.obj"
 expect_failure glb-option-in-fbx-batch 1 "--draco applies only to .glb, .gltf output" --model builtin --motion-dir "$work" --out-dir "$work/b" --format fbx --draco
+expect_failure meshopt-for-fbx 1 "--meshopt applies only to .glb, .gltf output" --model builtin --out "$work/out.fbx" --meshopt
+expect_failure web-preset-for-fbx 1 "--preset web makes glTF files (meshopt, quantised); FBX output has neither" --model builtin --out "$work/out.fbx" --preset web
+expect_failure quantize-animation-without-motion 1 "--quantize-animation quantises animation keys; without --motion" --model builtin --out "$work/out.glb" --quantize-animation
 expect_failure flag-with-value 1 "option --draco takes no value" --model builtin --out "$work/out.glb" --draco=yes
 expect_failure alias-twice 1 "option --quiet given twice" --model builtin --out "$work/out.glb" -q --quiet
 expect_failure frames-after-motion 3 "--frames 70:100 is outside the motion's 60 frames" --model builtin --out "$work/out.glb" --motion "$fixtures/motions/smpl_72.npz" --frames 70:100

@@ -4,7 +4,8 @@
 #   anim.export.<case>    smpl-export --motion writes <build>/roundtrip/anim_<case>.<fmt>,
 #                         case = <model>_<motion>_m<M>_<fmt>[_fps<F>]
 #   anim.blender.<case>   headless Blender imports it and plays it with no runtime
-#                         script: first/middle/last frame vs numpy (1e-4 m)
+#                         script: first/middle/last frame vs numpy (1e-4 m); _qanim:
+#                         --quantize-animation
 #   anim.validator        Khronos glTF validator on every animated GLB
 #   cli.batch             --motion-dir batch mode (tests/cli/batch_test.sh)
 #
@@ -14,14 +15,20 @@ set(SMPL_ANIM_MOTIONS ${SMPL_FIXTURE_DIR}/motions)
 set(SMPL_ANIM_GLBS)
 set(SMPL_ANIM_GLB_FIXTURES)
 
-# smpl_anim_case(<model> <motion> <M> <format> [FPS f] [REPORT])
+# smpl_anim_case(<model> <motion> <M> <format> [FPS f] [REPORT] [QANIM])
+# QANIM: --quantize-animation (normalised int16 rotation and weight keys).
 function(smpl_anim_case model motion m format)
-  cmake_parse_arguments(A "REPORT" "FPS" "" ${ARGN})
+  cmake_parse_arguments(A "REPORT;QANIM" "FPS" "" ${ARGN})
   set(case ${model}_${motion}_m${m}_${format})
   set(fps_args)
   if(A_FPS)
     set(case ${case}_fps${A_FPS})
     set(fps_args --fps ${A_FPS})
+  endif()
+  set(export_args)
+  if(A_QANIM)
+    set(case ${case}_qanim)
+    set(export_args --quantize-animation)
   endif()
   set(asset ${SMPL_ROUNDTRIP_DIR}/anim_${case}.${format})
   set(report)
@@ -31,7 +38,7 @@ function(smpl_anim_case model motion m format)
   add_test(NAME anim.export.${case}
     COMMAND smpl-export --model ${SMPL_FIXTURE_DIR}/models/${model}.npz
             --motion ${SMPL_ANIM_MOTIONS}/${motion}.npz --max-influences ${m} ${fps_args}
-            --out ${asset} --quiet)
+            --out ${asset} --quiet ${export_args})
   add_test(NAME anim.blender.${case}
     COMMAND ${SMPL_BLENDER_RUN} ${SMPL_ROUNDTRIP_SRC}/blender_animation.py --
             --asset ${asset} --model ${SMPL_FIXTURE_DIR}/models/${model}.npz
@@ -58,6 +65,7 @@ foreach(pair smplh_small:amass_smplh smplx_small:amass_smplx smpl_small:amass_sm
       smpl_anim_case(${model} ${motion} ${m} ${format})
     endforeach()
   endforeach()
+  smpl_anim_case(${model} ${motion} 8 glb QANIM)  # Blender reads normalised keys
 endforeach()
 
 # Resampling: 120 -> 30 fps keys fall on every 4th source frame (exact; the

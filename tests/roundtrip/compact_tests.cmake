@@ -1,7 +1,8 @@
 # Compact glTF encodings (issue "Speed and size"): the CLI writes the builtin
 # body and smpl_small.npz with each encoding (--corrective-epsilon, sparse;
 # --quantize-morphs, KHR_mesh_quantization; --draco, KHR_draco_mesh_compression;
-# all three), then the Khronos validator checks every file (no errors, no
+# all three; --meshopt, EXT_meshopt_compression, static and with a motion; the
+# three --preset bundles with a motion: quantised animation keys), then the Khronos validator checks every file (no errors, no
 # warnings). Included from tests.cmake; uses its SMPL_ROUNDTRIP_DIR and SMPL_NODE.
 set(SMPL_COMPACT_GLBS)
 set(SMPL_COMPACT_FIXTURES)
@@ -10,13 +11,20 @@ foreach(name builtin smpl_small)
   if(name STREQUAL "builtin")
     set(model builtin)
   endif()
-  foreach(encoding sparse quantized draco all)
+  set(motion ${SMPL_FIXTURE_DIR}/motions/amass_smplh.npz)
+  foreach(encoding sparse quantized draco all meshopt meshopt_anim web engine archive)
     if(encoding STREQUAL "sparse")
       set(args --corrective-epsilon 1e-4)
     elseif(encoding STREQUAL "quantized")
       set(args --quantize-morphs)
     elseif(encoding STREQUAL "draco")
       set(args --draco)
+    elseif(encoding STREQUAL "meshopt")
+      set(args --meshopt)
+    elseif(encoding STREQUAL "meshopt_anim")  # float keys, meshopt-compressed
+      set(args --meshopt --motion ${motion})
+    elseif(encoding MATCHES "^(web|engine|archive)$")  # the presets, with quantised keys
+      set(args --preset ${encoding} --motion ${motion})
     else()
       set(args --corrective-epsilon 1e-5 --quantize-morphs --draco)
     endif()

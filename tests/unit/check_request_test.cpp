@@ -74,6 +74,9 @@ TEST(CheckRequest, EachRangeAndConflictHasItsMessage) {
        "encode)"},
       {[](ExportRequest* r) { r->quantize_morphs = true, r->correctives = false; },
        "--quantize-morphs quantizes corrective targets; with --correctives none there are none"},
+      {[](ExportRequest* r) { r->quantize_animation = true; },
+       "--quantize-animation quantises animation keys; without --motion or --motion-dir there are "
+       "none"},
       {[](ExportRequest* r) { r->corrective_epsilon = 0.001, r->correctives = false; },
        "--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
        "--expression-keys there are none"},

@@ -16,6 +16,8 @@ if (!fs.existsSync(modules)) {
 export const THREE = await import(pathToFileURL(path.join(modules, 'build', 'three.module.js')).href);
 const { GLTFLoader } = await import(pathToFileURL(path.join(modules, 'examples/jsm/loaders/GLTFLoader.js')).href);
 const { FBXLoader } = await import(pathToFileURL(path.join(modules, 'examples/jsm/loaders/FBXLoader.js')).href);
+// EXT_meshopt_compression (--meshopt): three's own decoder (WebAssembly, runs in node).
+const { MeshoptDecoder } = await import(pathToFileURL(path.join(modules, 'examples/jsm/libs/meshopt_decoder.module.js')).href);
 export const driver = await import(pathToFileURL(path.join(WEB_DIR, 'smpl-correctives', 'index.js')).href);
 
 function arrayBuffer(file) {
@@ -32,7 +34,7 @@ export async function loadAsset(file) {
   const format = path.extname(file).slice(1).toLowerCase();
   let root, metadata, animations, unitFactor = 1;
   if (format === 'glb') {
-    const gltf = await new Promise((resolve, reject) => new GLTFLoader().parse(arrayBuffer(file), '', resolve, reject));
+    const gltf = await new Promise((resolve, reject) => new GLTFLoader().setMeshoptDecoder(MeshoptDecoder).parse(arrayBuffer(file), '', resolve, reject));
     root = gltf.scene;
     metadata = driver.metadataFromGltf(gltf);
     animations = gltf.animations;

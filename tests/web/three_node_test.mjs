@@ -7,6 +7,7 @@
 //
 //   node three_node_test.mjs --asset body.glb --reference PREFIX [--tol 1e-5]
 //   node three_node_test.mjs --asset walk.fbx --anim-reference PREFIX.json --faces-from walk.glb
+//   node three_node_test.mjs --asset packed.glb --same-as plain.glb   (--meshopt: the same data)
 //
 // FBX needs --faces-from: a GLB of the same model, whose triangle list maps
 // FBXLoader's per-corner vertices back to model vertices. Prints one line per
@@ -23,10 +24,11 @@ const { values: args } = parseArgs({
   options: {
     asset: { type: 'string' }, reference: { type: 'string' }, 'anim-reference': { type: 'string' },
     'faces-from': { type: 'string' }, tol: { type: 'string', default: '1e-5' },
+    'same-as': { type: 'string' },
   },
 });
-if (!args.asset || !(args.reference || args['anim-reference'])) {
-  console.error('usage: three_node_test.mjs --asset FILE (--reference PREFIX | --anim-reference FILE) [--faces-from GLB]');
+if (!args.asset || !(args.reference || args['anim-reference'] || args['same-as'])) {
+  console.error('usage: three_node_test.mjs --asset FILE (--reference PREFIX | --anim-reference FILE | --same-as GLB) [--faces-from GLB]');
   process.exit(1);
 }
 const tol = Number(args.tol);
@@ -155,5 +157,33 @@ if (args['anim-reference']) {
     const driven = playAndCompare(asset, map, bonesOnly, ref, correctives, 'bones+driver');
     assert.ok(baked <= tol, `${name}: baked weights: max vertex error ${baked} m > ${tol} m`);
     assert.ok(driven <= tol, `${name}: bone tracks + driver: max vertex error ${driven} m > ${tol} m`);
+  });
+}
+
+// Every vertex attribute and morph target of two loads, element by element:
+// a --meshopt file must give three.js exactly the arrays of the same export
+// without it (meshopt's codecs are lossless; the quantisation is the same).
+if (args['same-as']) {
+  test(`${name}: three.js reads the same vertex and morph arrays as ${path.basename(args['same-as'])}`, async () => {
+    const a = await h.loadAsset(args.asset), b = await h.loadAsset(args['same-as']);
+    const ga = a.mesh.geometry, gb = b.mesh.geometry;
+    const pairs = Object.keys(gb.attributes).map((k) => [k, ga.attributes[k], gb.attributes[k]]);
+    (gb.morphAttributes.position || []).forEach((t, i) => pairs.push([`morph ${i}`, ga.morphAttributes.position[i], t]));
+    pairs.push(['index', ga.index, gb.index]);
+    assert.ok(pairs.length > 5, 'attributes to compare');
+    for (const [key, x, y] of pairs) {
+      assert.ok(x, `${name} lacks ${key}`);
+      assert.equal(x.count, y.count, `${key}: count`);
+      assert.equal(x.itemSize, y.itemSize, `${key}: itemSize`);
+      assert.equal(Boolean(x.normalized), Boolean(y.normalized), `${key}: normalized`);
+      for (let i = 0; i < y.count; i++) {
+        for (let c = 0; c < y.itemSize; c++) {
+          const u = x.getComponent ? x.getComponent(i, c) : x.array[i * x.itemSize + c];
+          const v = y.getComponent ? y.getComponent(i, c) : y.array[i * y.itemSize + c];
+          if (u !== v) assert.fail(`${key}[${i}][${c}]: ${u} != ${v}`);
+        }
+      }
+    }
+    console.log(`glb ${name} same as ${path.basename(args['same-as'])}: ${pairs.length} arrays equal`);
   });
 }
