@@ -4,6 +4,7 @@
 
 #include "cli/options.h"
 #include "cli/settings.h"
+#include "plugins/writer.h"
 
 namespace smpl {
 namespace {
@@ -79,6 +80,7 @@ Status applyPreset(const std::string& name, Settings* s) {
         "--preset engine");
   for (const auto& [option, value] : p->options) {
     if (given(*s, option) || !applies(*s, option)) continue;
+    if (option == "--meshopt" && !meshoptAvailable()) continue;  // the static build (writer.h)
     if (Status st = findOption(option)->apply(value, s); !st) return st;
   }
   return Status();

@@ -218,6 +218,15 @@ def batch_truncated():
         expect_success(f"uptodate.{fmt}_truncated_output_rebuilt", argv,
                        stderr_contains=["batch: 1 converted, 0 up to date"])
         check(f"uptodate.{fmt}_rebuilt_whole", sha(out) == whole, f"{os.path.getsize(out)} bytes")
+        # Same size, one byte changed: only the recorded hash tells (the size check alone would skip it).
+        for edited in [out] + ([odir / "walk.bin"] if fmt == "gltf" else []):
+            data = bytearray(edited.read_bytes())
+            data[len(data) // 2] ^= 0xFF
+            edited.write_bytes(bytes(data))
+            expect_success(f"uptodate.{fmt}_edited_{edited.suffix[1:]}_same_size_rebuilt", argv,
+                           stderr_contains=["batch: 1 converted, 0 up to date"])
+            check(f"uptodate.{fmt}_edited_{edited.suffix[1:]}_rebuilt_whole", sha(out) == whole,
+                  f"{os.path.getsize(out)} bytes")
         if fmt == "gltf":
             (odir / "walk.bin").unlink()
             expect_success("uptodate.gltf_missing_bin_rebuilt", argv, outputs=[odir / "walk.bin"],
