@@ -30,6 +30,7 @@ struct WriterOptions {
                                  // (ExportOptions), which marks MorphTarget::quantized: writers
                                  // read the mark, not this flag
   bool draco = false;  // KHR_draco_mesh_compression for the base mesh (sequential, order kept)
+  std::string bvh_units = "m";  // BVH: "m" or "cm" (--bvh-units), offsets and positions
 };
 
 struct Writer {
@@ -70,9 +71,12 @@ struct WriterFormat {
   bool binary = true;            // WriterOptions::binary (glTF: GLB, else the JSON .gltf)
   bool external_buffer = false;  // writes <stem>.bin beside the output unless --gltf-embed
   const Writer* writer = nullptr;
+  // true: the file holds one animation (BVH); the request refuses a second
+  // --motion (exporter/request/check_request.cpp). Last: initialisers stay valid.
+  bool single_clip = false;
 };
 
-// Every row, in usage order (glb, gltf, fbx; test rows last). Rows stay where
+// Every row, in usage order (glb, gltf, fbx, bvh; test rows last). Rows stay where
 // they are while the table grows (pointers to them remain valid).
 const std::deque<WriterFormat>& writerFormats();
 
