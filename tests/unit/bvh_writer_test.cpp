@@ -24,15 +24,16 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// A skeleton-only asset: pelvis(0) <- left_hip(1) <- left_knee(3), pelvis <- spine1(2)
-// (the file nests left_knee under left_hip before spine1), `frames` random frames at `fps`.
+// A skeleton-only asset: pelvis(0) <- left_hip(1) <- left_knee(3), pelvis <- spine1(2) <-
+// spine2(4) (the file nests left_knee under left_hip before spine1, so its frame lines are
+// not in joint order), `frames` random frames at `fps`.
 Asset smallAsset(int frames, double fps = 120.0) {
-  Eigen::MatrixXd world(4, 3);
-  world << 0.0, 0.9, 0.0, 0.1, 0.8, 0.0, 0.0, 1.0, -0.02, 0.12, 0.45, 0.01;
+  Eigen::MatrixXd world(5, 3);
+  world << 0.0, 0.9, 0.0, 0.1, 0.8, 0.0, 0.0, 1.0, -0.02, 0.12, 0.45, 0.01, 0.01, 1.2, 0.0;
   Asset a;
   a.name = "body";
-  a.skeleton =
-      test::skeletonFromWorld({"pelvis", "left_hip", "spine1", "left_knee"}, {-1, 0, 0, 1}, world);
+  a.skeleton = test::skeletonFromWorld({"pelvis", "left_hip", "spine1", "left_knee", "spine2"},
+                                       {-1, 0, 0, 1, 2}, world);
   a.skeleton_only = true;
   a.metadata.model_kind = "smpl";
   if (frames == 0) return a;
@@ -41,7 +42,7 @@ Asset smallAsset(int frames, double fps = 120.0) {
   AnimationClip clip;
   clip.name = "walk";
   clip.fps = fps;
-  clip.rotations.resize(4);
+  clip.rotations.resize(5);
   for (int t = 0; t < frames; ++t) {
     clip.times.push_back(t / fps);
     for (auto& track : clip.rotations)
@@ -128,11 +129,12 @@ TEST(BvhWriter, StructureFollowsTheSkeletonAndClip) {
     }
     if (word == "MOTION") motion = i;
   }
-  EXPECT_EQ(joints, (std::vector<std::string>{"pelvis", "left_hip", "left_knee", "spine1"}));
+  EXPECT_EQ(joints,
+            (std::vector<std::string>{"pelvis", "left_hip", "left_knee", "spine1", "spine2"}));
   EXPECT_EQ(depth, 0);
   EXPECT_EQ(deepest, 4);  // pelvis { left_hip { left_knee { End Site { } } } }
-  EXPECT_EQ(sites, 2);    // the leaves left_knee and spine1
-  EXPECT_EQ(channels, 6 + 3 * 3);
+  EXPECT_EQ(sites, 2);    // the leaves left_knee and spine2
+  EXPECT_EQ(channels, 6 + 4 * 3);
   ASSERT_GT(motion, 0u);
   EXPECT_EQ(lines[motion + 1], "Frames: 5");
   EXPECT_EQ(lines[motion + 2], "Frame Time: 0.0083333333");  // 120 fps
@@ -284,19 +286,20 @@ TEST(BvhWriter, ReadBackGivesTheJointPositions) {
 TEST(BvhWriter, AJointWithATranslationTrackGetsPositionChannels) {
   Asset a = smallAsset(6);
   AnimationClip& c = a.animations.front();
-  c.joint_translations.resize(4);
-  for (size_t k = 0; k < 4; ++k)
+  c.joint_translations.resize(5);
+  for (size_t k = 0; k < 5; ++k)
     c.joint_translations[k].assign(6, Eigen::Vector3d(a.skeleton.rest_local.row(Eigen::Index(k))));
   c.joint_translations[0] = c.root_translation;
   c.joint_translations[1][3] += Eigen::Vector3d(0.0, 0.02, 0.0);  // left_hip moves at frame 3
   const std::string text = write(a);
   const Parsed p = parse(text);
-  ASSERT_EQ(p.nodes.size(), 4u);
+  ASSERT_EQ(p.nodes.size(), 5u);
   EXPECT_EQ(p.nodes[1].name, "left_hip");
   EXPECT_EQ(p.nodes[1].channels.size(), 6u);
   EXPECT_EQ(p.nodes[1].channels[1], "Yposition");
   EXPECT_EQ(p.nodes[2].channels.size(), 3u);  // left_knee: its track stays at rest
   EXPECT_EQ(p.nodes[3].channels.size(), 3u);
+  EXPECT_EQ(p.nodes[4].channels.size(), 3u);
   EXPECT_LT(worstJointError(a, text, 1.0), 1e-7);
 }
 
