@@ -10,9 +10,13 @@ namespace smpl {
 void printSummary(const std::string& out, const ExportReport& r) {
   if (!r.betas_note.empty()) std::printf("note: %s\n", r.betas_note.c_str());
   if (!r.model_note.empty()) std::printf("note: %s\n", printable(r.model_note, 4096).c_str());
-  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n",
-              printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
-              r.seconds * 1e3);
+  if (!r.skin_fitted && r.vertices == 0)  // a format without a mesh (BVH)
+    std::printf("%s: %d joints, skeleton only, %.2f MB, %.0f ms\n", printable(out).c_str(),
+                r.joints, r.bytes / 1e6, r.seconds * 1e3);
+  else
+    std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n",
+                printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
+                r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
   for (const std::string& note : r.notes) std::printf("note: %s\n", printable(note, 4096).c_str());
   if (r.skin_error_measured) {

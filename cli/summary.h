@@ -1,6 +1,7 @@
 // What smpl-export prints after one export (unless --quiet): the input notes
 // (a --betas-file whose rows were averaged, a model folder's fallback), the
-// summary line (counts, size, time), the animation frames, the export's notes,
+// summary line (counts, size, time; "skeleton only" for a format without a
+// mesh), the animation frames, the export's notes,
 // the skinning error of the chosen influences and the model file used; and
 // the progress bar of a long bake.
 #pragma once

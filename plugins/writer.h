@@ -89,7 +89,7 @@ const WriterFormat* writerFormatByName(const std::string& name);
 // The row's writer for `path`'s extension, or null.
 const Writer* writerForPath(const std::string& path);
 
-// Every row's extensions for messages: ".glb, .gltf or .fbx" (`last`
+// Every row's extensions for messages: ".glb, .gltf, .fbx or .bvh" (`last`
 // joins the final pair; ", " the others).
 std::string writerExtensionList(const std::string& last = " or ");
 

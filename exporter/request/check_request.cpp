@@ -135,6 +135,9 @@ Status checkRequest(const ExportRequest& r) {
   }
   if (!format)
     return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
+  if (format->single_clip && r.motions.size() > 1)
+    return usage("--motion: " + format->name + " output holds one motion; got " +
+                 std::to_string(r.motions.size()) + " (one output per motion: --motion-dir)");
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }
 

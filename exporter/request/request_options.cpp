@@ -45,6 +45,7 @@ WriterOptions writerOptionsOf(const ExportRequest& r, const std::string& buffer_
   w.morph_epsilon = r.corrective_epsilon;
   w.quantize_morphs = r.quantize_morphs;
   w.draco = r.draco;
+  w.bvh_units = r.bvh_units;
   return w;
 }
 
