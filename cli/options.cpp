@@ -150,7 +150,7 @@ const std::vector<OptionSpec> kOptions = {
        if (!list) return Status(list.error());
        return s->request.expression = *list, Status();
      }},
-    {"--max-influences", nullptr, "N|all", Applies::Any, nullptr,
+    {"--max-influences", nullptr, "N|all", Applies::Mesh, nullptr,
      "skin influences per vertex, 1..K (the model's joints) or all (default 4); glTF writes "
      "ceil(N/4) "
      "JOINTS_n/WEIGHTS_n sets (engines that read one set: keep 4), FBX has no limit; all: as many "
@@ -160,7 +160,7 @@ const std::vector<OptionSpec> kOptions = {
        if (v == "all") return s->request.all_influences = true, Status();
        return intInto(v, "--max-influences", &s->request.max_influences);
      }},
-    {"--skin-weights", nullptr, "truncated|optimized", Applies::Any, nullptr,
+    {"--skin-weights", nullptr, "truncated|optimized", Applies::Mesh, nullptr,
      "truncated: the N largest weights, renormalised; optimized (default): the best-fitting N "
      "of the vertex's largest weights, with weights fitted to the unpruned model over 48 "
      "motion-like training poses (lower error on held-out poses; the summary shows both)",
@@ -171,7 +171,7 @@ const std::vector<OptionSpec> kOptions = {
                   *c == 0 ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized,
               Status();
      }},
-    {"--corrective-refit", nullptr, "on|off", Applies::Any, nullptr,
+    {"--corrective-refit", nullptr, "on|off", Applies::Mesh, nullptr,
      "on (default): refit the corrective deltas of vertices whose influences were cut so that "
      "the exported skin + correctives reproduce the unpruned model (240 motion-like training "
      "poses; a vertex keeps the model's deltas where the refit is worse on validation poses); "
@@ -181,14 +181,14 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        return s->request.corrective_refit = *c == 0, Status();
      }},
-    {"--correctives", nullptr, "all|none", Applies::Any, nullptr,
+    {"--correctives", nullptr, "all|none", Applies::Mesh, nullptr,
      "pose-corrective morph targets (default all)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--correctives", {"all", "none"});
        if (!c) return Status(c.error());
        return s->request.correctives = *c == 0, Status();
      }},
-    {"--corrective-weights", nullptr, "signed|unit|split", Applies::Any, nullptr,
+    {"--corrective-weights", nullptr, "signed|unit|split", Applies::Mesh, nullptr,
      "signed: weight = pose feature f, in [-2, 1] (default without --motion);\n"
      "unit: weight = 0.5 f + 0.5 (off-diagonal) or + 1 (diagonal), in [0, 1], relies on the file's "
      "default weights at rest;\n"
@@ -204,7 +204,7 @@ const std::vector<OptionSpec> kOptions = {
                                        CorrectiveEncoding::Split};
        return s->request.encoding = e[*c], Status();
      }},
-    {"--corrective-basis", nullptr, "K", Applies::Any, nullptr,
+    {"--corrective-basis", nullptr, "K", Applies::Mesh, nullptr,
      "replace the corrective targets by K principal components of posedirs (weights = C f; C in "
      "the "
      "metadata; runtime scripts apply it)",
@@ -243,29 +243,29 @@ const std::vector<OptionSpec> kOptions = {
      "default: the "
      "buffer is FILE.bin beside FILE.gltf (written and replaced together with it)",
      [](V, S* s) { return s->request.gltf_embed = true, Status(); }},
-    {"--shape-keys", nullptr, "N", Applies::Any, nullptr,
+    {"--shape-keys", nullptr, "N", Applies::Mesh, nullptr,
      "also export the first N shape directions as morph targets shape_<i>",
      [](V v, S* s) { return intInto(v, "--shape-keys", &s->request.shape_keys); }},
-    {"--expression-keys", nullptr, "N", Applies::Any, nullptr,
+    {"--expression-keys", nullptr, "N", Applies::Mesh, nullptr,
      "also export the first N expression directions (SMPL-X) as expr_<i>",
      [](V v, S* s) { return intInto(v, "--expression-keys", &s->request.expression_keys); }},
-    {"--uv", nullptr, "OBJ|NPY|none", Applies::Any, nullptr,
+    {"--uv", nullptr, "OBJ|NPY|none", Applies::Mesh, nullptr,
      "UVs (seams split vertices). Default: the model file's own vt/ft if it has them (SMPL-X "
      "release). OBJ sharing the model's vertex order, or a numpy pair <stem>_uv.npy (U,2) + "
      "<stem>_ft.npy (F,3) (give either); none: no UVs",
      [](V v, S* s) { return s->request.uv = v, Status(); }, Hashed::Content},
-    {"--name", nullptr, "NAME", Applies::Any, nullptr, "mesh name (default body)",
+    {"--name", nullptr, "NAME", Applies::Mesh, nullptr, "mesh name (default body)",
      [](V v, S* s) { return s->request.name = v, Status(); }},
-    {"--dmpl", nullptr, "FILE|DIR", Applies::Any, nullptr,
+    {"--dmpl", nullptr, "FILE|DIR", Applies::Mesh, nullptr,
      "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
      "--motion at weight 0. DIR: per motion gender, DIR/dmpls/<gender>/model.npz or "
      "DIR/<gender>/model.npz (AMASS layout)",
      [](V v, S* s) { return s->request.dmpl = v, Status(); }, Hashed::Content},
-    {"--dmpl-count", nullptr, "N", Applies::Any, nullptr,
+    {"--dmpl-count", nullptr, "N", Applies::Mesh, nullptr,
      "keep the first N DMPL directions (default all)",
      [](V v, S* s) { return numberInto(v, "--dmpl-count", &s->request.dmpl_count); }},
-    {"--dmpl-joints", nullptr, "fixed|regressed", Applies::Any, nullptr,
+    {"--dmpl-joints", nullptr, "fixed|regressed", Applies::Mesh, nullptr,
      "fixed (default): keep the betas-only skeleton (the cost is printed); regressed: animate "
      "joint "
      "translations to follow the displaced template (the published math, exact)",
@@ -291,6 +291,13 @@ const std::vector<OptionSpec> kOptions = {
      "array compression, as the FBX SDK's EXP_FBX_COMPRESS_LEVEL: 0 = stored uncompressed "
      "(fastest to write and read, largest), 1..12 = deflate level (default 1)",
      [](V v, S* s) { return intInto(v, "--fbx-compress-level", &s->request.fbx_compress_level); }},
+    {"--bvh-units", nullptr, "m|cm", Applies::Format, nullptr,
+     "BVH offsets and positions in metres (default) or centimetres",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--bvh-units", {"m", "cm"});
+       if (!c) return Status(c.error());
+       return s->request.bvh_units = v, Status();
+     }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content, not by name: AMASS, SMPLCodec .smpl, fits, AIST++, and "
@@ -432,8 +439,8 @@ std::vector<std::string> wrap(const std::string& text, size_t width) {
 }
 
 // The writer table's words in usage text (plugins/writer.h): {formats}
-// "glb|gltf|fbx", {default-format} "glb", {extensions} ".glb, .gltf, .fbx",
-// {extensions|} ".glb|.gltf|.fbx".
+// "glb|gltf|fbx|bvh", {default-format} "glb", {extensions} ".glb, .gltf, .fbx, .bvh",
+// {extensions|} ".glb|.gltf|.fbx|.bvh".
 std::string expand(std::string text) {
   std::string names, extensions, bars;
   for (const WriterFormat& row : writerFormats()) {
@@ -499,6 +506,8 @@ std::string appliesRule(const OptionSpec& option) {
             extensions += (extensions.empty() ? "" : ", ") + ext;
       return "applies only to " + extensions + " output";
     }
+    case Applies::Mesh:
+      return "needs an output format with a mesh";
     default:
       return "";
   }
@@ -506,7 +515,8 @@ std::string appliesRule(const OptionSpec& option) {
 
 std::string usageText() {
   std::string out =
-      "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX, pose correctives\n\n"
+      "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose\n"
+      "correctives, or a BVH skeleton and motion\n\n"
       "Usage: smpl-export --model PATH|builtin --out FILE" +
       expand("{extensions|}") + " [options]\n" +
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";

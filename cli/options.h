@@ -21,6 +21,8 @@ enum class Applies {
   Batch,   // only batch mode (--motion-dir)
   Format,  // only the output formats whose writer row lists it (plugins/writer.h
            // WriterFormat::options: --draco for .glb/.gltf, --fbx-units for .fbx, ...)
+  Mesh,    // only the output formats with a mesh (WriterFormat::needs_mesh): the skin,
+           // morph targets, UVs and mesh name options, refused for a skeleton-only .bvh
 };
 
 // How an option enters the producer hash (exporter/request/producer.h), which decides
@@ -51,7 +53,8 @@ const OptionSpec* findOption(const std::string& name);
 
 // "needs --motion or --motion-dir", "applies only to batch mode (--motion-dir)",
 // "applies only to .glb, .gltf output" (Applies::Format: the extensions of
-// the writer rows that list the option), ...
+// the writer rows that list the option), "needs an output format with a mesh"
+// (Applies::Mesh), ...
 std::string appliesRule(const OptionSpec& option);
 
 // The --help text, generated from this table and the writer table (the

@@ -36,7 +36,10 @@ Status checkApplies(const Settings& s, bool batch) {
     const bool ok = o->applies == Applies::Any || (o->applies == Applies::Single && !batch) ||
                     (o->applies == Applies::Motion && animated) ||
                     (o->applies == Applies::Batch && batch) ||
-                    (o->applies == Applies::Format && formatTakes(format, name));
+                    (o->applies == Applies::Format && formatTakes(format, name)) ||
+                    (o->applies == Applies::Mesh && (!format || format->needs_mesh));
+    if (!ok && o->applies == Applies::Mesh)  // the request's wording (check_request.cpp)
+      return usageError(name + " " + appliesRule(*o) + "; " + format->name + " output has none");
     if (!ok) return usageError(name + " " + appliesRule(*o));
   }
   return Status();

@@ -20,9 +20,13 @@ void printNotes(const ExportReport& r, bool quiet) {
 }
 
 void printSummary(const std::string& out, const ExportReport& r) {
-  std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n",
-              printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
-              r.seconds * 1e3);
+  if (!r.skin_fitted && r.vertices == 0)  // a format without a mesh (BVH)
+    std::printf("%s: %d joints, skeleton only, %.2f MB, %.0f ms\n", printable(out).c_str(),
+                r.joints, r.bytes / 1e6, r.seconds * 1e3);
+  else
+    std::printf("%s: %d vertices, %d joints, %d morph targets, %.2f MB, %.0f ms\n",
+                printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
+                r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
   if (r.skin_error_measured) {
     const PruningError& err = r.skin_error;

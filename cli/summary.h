@@ -1,8 +1,9 @@
 // What smpl-export prints after one export: on stderr the input notes (a
 // --betas-file whose rows were averaged) and the export's notes (unless
 // --quiet) and its warnings (always); on stdout (unless --quiet) the summary
-// (counts, size, time, the animation frames, the skinning error of the chosen
-// influences, the model file used); and the progress bar of a long bake.
+// (counts, size, time; "skeleton only" for a format without a mesh, BVH; the
+// animation frames, the skinning error of the chosen influences, the model
+// file used); and the progress bar of a long bake.
 #pragma once
 
 #include <string>

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "plugins/bvh/bvh_writer.h"
 #include "plugins/fbx/fbx_writer.h"
 #include "plugins/gltf/gltf_writer.h"
 
@@ -34,6 +35,14 @@ std::deque<WriterFormat>& table() {
          true,
          false,
          &fbxWriter()},
+        {"bvh",
+         {".bvh"},
+         {"--bvh-units"},
+         /*needs_mesh=*/false,
+         true,
+         false,
+         &bvhWriter(),
+         /*single_clip=*/true},
     };
   }();
   return rows;

@@ -35,6 +35,7 @@ struct WriterOptions {
   // --quantize-animation: rotation keys normalised int16, morph weight keys normalised
   // (u)int16 where they fit (core glTF 2.0; plugins/gltf/gltf_writer.cpp)
   bool quantize_animation = false;
+  std::string bvh_units = "m";  // BVH: "m" or "cm" (--bvh-units), offsets and positions
 };
 
 struct Writer {
@@ -75,9 +76,12 @@ struct WriterFormat {
   bool binary = true;            // WriterOptions::binary (glTF: GLB, else the JSON .gltf)
   bool external_buffer = false;  // writes <stem>.bin beside the output unless --gltf-embed
   const Writer* writer = nullptr;
+  // true: the file holds one animation (BVH); the request refuses a second
+  // --motion (exporter/request/check_request.cpp). Last: initialisers stay valid.
+  bool single_clip = false;
 };
 
-// Every row, in usage order (glb, gltf, fbx; test rows last). Rows stay where
+// Every row, in usage order (glb, gltf, fbx, bvh; test rows last). Rows stay where
 // they are while the table grows (pointers to them remain valid).
 const std::deque<WriterFormat>& writerFormats();
 
@@ -90,7 +94,7 @@ const WriterFormat* writerFormatByName(const std::string& name);
 // The row's writer for `path`'s extension, or null.
 const Writer* writerForPath(const std::string& path);
 
-// Every row's extensions for messages: ".glb, .gltf or .fbx" (`last`
+// Every row's extensions for messages: ".glb, .gltf, .fbx or .bvh" (`last`
 // joins the final pair; ", " the others).
 std::string writerExtensionList(const std::string& last = " or ");
 

@@ -21,9 +21,10 @@ ALLOWED = {
     "core/load": ["core", "core/io", "core/io/pickle", "core/io/tree", "core/math"],
     "core/demo": ["core", "core/math"],
     "exporter": ["core", "core/math", "core/io", "core/load"],
-    "plugins": ["core", "core/math", "exporter", "plugins/gltf", "plugins/fbx"],
+    "plugins": ["core", "core/math", "exporter", "plugins/gltf", "plugins/fbx", "plugins/bvh"],
     "plugins/gltf": ["core", "core/math", "exporter", "plugins"],
     "plugins/fbx": ["core", "core/math", "exporter", "plugins"],
+    "plugins/bvh": ["core", "core/math", "exporter", "plugins"],
     # The export request: above the writers (it picks one), below cli/ and tools/.
     "exporter/request": ["core", "core/math", "core/io", "core/io/pickle", "core/load",
                          "core/demo", "exporter", "plugins"],

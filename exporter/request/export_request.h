@@ -71,9 +71,10 @@ struct ExportRequest {
   std::string fbx_units = "m";      // --fbx-units m|cm
   int fbx_version = 7400;           // --fbx-version 7400|7500
   int fbx_compress_level = 1;       // --fbx-compress-level N: 0..12
+  std::string bvh_units = "m";      // --bvh-units m|cm
 
   // --- the run ---
-  std::string out;     // --out FILE: .glb, .gltf or .fbx (batch: the job's output)
+  std::string out;     // --out FILE: .glb, .gltf, .fbx or .bvh (batch: the job's output)
   std::string format;  // --format (batch): the outputs' writer row name ("" = the table's first)
   std::string motion_dir;      // --motion-dir DIR (batch): read by the path guard (run_paths.h)
   std::string manifest;        // --manifest FILE (batch): an output of the run for the guard

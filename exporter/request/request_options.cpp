@@ -48,6 +48,7 @@ WriterOptions writerOptionsOf(const ExportRequest& r, const std::string& buffer_
   w.draco = r.draco;
   w.meshopt = r.meshopt;
   w.quantize_animation = r.quantize_animation;
+  w.bvh_units = r.bvh_units;
   return w;
 }
 

@@ -13,6 +13,10 @@ add_test(NAME cli.dmpl
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/dmpl_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.dmpl PROPERTIES LABELS cli)
 
+add_test(NAME cli.bvh
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/bvh_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli.bvh PROPERTIES LABELS cli)
+
 # Every smpl-export example of the README, run on synthetic files (samples/run.py),
 # and proof that the run fails when a README example breaks.
 add_test(NAME cli.readme_samples

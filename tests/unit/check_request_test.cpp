@@ -35,8 +35,16 @@ TEST(CheckRequest, ValidRequestsPass) {
   EXPECT_TRUE(checkRequest(batch).ok());
   batch.format = "fbx";
   EXPECT_TRUE(checkRequest(batch).ok());
+  ExportRequest bvh = valid();  // one motion, or none (the rest pose)
+  bvh.out = "walk.bvh";
+  EXPECT_TRUE(checkRequest(bvh).ok());
+  bvh.motions = {"walk.npz"};
+  EXPECT_TRUE(checkRequest(bvh).ok());
+  batch.format = "bvh";
+  EXPECT_TRUE(checkRequest(batch).ok());
   batch.format = "obj";
-  EXPECT_EQ(checkRequest(batch).message(), "--format: expected 'glb', 'gltf' or 'fbx', got 'obj'");
+  EXPECT_EQ(checkRequest(batch).message(),
+            "--format: expected 'glb', 'gltf', 'fbx' or 'bvh', got 'obj'");
   ExportRequest edges = valid();  // every range at its ends
   edges.fps = 1000;
   edges.source_fps = 1;
@@ -58,9 +66,15 @@ TEST(CheckRequest, EachRangeAndConflictHasItsMessage) {
   const Case cases[] = {
       {[](ExportRequest* r) { r->model.clear(); },
        "missing --model PATH (use --model builtin for the demo body)"},
-      {[](ExportRequest* r) { r->out.clear(); }, "missing --out FILE (.glb, .gltf or .fbx)"},
+      {[](ExportRequest* r) { r->out.clear(); }, "missing --out FILE (.glb, .gltf, .fbx or .bvh)"},
       {[](ExportRequest* r) { r->out = "a.obj"; },
-       "--out a.obj: unknown format (expected .glb, .gltf or .fbx)"},
+       "--out a.obj: unknown format (expected .glb, .gltf, .fbx or .bvh)"},
+      {[](ExportRequest* r) {
+         r->out = "a.bvh", r->motions = {"a.npz", "b.npz"};
+       },
+       "--motion: bvh output holds one motion; got 2 (one output per motion: --motion-dir)"},
+      {[](ExportRequest* r) { r->out = "a.bvh", r->shape_keys = 2; },
+       "--shape-keys needs an output format with a mesh; bvh output has none"},
       {[](ExportRequest* r) { r->betas = {1}, r->betas_file = "b.npy"; },
        "--betas and --betas-file conflict: give one"},
       {[](ExportRequest* r) { r->betas_from_motion = true, r->betas_file = "b.npy"; },

@@ -269,22 +269,38 @@ std::string outputWithout(const std::string& name) {
   return "";
 }
 
-// Every batch-only, motion-only and format-only option of the table is
+// Every batch-only, motion-only, format-only and mesh-only option of the table is
 // refused where it does not apply, with the table's rule in the message.
 TEST(OptionTable, EveryRuleIsEnforced) {
-  int checked = 0, format_only = 0;
+  int checked = 0, format_only = 0, mesh_only = 0;
   for (const OptionSpec& o : optionTable()) {
-    if (o.applies != Applies::Batch && o.applies != Applies::Format && o.applies != Applies::Motion)
+    if (o.applies != Applies::Batch && o.applies != Applies::Format &&
+        o.applies != Applies::Motion && o.applies != Applies::Mesh)
       continue;
-    const std::string out = o.applies == Applies::Format ? outputWithout(o.name) : "a.fbx";
+    const std::string out = o.applies == Applies::Format ? outputWithout(o.name)
+                            : o.applies == Applies::Mesh ? "a.bvh"  // a row without a mesh
+                                                         : "a.fbx";
     ASSERT_FALSE(out.empty()) << o.name << " applies to every format: it is not format-only";
     format_only += o.applies == Applies::Format;
+    mesh_only += o.applies == Applies::Mesh;
     std::vector<const char*> args = {"--model", "builtin", "--out", out.c_str(), o.name};
-    const std::map<std::string, std::string> valid = {
-        {"--fbx-units", "cm"},     {"--fbx-version", "7500"},   {"--up", "y"},
-        {"--root-motion", "keep"}, {"--frames", "0:1"},         {"--format", "glb"},
-        {"--shard", "0/1"},        {"--manifest", "m.jsonl"},   {"--corrective-epsilon", "0.001"},
-        {"--track", "all"},        {"--source-params", "incam"}};
+    const std::map<std::string, std::string> valid = {{"--fbx-units", "cm"},
+                                                      {"--fbx-version", "7500"},
+                                                      {"--up", "y"},
+                                                      {"--root-motion", "keep"},
+                                                      {"--frames", "0:1"},
+                                                      {"--format", "glb"},
+                                                      {"--shard", "0/1"},
+                                                      {"--manifest", "m.jsonl"},
+                                                      {"--corrective-epsilon", "0.001"},
+                                                      {"--track", "all"},
+                                                      {"--source-params", "incam"},
+                                                      {"--bvh-units", "cm"},
+                                                      {"--skin-weights", "truncated"},
+                                                      {"--correctives", "none"},
+                                                      {"--corrective-weights", "unit"},
+                                                      {"--uv", "none"},
+                                                      {"--dmpl-joints", "fixed"}};
     const std::string value = valid.count(o.name) ? valid.at(o.name) : "1";
     if (o.value) args.push_back(value.c_str());
     if (std::string(o.name) == "--motion-dir" || std::string(o.name) == "--out-dir")
@@ -295,8 +311,9 @@ TEST(OptionTable, EveryRuleIsEnforced) {
     EXPECT_EQ(s.kind(), ErrorKind::Usage);
     ++checked;
   }
-  EXPECT_GE(checked, 15);
-  EXPECT_EQ(format_only, 9);  // the options the writer rows list
+  EXPECT_GE(checked, 27);
+  EXPECT_EQ(format_only, 10);  // the options the writer rows list
+  EXPECT_EQ(mesh_only, 13);    // refused for a format without a mesh
   for (const OptionSpec& o : optionTable()) EXPECT_TRUE(o.help && *o.help) << o.name;
 }
 

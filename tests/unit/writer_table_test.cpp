@@ -109,8 +109,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
         ASSERT_NE(o, nullptr) << option;
         EXPECT_EQ(o->applies, Applies::Format) << option;
         std::vector<const char*> args = {"--model", "builtin", "--out", r.out.c_str(), o->name};
-        const std::map<std::string, const char*> values = {{"--fbx-units", "cm"},
-                                                           {"--fbx-version", "7500"}};
+        const std::map<std::string, const char*> values = {
+            {"--fbx-units", "cm"}, {"--fbx-version", "7500"}, {"--bvh-units", "cm"}};
         if (o->value) args.push_back(values.count(option) ? values.at(option) : "1");
         Result<Settings> s = parse(args);
         EXPECT_TRUE(s.ok()) << option << " on " << ext << ": " << s.message();
@@ -125,8 +125,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
 }
 
 TEST(WriterTable, CommandLineFollowsTheTable) {
-  ASSERT_EQ(writerFormats().size(), 3u);
-  EXPECT_EQ(writerExtensionList(), ".glb, .gltf or .fbx");
+  ASSERT_EQ(writerFormats().size(), 4u);
+  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx or .bvh");
   expectTheCommandLineFollows(usageText());
   EXPECT_EQ(writerForPath("x.FBX"), writerFormatByName("fbx")->writer);
 }
@@ -135,8 +135,8 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
   {
     ScopedWriterFormat skel(skeletonRow());
     const std::string usage = usageText();
-    EXPECT_NE(usage.find("--format glb|gltf|fbx|skel"), std::string::npos) << usage;
-    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .skel)"), std::string::npos) << usage;
+    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|skel"), std::string::npos) << usage;
+    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .skel)"), std::string::npos) << usage;
     expectTheCommandLineFollows(usage);
     // the glTF/FBX-only options do not apply to it
     Result<Settings> draco = parse({"--model", "builtin", "--out", "a.skel", "--draco"});
@@ -147,7 +147,7 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
       parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--format", "skel"});
   ASSERT_TRUE(gone.ok()) << gone.message();  // the parser stores it; the request checks it
   EXPECT_EQ(checkRequest(gone->request).message(),
-            "--format: expected 'glb', 'gltf' or 'fbx', got 'skel'");
+            "--format: expected 'glb', 'gltf', 'fbx' or 'bvh', got 'skel'");
   EXPECT_EQ(writerFormatForPath("a.skel"), nullptr);
 }
 
