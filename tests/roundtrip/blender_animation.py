@@ -310,6 +310,19 @@ def check_root_bone(ctx, out_frame, pelvis, tol):
              % (parent.name if parent else None))
 
 
+def disconnect_pelvis(arm):
+    """Blender's FBX importer connects a bone to its parent when the child's head lies on
+    the parent's tail, which it puts along the parent's +Y at the mean child distance: so
+    `pelvis`, right above `root`, is connected and its animated height is ignored. The
+    documented import step (README "In a game engine"): untick Connected on `pelvis`."""
+    bpy.context.view_layer.objects.active = arm
+    bpy.ops.object.mode_set(mode="EDIT")
+    bone = arm.data.edit_bones["pelvis"]
+    print("fbx import: pelvis connected to root: %s (disconnected for playback)" % bone.use_connect)
+    bone.use_connect = False
+    bpy.ops.object.mode_set(mode="OBJECT")
+
+
 def check_floor(ref, ratio, count):
     """numpy's lowest posed vertex over every output frame (the shifted reference) is at y = 0."""
     lowest = min(ref.at(i * ratio)[0][:, 1].min() for i in range(count))
@@ -360,6 +373,8 @@ def main():
     meta = read_metadata(args.asset)
     ref.shift = np.array(meta.get("origin", {}).get("offset", [0.0, 0.0, 0.0]), dtype=np.float64)
     root_bone = "root_bone" in meta
+    if root_bone and fmt == "fbx":
+        disconnect_pelvis(arm)
     entries, skin_method = corrective_entries(args.asset)
     rest_weights = {e["target"]: e.get("offset", 0.0) for e in entries}
     index, _ = rt.vertex_map(mesh_obj, ref.v_shaped + ref.shift, rt.rest_positions(mesh_obj, rest_weights))
