@@ -32,6 +32,13 @@ struct Inputs {
   Motion motion;
 };
 
+// The skin fit is not what these tests are about: truncated weights are quicker.
+ExportOptions truncated() {
+  ExportOptions o;
+  o.skin_weights = SkinWeightMethod::Truncated;
+  return o;
+}
+
 Inputs load() {
   Inputs in;
   Result<BodyModel> m = loadModel(kFixtures + "/models/smplh_small.npz");
@@ -51,8 +58,7 @@ TEST(Placement, LowestPointIsTheBruteForceMinimum) {
   const Asset a = test::makeAsset(spec);
   EXPECT_NEAR(lowestPoint(a), bruteLowest(a), 1e-9);
   const Inputs in = load();
-  Result<Asset> moving =
-      exportAsset(in.model, ExportOptions(), {{&in.motion, "walk", {}, nullptr}});
+  Result<Asset> moving = exportAsset(in.model, truncated(), {{&in.motion, "walk", {}, nullptr}});
   ASSERT_TRUE(moving.ok()) << moving.message();
   EXPECT_NEAR(lowestPoint(*moving), bruteLowest(*moving), 1e-9);
 }
@@ -69,8 +75,8 @@ TEST(Placement, LowestRestPointCountsDefaultWeights) {
 TEST(Placement, FloorPutsTheLowestPosedVertexAtZero) {
   const Inputs in = load();
   const std::vector<MotionInput> motions = {{&in.motion, "walk", {}, nullptr}};
-  Result<Asset> model = exportAsset(in.model, ExportOptions(), motions);
-  ExportOptions floor;
+  Result<Asset> model = exportAsset(in.model, truncated(), motions);
+  ExportOptions floor = truncated();
   floor.origin = Origin::Floor;
   Result<Asset> placed = exportAsset(in.model, floor, motions);
   ASSERT_TRUE(model.ok() && placed.ok()) << placed.message();
@@ -93,7 +99,7 @@ TEST(Placement, FloorPutsTheLowestPosedVertexAtZero) {
 TEST(Placement, RootBoneKeepsEveryPosedVertex) {
   const Inputs in = load();
   const std::vector<MotionInput> motions = {{&in.motion, "walk", {}, nullptr}};
-  ExportOptions floor;
+  ExportOptions floor = truncated();
   floor.origin = Origin::Floor;
   ExportOptions root = floor;
   root.root_bone = true;
@@ -118,6 +124,7 @@ TEST(Placement, RootBoneKeepsEveryPosedVertex) {
     EXPECT_EQ(b.joint_translations[1][t], Eigen::Vector3d(0, p.y(), 0)) << t;
     EXPECT_TRUE(b.rotations[0][t].isApprox(Eigen::Quaterniond::Identity()));
     EXPECT_TRUE(b.rotations[1][t].isApprox(a.rotations[0][t]));
+    if (t % 7 != 0) continue;  // playback every 7th frame
     const Eigen::MatrixXd va = test::enginePlayback(*plain, a, int(t));
     const Eigen::MatrixXd vb = test::enginePlayback(*rooted, b, int(t));
     EXPECT_LT((va - vb).cwiseAbs().maxCoeff(), 1e-9) << "frame " << t;
@@ -134,7 +141,7 @@ TEST(Placement, RootBoneKeepsEveryPosedVertex) {
 
 TEST(Placement, StaticRootBoneStandsBelowThePelvis) {
   const Inputs in = load();
-  ExportOptions root;
+  ExportOptions root = truncated();
   root.root_bone = true;  // exportAsset does not imply floor; the request does
   root.origin = Origin::Floor;
   Result<Asset> a = exportAsset(in.model, root, {});
