@@ -256,6 +256,20 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) { return s->request.uv = v, Status(); }, Hashed::Content},
     {"--name", nullptr, "NAME", Applies::Mesh, nullptr, "mesh name (default body)",
      [](V v, S* s) { return s->request.name = v, Status(); }},
+    {"--origin", nullptr, "model|floor", Applies::Any, nullptr,
+     "model: the model's own origin (default; the pelvis near y = 0, the feet below); floor: one "
+     "shift in y puts the body's lowest point at y = 0 (the rest mesh, or with --motion the lowest "
+     "posed vertex over every frame); the offset is in the metadata",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--origin", {"model", "floor"});
+       if (!c) return Status(c.error());
+       return s->request.origin = *c == 0 ? Origin::Model : Origin::Floor, Status();
+     }},
+    {"--root-bone", nullptr, nullptr, Applies::Any, nullptr,
+     "add a joint `root` on the floor below the pelvis (parent of pelvis; implies --origin floor); "
+     "with --motion it carries the pelvis' ground-plane motion (root motion), the pelvis keeps "
+     "its height and rotation",
+     [](V, S* s) { return s->request.root_bone = true, Status(); }},
     {"--dmpl", nullptr, "FILE|DIR", Applies::Mesh, nullptr,
      "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "

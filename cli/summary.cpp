@@ -28,6 +28,10 @@ void printSummary(const std::string& out, const ExportReport& r) {
                 printable(out).c_str(), r.vertices, r.joints, r.morph_targets, r.bytes / 1e6,
                 r.seconds * 1e3);
   if (r.frames > 0) std::printf("animation: %d frames\n", r.frames);
+  if (r.placement.origin != "model")
+    std::printf("origin: %s (every position moved %+.6f m in y%s)\n", r.placement.origin.c_str(),
+                r.placement.floor_offset,
+                r.placement.root_bone ? "; root bone 'root' below the pelvis" : "");
   if (r.skin_error_measured) {
     const PruningError& err = r.skin_error;
     std::printf(

@@ -115,7 +115,10 @@ struct AnimationClip {
   std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
   std::vector<Eigen::Vector3d> root_translation;           // T root node translations (model axes)
   Eigen::MatrixXf morph_weights;                           // T x (#morph targets), in target order
-  // [joint][frame] local translations of every joint (--dmpl-joints regressed); empty = rest_local
+  // [joint][frame] local translations (--dmpl-joints regressed: every joint;
+  // --root-bone: the pelvis); empty = rest_local for every joint, and an empty
+  // track of one joint = its rest_local (no track written). Joint 0's track,
+  // when given, equals root_translation.
   std::vector<std::vector<Eigen::Vector3d>> joint_translations;
   double dmpl_joint_error = 0.0;        // max vertex error (m) that betas-only joints cost (DMPL)
   double expression_joint_error = 0.0;  // the same for an animated expression (m)
@@ -145,6 +148,18 @@ struct AssetMetadata {
   ExpressionInfo expression_targets{};  // animated expressions (empty: static); last, as above
 };
 
+// Where the asset stands (exporter/placement.h): --origin and --root-bone.
+// Defaults: the model's own origin (the pelvis at J_0), no root bone.
+struct Placement {
+  std::string origin = "model";  // "model" or "floor"
+  double floor_offset = 0.0;     // metres added to every y (floor: -(lowest y); model: 0)
+  // --root-bone: Skeleton joint 0 is `root` (not a model joint, parent -1,
+  // identity rotation, on the floor below the pelvis); the model's joints
+  // follow in model order at 1..K (parents + 1), and skin joint indices are
+  // shifted by one. Metadata joint_names/parents list the model's joints only.
+  bool root_bone = false;
+};
+
 struct Asset {
   std::string name;  // mesh / scene name
   Skeleton skeleton;
@@ -159,6 +174,7 @@ struct Asset {
   // as is), kept so the error report measures what was written; writers
   // ignore it (the targets already hold the deltas).
   CorrectiveRefit corrective_refit;
+  Placement placement;  // last, as above
 };
 
 }  // namespace smpl

@@ -1,8 +1,11 @@
 #include "exporter/export_asset.h"
 
+#include <cmath>
+
 #include "exporter/asset_names.h"
 #include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
+#include "exporter/placement.h"
 #include "exporter/validate_asset.h"
 
 namespace smpl {
@@ -12,6 +15,42 @@ CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, 
   if (motions == 0) return CorrectiveEncoding::Signed;
   return basis ? CorrectiveEncoding::Unit : CorrectiveEncoding::Split;
 }
+
+namespace {
+
+// The lowest point of a skeleton-only export (no mesh of its own): the same
+// export with the model's full skin (every influence, the model's weights)
+// and its correctives, baked the same way (placement.h lowestPoint).
+Result<double> lowestOfModel(const BodyModel& model, const ExportOptions& options,
+                             const std::vector<MotionInput>& motions, const DmplInput* dmpl) {
+  ExportOptions full = options;
+  full.mesh = true;
+  full.max_influences = kAllInfluences;
+  full.skin_weights = SkinWeightMethod::Truncated;
+  full.origin = Origin::Model;
+  full.root_bone = false;
+  full.quantize_morphs = false;
+  Result<Asset> asset = exportAsset(model, full, motions, dmpl);
+  if (!asset) return asset.error();
+  return lowestPoint(*asset);
+}
+
+// --origin floor / --root-bone on the baked asset (placement.h).
+Status placeAsset(const BodyModel& model, const ExportOptions& options,
+                  const std::vector<MotionInput>& motions, const DmplInput* dmpl, Asset* asset) {
+  if (options.origin == Origin::Floor || options.root_bone) {
+    Result<double> lowest = asset->skeleton_only ? lowestOfModel(model, options, motions, dmpl)
+                                                 : Result<double>(lowestPoint(*asset));
+    if (!lowest) return lowest.error();
+    if (!std::isfinite(*lowest))
+      return makeError("--origin floor: the body's lowest point is not finite");
+    shiftAssetUp(asset, -*lowest);
+  }
+  if (options.root_bone) addRootBone(asset);
+  return Status();
+}
+
+}  // namespace
 
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl) {
@@ -36,6 +75,7 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
     if (!clip) return clip.error();
     asset->animations.push_back(std::move(*clip));
   }
+  if (Status st = placeAsset(model, options, motions, dmpl, &*asset); !st) return st.error();
   // Quantized targets carry their scale s_n in the weight mapping: folded
   // here so every writer and the sidecar see the same numbers.
   if (options.quantize_morphs) foldMorphScales(&*asset);

@@ -117,20 +117,52 @@ Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
   return names;
 }
 
+// The model's joints (asset.h Placement: without the root bone, which is not a model joint).
+void modelJointsJson(const Skeleton& s, bool root_bone, Json* o) {
+  if (!root_bone) {
+    (*o)["joint_names"] = s.names;
+    (*o)["parents"] = s.parents;
+    return;
+  }
+  std::vector<int> parents;
+  for (size_t k = 1; k < s.parents.size(); ++k) parents.push_back(s.parents[k] - 1);
+  (*o)["joint_names"] = std::vector<std::string>(s.names.begin() + 1, s.names.end());
+  (*o)["parents"] = parents;
+}
+
+// "origin": {"mode": "floor", "offset": [0, dy, 0]}: metres added to every
+// position of the model's frame (exporter/placement.h); "root_bone": the
+// joint the file adds above the model's root. Both absent by default.
+void placementJson(const Asset& asset, Json* o) {
+  const Placement& p = asset.placement;
+  if (p.origin != "model") {
+    Json origin = Json::object();
+    origin["mode"] = p.origin;
+    origin["offset"] = std::vector<double>{0.0, p.floor_offset, 0.0};
+    (*o)["origin"] = std::move(origin);
+  }
+  if (!p.root_bone) return;
+  Json root = Json::object();
+  root["name"] = asset.skeleton.names[0];
+  root["child"] = asset.skeleton.names.size() > 1 ? asset.skeleton.names[1] : "";
+  root["translation"] = "ground_projection";  // (x, 0, z) of the child's world position
+  (*o)["root_bone"] = std::move(root);
+}
+
 Json metadataObject(const Asset& asset) {
   const AssetMetadata& m = asset.metadata;
   Json o = Json::object();
   o["model_kind"] = m.model_kind;
   o["model_name"] = m.model_name;
   o["exporter_version"] = m.exporter_version;
-  o["joint_names"] = asset.skeleton.names;
-  o["parents"] = asset.skeleton.parents;
+  modelJointsJson(asset.skeleton, asset.placement.root_bone, &o);
   o["betas"] = m.betas;
   o["expression"] = m.expression;
   o["max_influences"] = m.max_influences;
   o["skin_weights"] = m.skin_weights;
   o["units"] = m.units;
   o["up_axis"] = m.up_axis;
+  placementJson(asset, &o);
   o["corrective_encoding"] = m.corrective_encoding;
   o["correctives"] = correctivesJson(m.correctives);
   if (!m.corrective_basis.targets.empty()) o["corrective_basis"] = basisJson(m.corrective_basis);

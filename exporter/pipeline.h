@@ -42,6 +42,13 @@ const char* correctiveEncodingName(CorrectiveEncoding encoding);
 //              unpruned model over training poses (core/math/skin_weight_fit.h).
 enum class SkinWeightMethod { Truncated, Optimized };
 
+// Where the asset's origin is (--origin, exporter/placement.h):
+//   Model  the model's own frame (the pelvis J_0 where the model puts it)
+//   Floor  one constant shift in y so that the body's lowest point is at
+//          y = 0: the rest mesh without a motion, else the lowest posed
+//          vertex over every frame of every clip (placement.h lowestPoint)
+enum class Origin { Model, Floor };
+
 // ExportOptions::max_influences value for "every joint" (--max-influences all).
 constexpr int kAllInfluences = 0;
 
@@ -70,6 +77,8 @@ struct ExportOptions {
   // false: a skeleton-only asset (the writer has no mesh, plugins/writer.h):
   // no UVs, no skin (nothing fitted), no morph targets.
   bool mesh = true;
+  Origin origin = Origin::Model;  // --origin (exportAsset applies it after baking)
+  bool root_bone = false;         // --root-bone: a `root` joint (placement.h); implies Floor
 };
 
 // Whether an export with `o` refits its correctives: corrective_refit, with

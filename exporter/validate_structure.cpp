@@ -135,8 +135,8 @@ Status checkClip(const AnimationClip& c, size_t joints, Eigen::Index targets) {
   if (!c.joint_translations.empty() && c.joint_translations.size() != joints)
     return makeError(where + std::to_string(c.joint_translations.size()) +
                      " translation tracks; expected " + std::to_string(joints));
-  for (const auto& track : c.joint_translations)
-    if (track.size() != t)
+  for (const auto& track : c.joint_translations)  // empty: the joint stays at its rest offset
+    if (!track.empty() && track.size() != t)
       return makeError(where + "a translation track's length is not " + std::to_string(t));
   if (c.morph_weights.size() == 0) return Status();  // no weight channel (T x 0 without targets)
   return expectShape(where + "morph weights", c.morph_weights.rows(), c.morph_weights.cols(),

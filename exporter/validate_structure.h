@@ -23,7 +23,8 @@ namespace smpl {
 //     1 when marked quantized;
 //   each animation: T > 0 frames; fps > 0; key times (seconds) >= 0 and
 //     strictly increasing as float32 (what the files store); K rotation tracks
-//     of T non-zero quaternions; root translations 0 or T; morph weights
+//     of T non-zero quaternions; root translations 0 or T; joint translation
+//     tracks none or K, each 0 (rest offset) or T; morph weights
 //     empty (no weight channel) or T x (#morph targets).
 // Error: "<where>: <problem>; expected <rule>", e.g.
 //   "animation 'walk': key time of frame 3 (0.1) is not after frame 2 (0.1); expected strictly

@@ -90,6 +90,10 @@ Status checkConflicts(const ExportRequest& r) {
   if (r.track.kind == TrackChoice::Kind::All && r.motions.size() != 1)
     return usage(
         "--track all writes one output per person: give one --motion or --motion-sequence");
+  if (r.root_bone && r.origin == Origin::Model)
+    return usage(
+        "--root-bone conflicts with --origin model (the root bone stands on the floor: it implies "
+        "--origin floor)");
   if (!r.motion_sequence.empty() && r.motions.size() != 1)
     return usage("--motion-sequence DIR is the run's one motion: it conflicts with --motion");
   return checkMorphOptions(r);

@@ -49,10 +49,12 @@ struct ExportRequest {
   bool correctives = true;                                      // --correctives all|none
   bool corrective_refit = true;  // --corrective-refit on|off (core/math/corrective_refit.h)
   CorrectiveEncoding encoding = CorrectiveEncoding::Auto;       // --corrective-weights
-  int corrective_basis = 0;   // --corrective-basis K: 1..P principal components (0 = none)
-  int shape_keys = 0;         // --shape-keys N: 0..B shape_<i> targets
-  int expression_keys = 0;    // --expression-keys N: 0..E expr_<i> targets
-  std::string name = "body";  // --name NAME: the mesh name
+  int corrective_basis = 0;      // --corrective-basis K: 1..P principal components (0 = none)
+  int shape_keys = 0;            // --shape-keys N: 0..B shape_<i> targets
+  int expression_keys = 0;       // --expression-keys N: 0..E expr_<i> targets
+  std::string name = "body";     // --name NAME: the mesh name
+  std::optional<Origin> origin;  // --origin model|floor (none: model, or floor with --root-bone)
+  bool root_bone = false;        // --root-bone: a `root` joint on the floor (implies floor)
 
   // --- animation (AnimationOptions) ---
   std::optional<double> fps;  // --fps F: output rate in (0, 1000] fps; none: each motion's rate
@@ -107,6 +109,7 @@ struct ExportReport {
   SparseSkin skin;  // the skin written, per model vertex (exporter/pruning_error.h skinOfAsset)
   bool skin_error_measured = false;  // request.skin_error_poses > 0 and skin_fitted
   PruningError skin_error;
+  Placement placement;  // --origin / --root-bone as applied (the floor offset)
 };
 
 }  // namespace smpl

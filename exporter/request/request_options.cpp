@@ -19,6 +19,8 @@ ExportOptions exportOptionsOf(const ExportRequest& r, const std::vector<double>&
   o.uv_obj = r.uv;
   o.name = r.name;
   o.quantize_morphs = r.quantize_morphs;
+  o.root_bone = r.root_bone;
+  o.origin = r.origin.value_or(r.root_bone ? Origin::Floor : Origin::Model);
   const WriterFormat* format = writerFormatForPath(r.out);
   o.mesh = !format || format->needs_mesh;  // a skeleton-only writer: no skin, no morph targets
   return o;

@@ -217,6 +217,9 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   report.bytes = *bytes;
   report.skin_fitted = asset->mesh.joints.cols() > 0;  // no skin for a skeleton-only writer
   if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
+  if (report.skin_fitted && asset->placement.root_bone)  // model joint k is file joint k + 1
+    report.skin.joints = (report.skin.joints.array() - 1).cwiseMax(0).matrix();
+  report.placement = asset->placement;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
   report.joints = static_cast<int>(asset->skeleton.names.size());

@@ -123,7 +123,8 @@ void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
     addVectorCurves(ctx, prefix + "/T/0", "T", layer, ctx.joint_models[0], "Lcl Translation", times,
                     t);
   }
-  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // --dmpl-joints regressed
+  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // DMPL joints, root bone
+    if (clip.joint_translations[k].empty()) continue;            // at its rest offset
     std::vector<Eigen::Vector3d> t(clip.joint_translations[k].size());
     for (size_t i = 0; i < t.size(); ++i) t[i] = clip.joint_translations[k][i] * ctx.scale;
     addVectorCurves(ctx, prefix + "/T/" + std::to_string(k), "T", layer, ctx.joint_models[k],

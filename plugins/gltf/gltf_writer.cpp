@@ -458,7 +458,8 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
     addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), 0, "translation");
   }
-  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // --dmpl-joints regressed
+  for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // DMPL joints, root bone
+    if (clip.joint_translations[k].empty()) continue;            // at its rest offset
     std::vector<float> xyz;
     for (const Eigen::Vector3d& p : clip.joint_translations[k])
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});

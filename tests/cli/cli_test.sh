@@ -39,6 +39,8 @@ class Evil:
 open(os.path.join(sys.argv[1], "hostile.pkl"), "wb").write(pickle.dumps({"v_template": Evil()}, protocol=2))
 PY
 
+expect_failure origin-choice 1 "--origin: expected 'model' or 'floor', got 'feet'" --model builtin --out "$work/out.glb" --origin feet
+expect_failure root-bone-origin-model 1 "--root-bone conflicts with --origin model" --model builtin --out "$work/out.glb" --root-bone --origin model
 expect_failure unknown-option 1 "unknown option '--bogus'" --model builtin --out "$work/out.glb" --bogus 1
 expect_failure missing-model 2 "Error loading $work/none.npz" --model "$work/none.npz" --out "$work/out.glb"
 expect_failure truncated-npz 2 "truncated.npz" --model "$work/truncated.npz" --out "$work/out.glb"
@@ -91,6 +93,13 @@ check "export --corrective-refit off: $(cat "$work/plain")" $?
 [ -s "$work/a.glb.smpl.json" ]; check "sidecar written" $?
 "$exe" --model "$models/smpl_small.npz" --out "$work/b.glb" --betas 0.5,-1 -q
 cmp -s "$work/a.glb" "$work/b.glb"; check "GLB output is deterministic" $?
+# --origin model is the default: the same bytes as without it (docs/cli.md).
+"$exe" --model "$models/smpl_small.npz" --out "$work/c.glb" --betas 0.5,-1 --origin model -q
+cmp -s "$work/a.glb" "$work/c.glb"; check "--origin model changed the output" $?
+"$exe" --model "$models/smpl_small.npz" --out "$work/d.glb" --origin floor --root-bone >"$work/summary" 2>&1
+check "export --root-bone: $(cat "$work/summary")" $?
+grep -q "^origin: floor (every position moved +[0-9.]* m in y; root bone 'root' below the pelvis)" "$work/summary"
+check "--origin floor summary line: $(cat "$work/summary")" $?
 ls "$work" | grep -q tmp; [ $? != 0 ]; check "temporary files left behind" $?
 
 echo "$passed passed, $failed failed"

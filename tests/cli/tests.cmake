@@ -43,6 +43,25 @@ foreach(method optimized truncated)
   set_tests_properties(cli.skin_fit.${method} PROPERTIES LABELS cli FIXTURES_REQUIRED skin_fit_${method})
 endforeach()
 
+# --origin floor and --root-bone on a static export, checked by numpy against the
+# model's math (tests/roundtrip/origin_check.py): the lowest rest vertex at y = 0,
+# the shape otherwise unchanged, the root bone on the floor below the pelvis.
+foreach(variant floor root)
+  set(extra)
+  if(variant STREQUAL "root")
+    set(extra --root-bone)
+  endif()
+  set(asset ${SMPL_SKIN_FIT_DIR}/origin_smpl_small_${variant}.glb)
+  add_test(NAME cli.origin.${variant}.export
+    COMMAND $<TARGET_FILE:smpl-export> --model ${SMPL_FIXTURE_DIR}/models/smpl_small.npz
+            --betas 0.8,-0.5,0.3,1.2 --uv none --origin floor ${extra} --out ${asset} --quiet)
+  add_test(NAME cli.origin.${variant}
+    COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/roundtrip/origin_check.py
+            ${SMPL_FIXTURE_DIR}/models/smpl_small.npz ${asset} --betas 0.8,-0.5,0.3,1.2 ${extra})
+  set_tests_properties(cli.origin.${variant}.export PROPERTIES LABELS cli FIXTURES_SETUP origin_${variant})
+  set_tests_properties(cli.origin.${variant} PROPERTIES LABELS cli FIXTURES_REQUIRED origin_${variant})
+endforeach()
+
 # The README's option table and docs/cli.md agree with --help (cli/options.cpp).
 add_test(NAME cli.docs
   COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/check-cli-docs.py $<TARGET_FILE:smpl-export>

@@ -7,7 +7,7 @@ SMPLify-X .pkl fits with PCA hands per the authors' smplx code).
 
   blender -b --factory-startup --python-exit-code 1 --python blender_animation.py -- \
       --asset walk.glb --model model.npz --motion walk.npz [--fps 30] [--tol 1e-4] \
-      [--label smplh] [--subframe-report]
+      [--label smplh] [--subframe-report] [--check-floor]
 
 Reference (independent of the C++ code): joints mapped by canonical name
 (model_math.joint_names), betas = the motion's first min(16, B) values, weights
@@ -22,6 +22,11 @@ which separates importer clamping from everything else; both are asserted.
 --subframe-report (after widening): also evaluates Blender half-way between
 output keys and prints its error against the slerped keys and against the
 source motion at that time (the resampling loss), without asserting on them.
+--origin floor / --root-bone exports (the sidecar's "origin" and "root_bone"):
+the reference moves by the metadata's offset; --check-floor asserts that
+numpy's lowest posed vertex over every output frame is at y = 0 (1e-6 m), and
+with a root bone, at each checked frame, that Blender's `root` bone is the
+ground projection (x, 0, z) of numpy's pelvis joint and the parent of `pelvis`.
 Exit status 0 only if every check passes.
 """
 import argparse
@@ -52,6 +57,8 @@ def parse_args():
     ap.add_argument("--tol", type=float, default=1e-4)
     ap.add_argument("--label", default="")
     ap.add_argument("--subframe-report", action="store_true")
+    ap.add_argument("--check-floor", action="store_true",
+                    help="numpy's lowest posed vertex over the clip must be at y = 0")
     return ap.parse_args(argv)
 
 
@@ -171,6 +178,7 @@ class Reference:
         self.betas = motion["betas"][:min(16, b)]
         self.v_shaped, self.joints = model_math.shape(model, self.betas)
         self.up = Z_UP_TO_Y_UP if motion["amass"] else np.eye(3)
+        self.shift = np.zeros(3)  # --origin floor: the metadata's offset (file frame)
 
     def at(self, position, features=None):
         """Vertices (N,3), joints (K,3), features; `features` overrides the corrective weights."""
@@ -180,7 +188,7 @@ class Reference:
             f_model = (model_math.rodrigues(pose)[1:] - np.eye(3)).reshape(-1)
             v_shaped = v_shaped + self.model["posedirs"] @ (features - f_model)
         verts, joints, f = model_math.forward(self.model, v_shaped, self.joints, pose, self.weights)
-        return (verts + trans) @ self.up.T, (joints + trans) @ self.up.T, f
+        return (verts + trans) @ self.up.T + self.shift, (joints + trans) @ self.up.T + self.shift, f
 
 
 # --- Blender side ----------------------------------------------------------------
@@ -315,9 +323,43 @@ def check_frame(ctx, out_frame, position, tol, tag):
     if err > tol:
         explain_clamping(ctx, position, got, keys, f, lo, hi)
     rt.check(joint_err <= tol, "frame %d: posed joints off by %.3g m" % (out_frame, joint_err))
+    if ctx["root_bone"]:
+        check_root_bone(ctx, out_frame, want_joints[0], tol)
     rt.check(err <= tol, "%s%s frame %d: max vertex error %.3g m > %g"
              % (ctx["fmt"], tag, out_frame, err, tol))
     return err
+
+
+def check_root_bone(ctx, out_frame, pelvis, tol):
+    """--root-bone: Blender's root bone at the pelvis' ground projection, parent of pelvis."""
+    arm = ctx["arm"]
+    root = rt.posed_joints(arm, ["root"])[0]
+    err = np.abs(root - [pelvis[0], 0.0, pelvis[2]]).max()
+    print("  root_bone_vs_pelvis_ground_projection_m %.3e" % err)
+    rt.check(err <= tol, "frame %d: root bone off the pelvis' ground projection by %.3g m" % (out_frame, err))
+    parent = arm.pose.bones["pelvis"].parent
+    rt.check(parent is not None and parent.name == "root", "pelvis' parent is %s, not root"
+             % (parent.name if parent else None))
+
+
+def disconnect_pelvis(arm):
+    """Blender's FBX importer connects a bone to its parent when the child's head lies on
+    the parent's tail, which it puts along the parent's +Y at the mean child distance: so
+    `pelvis`, right above `root`, is connected and its animated height is ignored. The
+    documented import step (README "In a game engine"): untick Connected on `pelvis`."""
+    bpy.context.view_layer.objects.active = arm
+    bpy.ops.object.mode_set(mode="EDIT")
+    bone = arm.data.edit_bones["pelvis"]
+    print("fbx import: pelvis connected to root: %s (disconnected for playback)" % bone.use_connect)
+    bone.use_connect = False
+    bpy.ops.object.mode_set(mode="OBJECT")
+
+
+def check_floor(ref, ratio, count):
+    """numpy's lowest posed vertex over every output frame (the shifted reference) is at y = 0."""
+    lowest = min(ref.at(i * ratio)[0][:, 1].min() for i in range(count))
+    print("floor lowest_posed_vertex_y_m %.3e over %d frames (offset %.6f m)" % (lowest, count, ref.shift[1]))
+    rt.check(abs(lowest) <= 1e-6, "lowest posed vertex over the clip at y = %.3g m, not 0" % lowest)
 
 
 def subframe_report(ctx, ratio, count):
@@ -360,20 +402,30 @@ def main():
     fmt, arm, mesh_obj = import_asset(args.asset, fps_out)
     m = read_max_influences(args.asset)
     ref = Reference(model, motion, model_math.prune(model["weights"], m))
+    meta = read_metadata(args.asset)
+    ref.shift = np.array(meta.get("origin", {}).get("offset", [0.0, 0.0, 0.0]), dtype=np.float64)
+    root_bone = "root_bone" in meta
+    if root_bone and fmt == "fbx":
+        disconnect_pelvis(arm)
     entries, skin_method = corrective_entries(args.asset)
     rest_weights = {e["target"]: e.get("offset", 0.0) for e in entries}
-    index, _ = rt.vertex_map(mesh_obj, ref.v_shaped, rt.rest_positions(mesh_obj, rest_weights))
+    index, _ = rt.vertex_map(mesh_obj, ref.v_shaped + ref.shift, rt.rest_positions(mesh_obj, rest_weights))
     # The skin as the file carries it (optimized weights are fitted, not a truncation).
-    got_weights = rt.file_weights(mesh_obj, ref.names, index, len(ref.v_shaped))
+    got_weights = rt.file_weights(mesh_obj, ref.names, index, len(ref.v_shaped),
+                                  extra=("root",) if root_bone else ())
     ref.weights = rt.check_weights(got_weights, m, skin_method, model, None)
     ref.model = dict(model, posedirs=file_posedirs(mesh_obj, entries, model, index, got_weights))
     ratio = motion["fps"] / fps_out  # source frames per output frame
     count = int(np.floor((motion["frames"] - 1) / ratio + 1e-9)) + 1
     ctx = {"fmt": fmt, "arm": arm, "mesh": mesh_obj, "ref": ref, "index": index, "m": m,
-           "entries": entries,
+           "entries": entries, "root_bone": root_bone,
            "label": args.label or os.path.splitext(os.path.basename(args.model))[0],
            "offset": 1 if fmt == "fbx" else 0}  # Blender's FBX importer starts at frame 1
     frames = sorted({0, count // 2, count - 1})
+    if args.check_floor:
+        rt.check(meta.get("origin", {}).get("mode") == "floor", "--check-floor: the metadata's origin is %s"
+                 % meta.get("origin"))
+        check_floor(ref, ratio, count)
     worst = max(check_frame(ctx, i, i * ratio, args.tol, "") for i in frames)
     seconds = time.perf_counter() - start
     # The same frames with the slider ranges opened: isolates importer clamping
@@ -392,6 +444,13 @@ def read_max_influences(asset):
     import json
     with open(asset + ".smpl.json", encoding="utf-8") as fh:
         return int(json.load(fh)["max_influences"])
+
+
+def read_metadata(asset):
+    """The sidecar written next to the asset (docs/file-contract.md metadata)."""
+    import json
+    with open(asset + ".smpl.json", encoding="utf-8") as fh:
+        return json.load(fh)
 
 
 if __name__ == "__main__":

@@ -196,10 +196,16 @@ def check_skeleton(arm, names, parents):
     check(len(bones) == len(names), "%d bones, expected %d" % (len(bones), len(names)))
 
 
-def file_weights(mesh_obj, names, index, num_vertices):
-    """The skin weights as Blender imported them from the file: (N,K) per model vertex."""
+def file_weights(mesh_obj, names, index, num_vertices, extra=()):
+    """The skin weights as Blender imported them from the file: (N,K) per model vertex.
+    `extra`: joints of the file that are not model joints (--root-bone's root), which
+    must carry no weight."""
     group_joint = {g.index: names.index(g.name) for g in mesh_obj.vertex_groups if g.name in names}
-    check(len(group_joint) == len(mesh_obj.vertex_groups), "vertex groups not named after joints")
+    extra_groups = {g.index for g in mesh_obj.vertex_groups if g.name in extra}
+    check(len(group_joint) + len(extra_groups) == len(mesh_obj.vertex_groups),
+          "vertex groups not named after joints")
+    check(not any(g.group in extra_groups and g.weight > 0 for v in mesh_obj.data.vertices for g in v.groups),
+          "a joint that is not a model joint (%s) carries skin weight" % ", ".join(extra))
     got = np.zeros((len(index), len(names)))
     for v in mesh_obj.data.vertices:
         for g in v.groups:

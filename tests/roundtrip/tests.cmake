@@ -196,6 +196,7 @@ set_tests_properties(blender.addon.ground PROPERTIES
 
 # Baked animation (motions) through Blender and the validator; batch CLI.
 include(${CMAKE_CURRENT_LIST_DIR}/anim_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/origin_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/compact_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/basis_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/dmpl_tests.cmake)

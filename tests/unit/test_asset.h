@@ -129,16 +129,17 @@ inline Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip,
   const size_t k = s.parents.size();
   std::vector<Eigen::Affine3d> world(k);
   for (size_t j = 0; j < k; ++j) {
-    Eigen::Vector3d t =
-        j == 0 ? clip.root_translation[f]
-               : (clip.joint_translations.empty() ? Eigen::Vector3d(s.rest_local.row(j).transpose())
-                                                  : clip.joint_translations[j][f]);
+    const bool track = j < clip.joint_translations.size() && !clip.joint_translations[j].empty();
+    Eigen::Vector3d t = j == 0  ? clip.root_translation[f]
+                        : track ? clip.joint_translations[j][f]
+                                : Eigen::Vector3d(s.rest_local.row(j).transpose());
     Eigen::Affine3d local = Eigen::Translation3d(t) * clip.rotations[j][f];
     world[j] = s.parents[j] < 0 ? local : world[s.parents[j]] * local;
   }
   Eigen::MatrixXd v = a.mesh.positions.cast<double>();
   for (size_t t = 0; t < a.mesh.morph_targets.size(); ++t)
-    v += double(clip.morph_weights(f, t)) * a.mesh.morph_targets[t].deltas.cast<double>();
+    v += double(clip.morph_weights(f, t)) * a.mesh.morph_targets[t].peak *
+         a.mesh.morph_targets[t].deltas.cast<double>();
   Eigen::MatrixXd out(v.rows(), 3);
   for (Eigen::Index i = 0; i < v.rows(); ++i) {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();

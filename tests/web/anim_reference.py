@@ -10,6 +10,8 @@ to M influences as the exporter does.
 Writes PREFIX.json: {"fps", "frames", "num_vertices", "vertices": [[x,y,z]...]
 per frame} (vertices as float64 decimal text: exact round trip).
 Only AMASS .npz motions (poses or split keys), at their own frame rate.
+--offset-from SIDECAR: add the sidecar's `origin` offset (an --origin floor or
+--root-bone export: every position moved by (0, dy, 0)).
 """
 import argparse
 import json
@@ -48,6 +50,7 @@ def main():
     ap.add_argument("--max-influences", type=int, default=4)
     ap.add_argument("--frames", required=True, help="comma-separated source frames")
     ap.add_argument("--out", required=True)
+    ap.add_argument("--offset-from", default="", help="an export's .smpl.json: add its origin offset")
     a = ap.parse_args()
     model = model_math.load_model_npz(a.model)
     motion = read_amass(a.motion)
@@ -56,6 +59,10 @@ def main():
     v_shaped, joints = model_math.shape(model, motion["betas"][:min(16, b)])
     weights = model_math.prune(model["weights"], a.max_influences)
     frames = [int(x) for x in a.frames.split(",")]
+    shift = np.zeros(3)
+    if a.offset_from:
+        with open(a.offset_from, encoding="utf-8") as fh:
+            shift = np.array(json.load(fh)["origin"]["offset"], dtype=np.float64)
     out = []
     for frame in frames:
         pose = np.zeros((len(names), 3))
@@ -63,7 +70,7 @@ def main():
             if name in motion["rot"]:  # joints the motion lacks stay at rest
                 pose[k] = motion["rot"][name][frame]
         verts, _, _ = model_math.forward(model, v_shaped, joints, pose, weights)
-        out.append(((verts + motion["trans"][frame]) @ Z_UP_TO_Y_UP.T).tolist())
+        out.append(((verts + motion["trans"][frame]) @ Z_UP_TO_Y_UP.T + shift).tolist())
     with open(a.out + ".json", "w", encoding="utf-8") as f:
         json.dump({"fps": motion["fps"], "frames": frames, "num_vertices": len(v_shaped), "vertices": out}, f)
 
