@@ -59,10 +59,10 @@ MorphTarget directionTarget(std::string name, const Eigen::MatrixXd& dirs, int c
 
 // Pose feature n's deltas as exported (the refitted rows where there are,
 // core/math/corrective_refit.h), divided by `scale`, as asset-vertex deltas.
-MorphTarget correctiveTarget(std::string name, const BodyModel& model,
-                             const CorrectiveRefit& refit, int n,
-                             const std::vector<int>& source_vertex, double scale) {
-  if (refit.empty()) return directionTarget(std::move(name), model.posedirs, n, source_vertex, scale);
+MorphTarget correctiveTarget(std::string name, const BodyModel& model, const CorrectiveRefit& refit,
+                             int n, const std::vector<int>& source_vertex, double scale) {
+  if (refit.empty())
+    return directionTarget(std::move(name), model.posedirs, n, source_vertex, scale);
   MorphTarget t;
   t.name = std::move(name);
   t.deltas.resize(static_cast<Eigen::Index>(source_vertex.size()), 3);
@@ -94,8 +94,7 @@ void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
 
 // Split encoding of feature n (pipeline.h): one rectified target per sign
 // the feature can take; delta = P_n / scale, so weight * delta = f P_n.
-void addSplitCorrective(const BodyModel& model, const CorrectiveRefit& refit, int n,
-                        Asset* asset) {
+void addSplitCorrective(const BodyModel& model, const CorrectiveRefit& refit, int n, Asset* asset) {
   const bool diagonal = (n % 9) / 3 == n % 3;
   const std::string name = correctiveTargetName(model, n);
   std::vector<CorrectiveLayout> parts;
@@ -163,8 +162,8 @@ Status addCorrectiveBasis(const BodyModel& model, const ExportOptions& o, Asset*
   return Status();
 }
 
-Status addMorphTargets(const BodyModel& model, const ExportOptions& o,
-                       const CorrectiveRefit& refit, Asset* asset) {
+Status addMorphTargets(const BodyModel& model, const ExportOptions& o, const CorrectiveRefit& refit,
+                       Asset* asset) {
   std::vector<MorphTarget>& targets = asset->mesh.morph_targets;
   const std::vector<int>& src = asset->mesh.source_vertex;
   if (o.correctives && o.corrective_basis > 0) {

@@ -27,12 +27,12 @@ struct SkinError {
 };
 
 struct PruningError {
-  double mean_m = 0.0;  // the export (options.skin_weights, refit if any): mean, metres
-  double max_m = 0.0;   // worst vertex over all poses, metres
-  SkinError truncated;  // the M largest weights renormalised, the model's correctives
-  bool refit = false;   // the correctives were refitted (then: without_refit)
+  double mean_m = 0.0;      // the export (options.skin_weights, refit if any): mean, metres
+  double max_m = 0.0;       // worst vertex over all poses, metres
+  SkinError truncated;      // the M largest weights renormalised, the model's correctives
+  bool refit = false;       // the correctives were refitted (then: without_refit)
   SkinError without_refit;  // the exported weights with the model's correctives
-  int influences = 0;   // M
+  int influences = 0;       // M
   int poses = 0;
 };
 

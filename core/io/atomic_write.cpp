@@ -57,6 +57,7 @@ std::string tempPrefix(const std::string& name) {
 }
 
 std::atomic<std::string (*)()> g_test_random{nullptr};
+std::atomic<void (*)(size_t)> g_commit_hook{nullptr};
 
 // 16 hex digits from getrandom(2). Without entropy (early boot, ENOSYS) a
 // hash of time, pid and a counter: still unique enough for O_EXCL to retry.
@@ -229,6 +230,7 @@ Status commit(const std::vector<FileContent>& files, const std::vector<Temp>& te
       return st;
     }
     backups.push_back(b);
+    if (void (*hook)(size_t) = g_commit_hook.load()) hook(i);
   }
   for (const Backup& b : backups)
     if (!b.path.empty()) ::unlink(b.path.c_str());
@@ -272,6 +274,8 @@ std::string tempPathFor(const std::string& path) {
 }
 
 void setTempRandomForTesting(std::string (*source)()) { g_test_random.store(source); }
+
+void setCommitHookForTesting(void (*hook)(size_t)) { g_commit_hook.store(hook); }
 
 Status writeFileAtomic(const std::string& path, const void* data, size_t size) {
   return writeFilesTogether({FileContent{path, data, size}});

@@ -98,6 +98,12 @@ std::string tempPathFor(const std::string& path);
 // see that it is never opened or followed and another name is drawn.
 void setTempRandomForTesting(std::string (*source)());
 
+// Tests only: `hook` (nullptr: none) runs in writeFilesTogether after each
+// file of the set is renamed into place, under the folder lock, with the index
+// of that file; a test pauses there to widen the window in which a second
+// writer of the same outputs could interleave its renames (it must wait).
+void setCommitHookForTesting(void (*hook)(size_t index));
+
 // Removes, in `dir`, the temporaries (and backups) of the outputs named in
 // `names` (base names) that no live writer holds: each is a regular file whose
 // name is exactly a temporary name of one of `names`, and an flock on it

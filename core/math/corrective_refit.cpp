@@ -164,8 +164,8 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
     if (nonZero(model.weights, i) > nonZero(skin.weights, i)) cut.push_back(i);
   refit.cut = int(cut.size());
   if (cut.empty() || model.numPoseFeatures() == 0) return refit;
-  std::vector<Eigen::VectorXd> check = sampleMotionPoses(model.joint_names, o.validation_poses,
-                                                         o.validation_seed);
+  std::vector<Eigen::VectorXd> check =
+      sampleMotionPoses(model.joint_names, o.validation_poses, o.validation_seed);
   for (Eigen::VectorXd& pose : samplePoses(model.numJoints(), o.validation_poses,
                                            o.validation_seed + 1, o.validation_scale))
     check.push_back(std::move(pose));

@@ -144,8 +144,9 @@ Status checkRequest(const ExportRequest& r) {
   if (!format)
     return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
   if (r.meshopt && !meshoptAvailable())
-    return usage("--meshopt: this smpl-export was built without meshoptimizer (the static build: "
-                 "Debian ships no static libmeshoptimizer); use the Debian package build");
+    return usage(
+        "--meshopt: this smpl-export was built without meshoptimizer (the static build: "
+        "Debian ships no static libmeshoptimizer); use the Debian package build");
   if (format->single_clip && r.motions.size() > 1)
     return usage("--motion: " + format->name + " output holds one motion; got " +
                  std::to_string(r.motions.size()) + " (one output per motion: --motion-dir)");

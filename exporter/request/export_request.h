@@ -48,7 +48,7 @@ struct ExportRequest {
   SkinWeightMethod skin_weights = SkinWeightMethod::Optimized;  // --skin-weights
   bool correctives = true;                                      // --correctives all|none
   bool corrective_refit = true;  // --corrective-refit on|off (core/math/corrective_refit.h)
-  CorrectiveEncoding encoding = CorrectiveEncoding::Auto;       // --corrective-weights
+  CorrectiveEncoding encoding = CorrectiveEncoding::Auto;  // --corrective-weights
   int corrective_basis = 0;      // --corrective-basis K: 1..P principal components (0 = none)
   int shape_keys = 0;            // --shape-keys N: 0..B shape_<i> targets
   int expression_keys = 0;       // --expression-keys N: 0..E expr_<i> targets

@@ -226,9 +226,8 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
   report.max_influences = asset->metadata.max_influences;
   if (r.skin_error_poses > 0 && report.skin_fitted) {
-    Result<PruningError> err =
-        measurePruningError(model, report.options, r.skin_error_poses, &report.skin,
-                            &asset->corrective_refit);
+    Result<PruningError> err = measurePruningError(model, report.options, r.skin_error_poses,
+                                                   &report.skin, &asset->corrective_refit);
     if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());
     report.skin_error = *err;
     report.skin_error_measured = true;

@@ -28,7 +28,10 @@ add_test(NAME cli.readme_samples_detect_breakage
 set_tests_properties(cli.readme_samples cli.readme_samples_detect_breakage PROPERTIES LABELS cli)
 
 # Fitted skin weights checked by numpy (tests/roundtrip/skin_fit_check.py): the
-# weights read from the exported GLB beat numpy's truncation on held-out poses.
+# weights read from the exported GLB beat numpy's truncation on held-out poses
+# (uniform +-0.6 rad). The fit trains on motion-like poses (core/math/motion_poses.h),
+# not on this distribution: 27% lower mean and 58% lower max here, so the mean
+# gain asked is 20% (it was 30% while the fit trained on uniform poses).
 set(SMPL_SKIN_FIT_DIR ${CMAKE_BINARY_DIR})
 foreach(method optimized truncated)
   add_test(NAME cli.skin_fit.${method}.export
@@ -38,7 +41,7 @@ foreach(method optimized truncated)
   add_test(NAME cli.skin_fit.${method}
     COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/roundtrip/skin_fit_check.py
             ${SMPL_FIXTURE_DIR}/models/smpl_small.npz ${SMPL_SKIN_FIT_DIR}/skin_fit_smpl_small_${method}.glb
-            --betas 0.8,-0.5,0.3,1.2 --expect ${method})
+            --betas 0.8,-0.5,0.3,1.2 --expect ${method} --min-gain 0.2)
   set_tests_properties(cli.skin_fit.${method}.export PROPERTIES LABELS cli FIXTURES_SETUP skin_fit_${method})
   set_tests_properties(cli.skin_fit.${method} PROPERTIES LABELS cli FIXTURES_REQUIRED skin_fit_${method})
 endforeach()
@@ -110,7 +113,7 @@ set_tests_properties(cli.readme_build_commands PROPERTIES LABELS cli)
 # a usage error.
 add_test(NAME cli.skin_report_help COMMAND $<TARGET_FILE:smpl-skin-report> --help)
 set_tests_properties(cli.skin_report_help PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "^Usage: smpl-skin-report \\[--poses N\\] \\[MODEL \\.\\.\\.\\]")
+  PASS_REGULAR_EXPRESSION "^Usage: smpl-skin-report \\[--poses N\\] \\[--motion FILE \\[--stride S\\]\\] \\[MODEL \\.\\.\\.\\]")
 add_test(NAME cli.skin_report_unknown_option COMMAND $<TARGET_FILE:smpl-skin-report> --bogus)
 set_tests_properties(cli.skin_report_unknown_option PROPERTIES LABELS cli
   PASS_REGULAR_EXPRESSION "^Error in arguments: unknown option '--bogus'")

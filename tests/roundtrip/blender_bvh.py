@@ -24,6 +24,7 @@ motion, plus trans, AMASS Z-up turned Y-up) within --tol metres.
 Prints "bvh <label> frame <i> max_joint_err_m <e>" per checked frame.
 """
 import argparse
+import json
 import os
 import sys
 
@@ -46,6 +47,10 @@ def parse_args():
     ap.add_argument("--fps", type=float, default=0.0, help="the --fps given to smpl-export")
     ap.add_argument("--tol", type=float, default=1e-5)
     ap.add_argument("--label", default="")
+    ap.add_argument("--placed", action="store_true",
+                    help="--origin floor / --root-bone export: read the offset and the root bone from "
+                         "the sidecar (BVH.smpl.json); expected joints move by the offset, 'root' is "
+                         "the pelvis' ground projection")
     return ap.parse_args(harness.script_args())
 
 
@@ -81,11 +86,35 @@ def world_heads(arm, names, rest=False):
     return np.array(heads, dtype=np.float64) @ m[:3, :3].T + m[:3, 3]
 
 
-def check_skeleton(arm, ref, tol):
-    names, parents = ref.names, ref.model["parents"]
+def placement(args):
+    """(dy, root): the sidecar's origin offset (metres, y of the Y-up file) and the added root
+    bone's name (None without --root-bone); (0, None) unless --placed."""
+    if not args.placed:
+        return 0.0, None
+    with open(args.bvh + ".smpl.json") as f:
+        meta = json.load(f)
+    harness.check(meta.get("origin", {}).get("mode") == "floor", "sidecar origin %r" % meta.get("origin"))
+    dy = float(meta["origin"]["offset"][1])
+    root = meta.get("root_bone", {}).get("name")
+    return dy, root
+
+
+def with_root(joints, root):
+    """(K,3) model joints, with the root bone's head first when there is one: the pelvis' (joint
+    0) ground projection (x, 0, z) in the Y-up file (docs/file-contract.md)."""
+    if root is None:
+        return joints
+    return np.vstack([[joints[0, 0], 0.0, joints[0, 2]], joints])
+
+
+def check_skeleton(arm, ref, tol, dy=0.0, root=None):
+    names, parents = list(ref.names), list(ref.model["parents"])
+    if root is not None:  # the added bone: parent of the model's root joint
+        names = [root] + names
+        parents = [-1] + [p + 1 if p >= 0 else 0 for p in parents]
     bones = arm.data.bones
     harness.check(sorted(b.name for b in bones) == sorted(names),
-                  "bones %s, expected the model's joints %s" % ([b.name for b in bones], names))
+                  "bones %s, expected %s" % ([b.name for b in bones], names))
     for k, name in enumerate(names):
         bone = bones.get(name)
         if bone is None:
@@ -94,7 +123,8 @@ def check_skeleton(arm, ref, tol):
         got = bone.parent.name if bone.parent else None
         harness.check(got == want, "bone %s: parent %s, expected %s" % (name, got, want))
     if all(bones.get(n) for n in names):
-        err = np.abs(world_heads(arm, names, rest=True) - ref.joints).max()
+        want = with_root(ref.joints + np.array([0.0, dy, 0.0]), root)
+        err = np.abs(world_heads(arm, names, rest=True) - want).max()
         print("bvh rest joints vs J(beta): %.3e m" % err)
         harness.check(err <= tol, "rest heads off J(beta) by %.3g m" % err)
 
@@ -116,15 +146,19 @@ def main():
     arm = import_bvh(args.bvh, args.units)
     ref = anim.Reference(model, motion, model["weights"])
     label = args.label or os.path.splitext(os.path.basename(args.bvh))[0]
-    check_skeleton(arm, ref, args.tol)
+    dy, root = placement(args)
+    if args.placed:
+        print("bvh %s origin offset %+.6f m, root bone %s" % (label, dy, root))
+    check_skeleton(arm, ref, args.tol, dy, root)
+    names = ([root] if root else []) + list(ref.names)
     ratio = motion["fps"] / fps_out  # source frames per output frame
     count = int(np.floor((motion["frames"] - 1) / ratio + 1e-9)) + 1
     check_timing(arm, fps_out, count)
     worst = 0.0
     for i in sorted({0, count // 2, count - 1}):
         bpy.context.scene.frame_set(1 + i)
-        got = world_heads(arm, ref.names)
-        want = ref.at(i * ratio)[1]
+        got = world_heads(arm, names)
+        want = with_root(ref.at(i * ratio)[1] + np.array([0.0, dy, 0.0]), root)
         err = np.abs(got - want).max()
         worst = max(worst, err)
         print("bvh %s frame %d max_joint_err_m %.3e" % (label, i, err))

@@ -132,7 +132,8 @@ TEST(CorrectiveRefit, GuardKeepsTheModelsDeltasWhereTheRefitIsWorse) {
   const Error plain = errorOf(model, model, skin, poses);
   const Error g = errorOf(model, withRefit(model, guarded), skin, poses);
   const Error u = errorOf(model, withRefit(model, unguarded), skin, poses);
-  EXPECT_LT(g.max, u.max) << "plain " << plain.max << " guarded " << g.max << " unguarded " << u.max;
+  EXPECT_LT(g.max, u.max) << "plain " << plain.max << " guarded " << g.max << " unguarded "
+                          << u.max;
   EXPECT_LT(g.max, plain.max * 1.05);
 }
 

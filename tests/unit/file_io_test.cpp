@@ -10,7 +10,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -324,6 +326,46 @@ TEST_F(FileIo, ConcurrentWritersLeaveOneConsistentPair) {
     if (a.substr(a.size() - 1) != b.substr(b.size() - 1)) ++mixed;
   }
   EXPECT_EQ(mixed, 0);
+  EXPECT_EQ(list().size(), 2u);
+}
+
+// The interleaving the folder lock exists for, forced: writer 0 pauses after
+// renaming its output into place (the commit hook), writer 1 starts its whole
+// write then. Without the lock writer 1 renames both files during the pause and
+// writer 0's sidecar lands last: output of 1 beside sidecar of 0. With it,
+// writer 1 waits and the pair that stays is writer 1's, whole.
+std::atomic<bool> g_paused{false};
+std::atomic<bool> g_release{false};
+
+void pauseAfterFirstRename(size_t index) {
+  if (index != 0 || g_paused.exchange(true)) return;  // only writer 0's first rename
+  for (int i = 0; i < 400 && !g_release.load(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+TEST_F(FileIo, SecondWriterWaitsForACommitInProgress) {
+  const std::string out = dir_ + "/out.glb", side = out + ".smpl.json";
+  g_paused = false;
+  g_release = false;
+  setCommitHookForTesting(pauseAfterFirstRename);
+  const std::string a0 = "output of 0", b0 = "sidecar of 0", a1 = "output of 1",
+                    b1 = "sidecar of 1";
+  std::thread first([&] {
+    EXPECT_TRUE(
+        writeFilesTogether({{out, a0.data(), a0.size()}, {side, b0.data(), b0.size()}}).ok());
+  });
+  while (!g_paused.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  std::thread second([&] {
+    EXPECT_TRUE(
+        writeFilesTogether({{out, a1.data(), a1.size()}, {side, b1.data(), b1.size()}}).ok());
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));  // writer 1 would be done by now
+  g_release = true;
+  first.join();
+  second.join();
+  setCommitHookForTesting(nullptr);
+  EXPECT_EQ(readText(out), a1);
+  EXPECT_EQ(readText(side), b1);
   EXPECT_EQ(list().size(), 2u);
 }
 

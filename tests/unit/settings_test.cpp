@@ -298,6 +298,7 @@ TEST(OptionTable, EveryRuleIsEnforced) {
                                                       {"--bvh-units", "cm"},
                                                       {"--skin-weights", "truncated"},
                                                       {"--correctives", "none"},
+                                                      {"--corrective-refit", "off"},
                                                       {"--corrective-weights", "unit"},
                                                       {"--uv", "none"},
                                                       {"--dmpl-joints", "fixed"}};

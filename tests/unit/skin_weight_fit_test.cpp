@@ -106,7 +106,7 @@ TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
   ASSERT_TRUE(body.ok());
   SkinFitOptions o;
   o.training_poses = 32;
-  o.seed = 20261124;  // exporter/pruning_error.h's held-out poses
+  o.seed = 20261124;      // exporter/pruning_error.h's held-out poses
   o.motion_like = false;  // those poses are uniform random
   o.prior_strength = 0.0;
   o.guard = false;
@@ -118,8 +118,11 @@ TEST(FitSkinWeights, FitOnTheHeldOutPosesBoundsTheBuiltinBodysGain) {
   Result<SkinError> bound = heldOutError();
   ASSERT_TRUE(bound.ok()) << bound.message();
   ExportOptions four;  // the export's fit and truncation on the same (uniform) poses
-  const Errors e{*measureSkinError(model, four, denseWeights(pruneWeights(model.weights, 4), model.numJoints()), 32),
-                 *measureSkinError(model, four, denseWeights(exportSkin(model, *body, four), model.numJoints()), 32)};
+  const Errors e{
+      *measureSkinError(model, four,
+                        denseWeights(pruneWeights(model.weights, 4), model.numJoints()), 32),
+      *measureSkinError(model, four,
+                        denseWeights(exportSkin(model, *body, four), model.numJoints()), 32)};
   EXPECT_LT(bound->mean_m, e.fitted.mean_m);
   EXPECT_GT(bound->mean_m, 0.7 * e.truncated.mean_m)
       << bound->mean_m << " vs " << e.truncated.mean_m;

@@ -25,9 +25,9 @@
 
 #include "core/demo/demo_body.h"
 #include "core/joint_names.h"
+#include "core/load/model_loader.h"
 #include "core/load/motion.h"
 #include "core/math/corrective_refit.h"
-#include "core/load/model_loader.h"
 #include "core/math/skin_weight_fit.h"
 #include "core/math/skin_weights.h"
 #include "exporter/export_skin.h"
@@ -124,12 +124,12 @@ bool reportRow(const BodyModel& model, const ShapedBody& body, const Skins& s, i
   Result<SkinError> b = bound ? measureSkinOn(model, o, s.bound, nullptr, frames) : t;
   for (const Result<SkinError>* e : {&t, &f, &r, &b})
     if (!*e) return std::printf("  %s\n", e->message().c_str()), false;
-  std::printf("| %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %s | %s | %s | %s | %.0f | %.0f |\n",
-              m, t->mean_m * 1e3, t->max_m * 1e3, f->mean_m * 1e3, f->max_m * 1e3,
-              r->mean_m * 1e3, r->max_m * 1e3, gainPercent(r->mean_m, t->mean_m).c_str(),
-              gainPercent(r->max_m, t->max_m).c_str(),
-              gainPercent(f->mean_m, t->mean_m).c_str(),
-              bound ? gainPercent(b->mean_m, t->mean_m).c_str() : "", s.fit_ms, s.refit_ms);
+  std::printf(
+      "| %d | %.4f | %.4f | %.4f | %.4f | %.4f | %.4f | %s | %s | %s | %s | %.0f | %.0f |\n", m,
+      t->mean_m * 1e3, t->max_m * 1e3, f->mean_m * 1e3, f->max_m * 1e3, r->mean_m * 1e3,
+      r->max_m * 1e3, gainPercent(r->mean_m, t->mean_m).c_str(),
+      gainPercent(r->max_m, t->max_m).c_str(), gainPercent(f->mean_m, t->mean_m).c_str(),
+      bound ? gainPercent(b->mean_m, t->mean_m).c_str() : "", s.fit_ms, s.refit_ms);
   (void)body;
   return true;
 }

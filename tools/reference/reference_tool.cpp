@@ -169,8 +169,8 @@ int main(int argc, char** argv) {
   // The exported correctives: refitted to the skin unless --corrective-refit off.
   smpl::BodyModel exported = *model;
   if (smpl::refitsCorrectives(export_options))
-    exported.posedirs =
-        smpl::refitCorrectives(*model, *body, skin, smpl::CorrectiveRefitOptions()).posedirs(*model);
+    exported.posedirs = smpl::refitCorrectives(*model, *body, skin, smpl::CorrectiveRefitOptions())
+                            .posedirs(*model);
   const std::vector<Eigen::VectorXd> poses = smpl::samplePoses(k, p, o.seed, 0.6);
   Eigen::MatrixXd pose_rows(p, 3 * k), features(p, 9 * (k - 1)), joints(p, 3 * k);
   Eigen::MatrixXd v_pruned(p, 3 * n), v_full(p, 3 * n), v_shaped, rest_joints;
