@@ -24,8 +24,11 @@ inline Error makeError(std::string message, ErrorKind kind = ErrorKind::Unspecif
   return Error{std::move(message), kind};
 }
 
+// [[nodiscard]]: a Result or Status that is dropped is a compile warning
+// (-Wunused-result), so an error cannot be ignored by accident; cast to
+// (void) where dropping one is the intent, with a comment saying why.
 template <class T>
-class Result {
+class [[nodiscard]] Result {
  public:
   Result(T value) : v_(std::move(value)) {}      // NOLINT: implicit by design
   Result(Error error) : v_(std::move(error)) {}  // NOLINT
@@ -47,7 +50,7 @@ class Result {
 };
 
 // Result for operations with no value.
-class Status {
+class [[nodiscard]] Status {
  public:
   Status() = default;
   Status(Error error) : error_(std::move(error)), failed_(true) {}  // NOLINT

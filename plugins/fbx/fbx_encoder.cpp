@@ -279,10 +279,6 @@ FbxNode& FbxNode::addInt64Array(const std::vector<int64_t>& v) {
   properties.push_back(encodeArray('l', v));
   return *this;
 }
-FbxNode& FbxNode::addBoolArray(const std::vector<uint8_t>& v) {
-  properties.push_back(encodeArray('b', v));
-  return *this;
-}
 
 Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
                               const FbxEncodeOptions& options) {

@@ -62,7 +62,6 @@ struct FbxNode {
   FbxNode& addDoubleArray(const std::vector<double>& v);
   FbxNode& addInt32Array(const std::vector<int32_t>& v);
   FbxNode& addInt64Array(const std::vector<int64_t>& v);
-  FbxNode& addBoolArray(const std::vector<uint8_t>& v);
 };
 
 // Arrays whose raw size exceeds this many bytes are deflated.

@@ -41,7 +41,6 @@ FbxNode& addP(FbxNode& p70, const std::string& name, const char* type, const cha
               const char* flags);
 void pInt(FbxNode& p70, const std::string& name, int32_t v);
 void pEnum(FbxNode& p70, const std::string& name, int32_t v);
-void pBool(FbxNode& p70, const std::string& name, bool v);
 void pDouble(FbxNode& p70, const std::string& name, double v);
 void pNumber(FbxNode& p70, const std::string& name, double v, bool animatable);
 void pTime(FbxNode& p70, const std::string& name, int64_t ktime);

@@ -41,9 +41,6 @@ void pInt(FbxNode& p70, const std::string& name, int32_t v) {
 void pEnum(FbxNode& p70, const std::string& name, int32_t v) {
   addP(p70, name, "enum", "", "").addInt32(v);
 }
-void pBool(FbxNode& p70, const std::string& name, bool v) {
-  addP(p70, name, "bool", "", "").addInt32(v ? 1 : 0);
-}
 void pDouble(FbxNode& p70, const std::string& name, double v) {
   addP(p70, name, "double", "Number", "").addDouble(v);
 }

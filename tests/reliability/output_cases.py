@@ -42,6 +42,14 @@ def temps(folder):
 
 def inputs_protected():
     d = fresh("protect")
+    # A model whose name is the buffer of the .gltf asked for: D/body.bin is
+    # what --out D/body.gltf writes beside it, so writing would destroy the model.
+    bin_model = d / "body.bin"
+    shutil.copy(models / "smpl_small.npz", bin_model)
+    expect_failure("kinds.gltf_buffer_is_the_model",
+                   [exe, "--model", bin_model, "--out", d / "body.gltf"], exit_code=1,
+                   names=[str(bin_model), "would overwrite the input"], inputs=[bin_model],
+                   out_dirs=[d], forbidden=[d / "body.gltf", d / "body.gltf.smpl.json"])
     model = d / "model.npz"
     shutil.copy(models / "smpl_small.npz", model)
     glb_model = d / "m.glb"  # the loaders recognise files by content, not by name

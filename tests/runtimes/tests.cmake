@@ -5,7 +5,7 @@
 #   runtime.maya_glue        the staged Maya package against a stand-in of maya.cmds/OpenMaya
 #   runtime.unreal_glue      the Unreal plugin's adapter compiled against stand-in UE types
 # The C++ core itself (unreal/.../SmplCorrectivesCore.h) is tested in unit_tests
-# (tests/unit/runtime_core_test.cpp, RuntimeCore.*).
+# (tests/unit/unreal/runtime_core_test.cpp, RuntimeCore.*).
 
 set(SMPL_RUNTIME_DIR ${CMAKE_BINARY_DIR}/runtimes)
 set(SMPL_RUNTIME_REF ${SMPL_RUNTIME_DIR}/smpl_small_ref)

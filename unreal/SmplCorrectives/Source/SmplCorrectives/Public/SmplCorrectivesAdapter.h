@@ -1,6 +1,6 @@
 // SmplCorrectivesAdapter.h: what the Unreal animation node does with the core,
 // written against plain callables instead of engine types (header-only, C++17
-// standard library only), so CI runs it (tests/unit/runtime_adapter_test.cpp)
+// standard library only), so CI runs it (tests/unit/unreal/runtime_adapter_test.cpp)
 // with a stand-in skeleton. FAnimNode_SmplCorrectives passes lambdas over
 // FCSPose / FBlendedCurve; nothing else in the node computes anything.
 //

@@ -4,7 +4,7 @@
 // Why a separate header: Unreal cannot run on our CI machines, so everything
 // that can be wrong (the formula, the metadata's weight mapping, the corrective
 // basis, the axis conversion) lives here, where GoogleTest checks it against the
-// C++ reference forward pass (tests/unit/runtime_core_test.cpp). The Unreal
+// C++ reference forward pass (tests/unit/unreal/runtime_core_test.cpp). The Unreal
 // plugin (SmplCorrectives module) only copies bone rotations in and weights out.
 //
 // The robust runtime formula (docs/file-contract.md), for model joint k with
@@ -80,7 +80,8 @@ inline Mat3 withUnitColumns(const Mat3& a) {
 /// FBX importer with default options (Z up, left-handed): the FBX SDK converts
 /// (x, y, z) -> (x, -z, y) (Y up -> Z up) and Unreal then negates Y, so model
 /// (x, y, z) -> Unreal (x, z, y). A mirror (det -1). Derived from the two
-/// documented conversions, not measured inside Unreal (docs/unreal.md).
+/// documented conversions, not measured inside Unreal (unreal/README.md, "Axes";
+/// tests/unit/unreal/runtime_core_test.cpp derives it on its own).
 inline Mat3 unrealFbxAxes() { return {1, 0, 0, 0, 0, 1, 0, 1, 0}; }
 
 /// One corrective morph target of the metadata's "correctives" array.

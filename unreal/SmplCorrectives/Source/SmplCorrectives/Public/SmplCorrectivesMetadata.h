@@ -2,7 +2,7 @@
 // (header-only, C++17 standard library only).
 //
 // Why our own small JSON reader: the sidecar is untrusted input, and parsing is
-// part of what can be wrong; with it here, CI tests it (tests/unit/
+// part of what can be wrong; with it here, CI tests it (tests/unit/unreal/
 // runtime_metadata_test.cpp) and the Unreal glue only loads the file's text.
 // The reader accepts RFC 8259 JSON, nests at most 64 levels, and reports the
 // first problem with its byte offset. Keys the correctives do not need are

@@ -11,8 +11,8 @@
 #include <map>
 #include <string>
 
-#include "fbx_test_asset.h"
 #include "plugins/fbx/fbx_writer.h"
+#include "tests/unit/plugins/fbx/fbx_test_asset.h"
 
 // Debian's Assimp 5.2.5 leaks ~1.3 KB inside its FBX converter on every
 // import of a file with morph animation (all frames in libassimp.so), which

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -195,6 +196,21 @@ TEST(RuntimeCore, TheAxisMapMatters) {
     worst =
         std::max(worst, std::fabs(ev.features()[n] - c.reference.pose_features(Eigen::Index(n))));
   EXPECT_GT(worst, 0.05);
+}
+
+// unrealFbxAxes() derived here from the two documented conversions, not
+// taken from the function under test: Unreal's FBX importer ("Convert Scene",
+// FbxAxisSystem to Z up, right-handed) turns the file's Y-up frame by +90
+// degrees about X, (x, y, z) -> (x, -z, y); Unreal then negates Y, its frame
+// being left-handed. The product is a mirror with up (+Y) -> +Z.
+TEST(RuntimeCore, UnrealAxesAreTheDocumentedConversions) {
+  const Eigen::Matrix3d fbx_z_up = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitX()).matrix();
+  const Eigen::Matrix3d unreal_y_flip = Eigen::Vector3d(1, -1, 1).asDiagonal();
+  const Eigen::Matrix3d expected = unreal_y_flip * fbx_z_up;
+  const Eigen::Matrix3d c = toEigen(sc::unrealFbxAxes());
+  EXPECT_LT((c - expected).cwiseAbs().maxCoeff(), 1e-15) << c;
+  EXPECT_NEAR(c.determinant(), -1.0, 1e-15);                                           // a mirror
+  EXPECT_LT((c * Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitZ()).norm(), 1e-15);  // up
 }
 
 TEST(RuntimeCore, VerticesMatchTheReferenceInEveryEncoding) {

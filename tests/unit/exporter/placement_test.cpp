@@ -12,7 +12,7 @@
 #include "core/load/model_loader.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
-#include "test_asset.h"
+#include "tests/unit/test_asset.h"
 
 namespace smpl {
 namespace {

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "plugins/writer.h"
-#include "test_asset.h"
+#include "tests/unit/test_asset.h"
 
 namespace smpl {
 namespace {

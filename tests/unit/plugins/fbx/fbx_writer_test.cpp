@@ -17,8 +17,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "fbx_test_asset.h"
 #include "plugins/fbx/fbx_scene_internal.h"
+#include "tests/unit/plugins/fbx/fbx_test_asset.h"
 
 namespace smpl {
 namespace {
@@ -359,6 +359,23 @@ TEST(FbxWriter, ShapesAreSparseAndNeverEmpty) {
     moving += a.mesh.positions(v, 1) > 1.3f;
   EXPECT_EQ(shapes[1]->child("Indexes")->props[0].numbers.size(), size_t(moving));
   EXPECT_EQ(shapes[2]->child("Indexes")->props[0].numbers.size(), 1u);  // all-zero target
+}
+
+// The channel's own DeformPercent is the rest weight as a percentage (FBX
+// SDK: FbxBlendShapeChannel::DeformPercent, 0..100): a unit-encoded target
+// rests at 50 (weight 0.5), not at 0.5 %. Importers read it before any curve.
+TEST(FbxWriter, RestDeformPercentIsAPercentage) {
+  Asset a = fbx_test::testAsset();
+  a.mesh.morph_targets[0].rest_weight = 0.5f;
+  a.mesh.morph_targets[1].rest_weight = 1.0f;
+  Parsed f = writeAndParse(a, {});
+  auto channels = f.objects("Deformer", "BlendShapeChannel");
+  ASSERT_EQ(channels.size(), 3u);
+  const double expected[3] = {50.0, 100.0, 0.0};
+  for (size_t t = 0; t < 3; ++t) {
+    ASSERT_NE(channels[t]->child("DeformPercent"), nullptr) << t;
+    EXPECT_DOUBLE_EQ(channels[t]->child("DeformPercent")->props[0].d, expected[t]) << t;
+  }
 }
 
 // Curves of one curve node, by channel ("d|X"...), via the connections.

@@ -2,10 +2,13 @@
 // base mesh v_shaped, every weight 0 at rest and in [0, 1] for any pose, and
 // sum_t max(0, scale f + offset) delta_t == posedirs f exactly (float deltas).
 // Also: --corrective-basis targets are quantized by --quantize-morphs
-// (exporter/morph_scales.h) with the scale folded into the basis mapping.
+// (exporter/morph_scales.h) with the scale folded into the basis mapping;
+// the unit encoding's weights stay in [0, 1].
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "core/demo/demo_body.h"
@@ -76,6 +79,41 @@ TEST(SplitEncoding, OtherEncodingsAreNotRectified) {
   ASSERT_TRUE(asset.ok()) << asset.message();
   EXPECT_EQ(asset->metadata.corrective_encoding, "unit");
   EXPECT_EQ(metadataJson(*asset).find("rectified"), std::string::npos);
+}
+
+// The unit encoding keeps every weight in [0, 1] (docs/file-contract.md,
+// "Encodings"): feature n is R_rc - delta_rc, so a diagonal feature lies in
+// [-2, 0] and an off-diagonal one in [-1, 1]; weight = scale f + offset must
+// map both ranges onto [0, 1], ends included. Checked at the range ends and on
+// rotations up to pi (Eigen's AngleAxis, not the exporter's code).
+TEST(UnitEncoding, WeightsStayInZeroOneOverEveryRotation) {
+  ExportOptions o;
+  o.encoding = CorrectiveEncoding::Unit;
+  Result<Asset> asset = buildAsset(demoBody(), o);
+  ASSERT_TRUE(asset.ok()) << asset.message();
+  const std::vector<CorrectiveLayout>& layout = asset->metadata.correctives;
+  ASSERT_FALSE(layout.empty());
+  for (const CorrectiveLayout& c : layout) {
+    const int entry = c.feature % 9;
+    const bool diagonal = entry / 3 == entry % 3;
+    const double lo = diagonal ? -2.0 : -1.0, hi = diagonal ? 0.0 : 1.0;
+    EXPECT_NEAR(c.scale * lo + c.offset, 0.0, 1e-12) << c.target;
+    EXPECT_NEAR(c.scale * hi + c.offset, 1.0, 1e-12) << c.target;
+  }
+  uint64_t state = 7;
+  for (int k = 0; k < 2000; ++k) {
+    const Eigen::Vector3d axis =
+        Eigen::Vector3d(uniform01(&state) - 0.5, uniform01(&state) - 0.5, uniform01(&state) - 0.5)
+            .normalized();
+    const Eigen::Matrix3d r = Eigen::AngleAxisd(M_PI * uniform01(&state), axis).toRotationMatrix();
+    for (const CorrectiveLayout& c : layout) {
+      const int entry = c.feature % 9;
+      const double f = r(entry / 3, entry % 3) - (entry / 3 == entry % 3 ? 1.0 : 0.0);
+      const double w = c.scale * f + c.offset;
+      ASSERT_GE(w, -1e-12) << c.target;
+      ASSERT_LE(w, 1.0 + 1e-12) << c.target;
+    }
+  }
 }
 
 // The split encoding with a corrective basis is refused by the request

@@ -162,6 +162,34 @@ TEST(FitSkinWeights, VerticesWithAtMostMInfluencesKeepTheirWeights) {
   EXPECT_LE((dense - model->weights).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+// The prior is the model's weights on the chosen support, renormalised to
+// sum 1 (the header): with an overwhelming prior_strength the fit returns it,
+// whatever support it picked. Unnormalised, the simplex constraint would
+// shift every weight by the same amount instead (the Euclidean projection),
+// which differs wherever the support's weights are unequal.
+TEST(FitSkinWeights, AnOverwhelmingPriorGivesTheRenormalisedModelWeights) {
+  Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
+  ASSERT_TRUE(model.ok()) << model.message();
+  Result<ShapedBody> body = shapeBody(*model, Eigen::VectorXd());
+  ASSERT_TRUE(body.ok());
+  SkinFitOptions o;
+  o.max_influences = 2;
+  o.training_poses = 8;
+  o.prior_strength = 1e9;
+  const SparseSkin fit = fitSkinWeights(*model, *body, o);
+  int cut = 0;
+  for (Eigen::Index i = 0; i < fit.weights.rows(); ++i) {
+    double kept = 0;
+    for (Eigen::Index s = 0; s < 2; ++s) kept += model->weights(i, fit.joints(i, s));
+    if (fit.weights(i, 1) == 0.0 || kept > 1.0 - 1e-9) continue;  // nothing was cut
+    ++cut;
+    for (Eigen::Index s = 0; s < 2; ++s)
+      ASSERT_NEAR(fit.weights(i, s), model->weights(i, fit.joints(i, s)) / kept, 1e-6)
+          << "vertex " << i << " slot " << s;
+  }
+  EXPECT_GT(cut, 100);  // the fixture's vertices with more than 2 influences
+}
+
 TEST(ExportSkin, AllInfluencesIsEveryJoint) {
   ExportOptions o;
   o.max_influences = kAllInfluences;
