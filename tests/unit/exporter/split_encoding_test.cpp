@@ -86,7 +86,7 @@ TEST(SplitEncoding, OtherEncodingsAreNotRectified) {
 // [-2, 0] and an off-diagonal one in [-1, 1]; weight = scale f + offset must
 // map both ranges onto [0, 1], ends included. Checked at the range ends and on
 // rotations up to pi (Eigen's AngleAxis, not the exporter's code).
-TEST(UnitEncoding, WeightsStayInZeroOneOverEveryRotation) {
+TEST(UnitEncoding, WeightsStayInZeroOneAndTheRestPoseIsVShaped) {
   ExportOptions o;
   o.encoding = CorrectiveEncoding::Unit;
   Result<Asset> asset = buildAsset(demoBody(), o);
@@ -100,6 +100,19 @@ TEST(UnitEncoding, WeightsStayInZeroOneOverEveryRotation) {
     EXPECT_NEAR(c.scale * lo + c.offset, 0.0, 1e-12) << c.target;
     EXPECT_NEAR(c.scale * hi + c.offset, 1.0, 1e-12) << c.target;
   }
+  // At rest (f = 0) every weight is its offset, so the stored base mesh is
+  // v_shaped minus sum_n offset_n delta_n: base + sum rest_weight delta = v_shaped.
+  Result<ShapedBody> body = shapeBody(demoBody(), Eigen::VectorXd());
+  ASSERT_TRUE(body.ok());
+  const SkinnedMesh& mesh = asset->mesh;
+  Eigen::MatrixXd rest = mesh.positions.cast<double>();
+  for (const MorphTarget& t : mesh.morph_targets)
+    rest += double(t.rest_weight) * t.deltas.cast<double>();
+  double worst = 0;
+  for (Eigen::Index i = 0; i < rest.rows(); ++i)
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::fabs(rest(i, c) - body->v_shaped(mesh.source_vertex[i], c)));
+  EXPECT_LT(worst, 1e-5) << "metres";
   uint64_t state = 7;
   for (int k = 0; k < 2000; ++k) {
     const Eigen::Vector3d axis =
