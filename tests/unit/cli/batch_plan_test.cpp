@@ -33,9 +33,11 @@ class BatchPlanTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   Settings settings(const char* format) const {
     const std::string motions = dir_ + "/motions", out = dir_ + "/out";
-    std::vector<const char*> argv = {"smpl-export",   "--model",   "builtin",   "--motion-dir",
-                                     motions.c_str(), "--out-dir", out.c_str(), "--format",
-                                     format,          "-q"};
+    // Truncated weights, no refit: the plan is under test, not the fit (quicker).
+    std::vector<const char*> argv = {
+        "smpl-export",        "--model",  "builtin", "--motion-dir", motions.c_str(),  "--out-dir",
+        out.c_str(),          "--format", format,    "-q",           "--skin-weights", "truncated",
+        "--corrective-refit", "off"};
     Result<Settings> s = parseSettings(static_cast<int>(argv.size()), argv.data());
     EXPECT_TRUE(s.ok()) << s.message();
     return *s;

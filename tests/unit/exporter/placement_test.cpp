@@ -32,10 +32,12 @@ struct Inputs {
   Motion motion;
 };
 
-// The skin fit is not what these tests are about: truncated weights are quicker.
+// The skin fit and the corrective refit are not what these tests are about:
+// truncated weights and the model's posedirs are quicker.
 ExportOptions truncated() {
   ExportOptions o;
   o.skin_weights = SkinWeightMethod::Truncated;
+  o.corrective_refit = false;
   return o;
 }
 

@@ -17,8 +17,9 @@ namespace {
 const double kNan = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
-// The demo body with correctives and a two-frame animation clip.
-Asset goodAsset() {
+// The demo body with correctives and a two-frame animation clip, built once
+// (the default export fits and refits; each case spoils its own copy).
+Asset buildGoodAsset() {
   ExportOptions o;
   Result<Asset> a = buildAsset(demoBody(), o);
   EXPECT_TRUE(a.ok()) << a.message();
@@ -32,6 +33,10 @@ Asset goodAsset() {
       Eigen::MatrixXf::Zero(2, static_cast<Eigen::Index>(a->mesh.morph_targets.size()));
   a->animations.push_back(clip);
   return *a;
+}
+Asset goodAsset() {
+  static const Asset built = buildGoodAsset();
+  return built;
 }
 
 void expectError(const std::function<void(Asset*)>& spoil, const std::string& want) {

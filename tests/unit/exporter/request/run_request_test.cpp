@@ -39,9 +39,19 @@ class RunRequestTest : public ::testing::Test {
     out_ = dir_ + "/body.glb";
   }
   void TearDown() override { fs::remove_all(dir_); }
-  // The request the command line makes of `extra`.
+  // The request the command line makes of `extra` (truncated weights, no
+  // refit: the request's path is under test, not the fit; quicker).
   ExportRequest request(std::vector<const char*> extra, const char* model = "builtin") const {
-    std::vector<const char*> argv = {"smpl-export", "--model", model, "--out", out_.c_str(), "-q"};
+    std::vector<const char*> argv = {"smpl-export",
+                                     "--model",
+                                     model,
+                                     "--out",
+                                     out_.c_str(),
+                                     "-q",
+                                     "--skin-weights",
+                                     "truncated",
+                                     "--corrective-refit",
+                                     "off"};
     argv.insert(argv.end(), extra.begin(), extra.end());
     Result<Settings> s = parseSettings(static_cast<int>(argv.size()), argv.data());
     EXPECT_TRUE(s.ok()) << s.message();
