@@ -15,8 +15,8 @@ set(SMPL_CONFORMANCE_KIT ${CMAKE_BINARY_DIR}/conformance/kit)
 set(SMPL_CONFORMANCE_PERTURBED ${CMAKE_BINARY_DIR}/conformance/kit_perturbed)
 set(SMPL_CONFORMANCE_MODEL ${SMPL_FIXTURE_DIR}/models/smpl_small.npz)
 # The perturbed value and the line every loader must print for it.
-set(SMPL_CONFORMANCE_PERTURB fbx_rotated.split:weights)
-set(SMPL_CONFORMANCE_FAILURE "fbx_rotated[.]split.*weights")
+set(SMPL_CONFORMANCE_PERTURB identity_rest.split:weights)
+set(SMPL_CONFORMANCE_FAILURE "identity_rest[.]split.*weights")
 set(SMPL_CONFORMANCE_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(SMPL_EXPECT_FAILURE ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/expect_failure.py
     ${SMPL_CONFORMANCE_FAILURE})

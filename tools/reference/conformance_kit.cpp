@@ -30,6 +30,7 @@ struct KitFrame {
   Eigen::Matrix3d axes;
   bool bind_rotated;  ///< false: B_k = I (bones at identity rest)
   std::string what;
+  bool root_at_axes = false;  ///< B_0 = C: the root's rest orientation is the model frame
 };
 
 Eigen::Matrix3d rows(double a, double b, double c, double d, double e, double f, double g, double h,
@@ -53,7 +54,18 @@ std::vector<KitFrame> kitFrames() {
        "Unity's left-handed flip, bones with a fixed bind orientation"},
       {"unreal", rows(1, 0, 0, 0, 0, 1, 0, 1, 0), true,
        "Unreal's FBX axes (x,y,z) -> (x,z,y), bones with a fixed bind orientation"},
+      {"three_turned",
+       Eigen::Matrix3d(Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.3, 1, -0.2).normalized())), true,
+       "a character turned in the scene, its root at rest in the model frame, the other bones "
+       "re-oriented "
+       "(three.js loaders: the driver takes C from the root's rest)",
+       true},
   };
+}
+
+/// Whether the root's rest world rotation (B_0) is C, as the three.js driver assumes.
+bool rootRestIsAxes(const KitFrame& f) {
+  return f.root_at_axes || (!f.bind_rotated && f.axes.isApprox(Eigen::Matrix3d::Identity(), 1e-15));
 }
 
 struct KitEncoding {
@@ -178,7 +190,12 @@ std::string manifestJson(const BodyModel& model, const std::vector<std::string>&
   for (const KitFrame& f : kitFrames()) {
     Eigen::Matrix<double, 3, 3, Eigen::RowMajor> axes = f.axes;
     j.beginObject().key("name").string(f.name).key("what").string(f.what);
-    j.key("axes").numbers(std::vector<double>(axes.data(), axes.data() + 9)).end();
+    j.key("axes").numbers(std::vector<double>(axes.data(), axes.data() + 9));
+    j.key("bind_rotated")
+        .boolean(f.bind_rotated)
+        .key("root_rest_is_axes")
+        .boolean(rootRestIsAxes(f));
+    j.end();
   }
   j.end();
   j.key("cases").beginArray();
@@ -248,7 +265,8 @@ std::string writeConformanceKit(const BodyModel& model, const KitRequest& reques
     if (!asset) return "export (" + enc.name + "): " + asset.message();
     for (const KitFrame& frame : kitFrames()) {
       const std::string name = frame.name + "." + enc.name;
-      const Rotations& b = frame.bind_rotated ? bind : identity;
+      Rotations b = frame.bind_rotated ? bind : identity;
+      if (frame.root_at_axes) b[0] = frame.axes;  // W_0(rest) = C C^T B_0 = C
       Rotations rest_world, rest_local;
       engineRotations(frame, model.parents, identity, b, &rest_world, &rest_local);
       std::vector<KitPose> poses;
