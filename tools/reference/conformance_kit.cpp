@@ -238,14 +238,17 @@ void perturb(const std::string& spec, const std::string& name, std::vector<KitPo
 
 }  // namespace
 
-std::string writeConformanceKit(const BodyModel& model, const KitRequest& request) {
-  bool known = request.perturb.empty();
+std::string checkPerturb(const std::string& perturb) {
+  bool known = perturb.empty();
   for (const KitEncoding& enc : kitEncodings())
     for (const KitFrame& frame : kitFrames())
       for (const char* what : {":features", ":weights"})
-        known = known || request.perturb == frame.name + "." + enc.name + what;
-  if (!known)
-    return "--perturb " + request.perturb + ": not CASE:features or CASE:weights of a kit case";
+        known = known || perturb == frame.name + "." + enc.name + what;
+  return known ? "" : "--perturb " + perturb + ": not CASE:features or CASE:weights of a kit case";
+}
+
+std::string writeConformanceKit(const BodyModel& model, const KitRequest& request) {
+  if (std::string e = checkPerturb(request.perturb); !e.empty()) return e;
   if (std::string e = makeDir(request.dir); !e.empty()) return e;
   if (std::string e = makeDir(request.dir + "/bad"); !e.empty()) return e;
   const int k = model.numJoints();

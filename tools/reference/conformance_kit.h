@@ -18,6 +18,10 @@ struct KitRequest {
   uint64_t seed = 7;    ///< poses and bind orientations (pose_sampler.h)
 };
 
+/// Empty when `perturb` is "" or CASE:features / CASE:weights of a kit case,
+/// else the error line (a usage error: checked before anything is written).
+std::string checkPerturb(const std::string& perturb);
+
 /// Writes DIR/manifest.json, DIR/<case>.smpl.json (the exporter's metadata of
 /// the case's encoding, exporter/metadata_json.h), DIR/<case>.json (axes,
 /// rest and posed bone rotations in the importer's frame, expected features

@@ -117,6 +117,7 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
   }
   if (!o->kit.perturb.empty() && o->kit.dir.empty())
     return *error = "--perturb needs --conformance-kit", false;
+  if (std::string e = smpl::checkPerturb(o->kit.perturb); !e.empty()) return *error = e, false;
   if (o->request().model.empty() || (o->out.empty() == o->kit.dir.empty()))
     return *error = "--model and one of --out and --conformance-kit are required", false;
   if (o->poses < 1) return *error = "--poses must be >= 1", false;
