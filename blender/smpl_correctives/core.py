@@ -73,12 +73,14 @@ def metadata_from_file(path):
 
 def checked(metadata):
     """Metadata with joint_names/parents dropped unless well formed (a list of
-    strings and a list of ints of one length): files are untrusted input."""
+    strings and a list of ints of one length, parents[0] = -1 and
+    0 <= parents[k] < k): files are untrusted input."""
     if not isinstance(metadata, dict):
         return None
     names, parents = metadata.get("joint_names"), metadata.get("parents")
     ok = (isinstance(names, list) and isinstance(parents, list) and len(names) == len(parents)
-          and all(isinstance(n, str) for n in names) and all(isinstance(p, int) for p in parents))
+          and all(isinstance(n, str) for n in names) and all(isinstance(p, int) for p in parents)
+          and len(parents) > 0 and parents[0] == -1 and all(0 <= p < k for k, p in enumerate(parents) if k))
     if not ok:
         metadata = {k: v for k, v in metadata.items() if k not in ("joint_names", "parents")}
     if not isinstance(metadata.get("correctives", []), list):
@@ -91,10 +93,18 @@ def checked(metadata):
 
 def corrective_table(metadata):
     """target name -> (scale, offset, rectified) from the metadata's
-    "correctives" (empty: names only). A malformed entry is skipped."""
+    "correctives" (empty: names only). A malformed entry is skipped, and so is
+    one whose "feature" is not an index 0 <= n < 9 (joints - 1) when the
+    metadata has its joints (the target's name says the feature; a wrong index
+    means the file is not what it claims)."""
     table = {}
+    names = (metadata or {}).get("joint_names")
+    features = 9 * (len(names) - 1) if isinstance(names, list) else None
     for entry in (metadata or {}).get("correctives", []):
         try:
+            n = entry.get("feature", 0)
+            if features is not None and not (type(n) is int and 0 <= n < features):
+                continue
             s, o = float(entry.get("scale", 1.0)), float(entry.get("offset", 0.0))
             if math.isfinite(s) and math.isfinite(o):
                 table[str(entry["target"])] = (s, o, entry.get("rectified") is True)

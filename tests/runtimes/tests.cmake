@@ -3,6 +3,7 @@
 #   runtime.reference        smpl-reference --dump-model on the smpl_small fixture
 #   runtime.python_core      blender/smpl_correctives/core.py (Blender + Maya) vs the reference
 #   runtime.maya_glue        the staged Maya package against a stand-in of maya.cmds/OpenMaya
+#   runtime.*.conformance    the same as loaders of the conformance kit (+ .perturbed: must fail)
 #   runtime.unreal_glue      the Unreal plugin's adapter compiled against stand-in UE types
 # The C++ core itself (unreal/.../SmplCorrectivesCore.h) is tested in unit_tests
 # (tests/unit/unreal/runtime_core_test.cpp, RuntimeCore.*).
@@ -24,6 +25,23 @@ add_test(NAME runtime.maya_glue
           --package ${SMPL_MAYA_DIR} --reference ${SMPL_RUNTIME_REF})
 set_tests_properties(runtime.python_core runtime.maya_glue PROPERTIES
   LABELS unit FIXTURES_REQUIRED runtime_reference)
+
+# The same two as loaders of the conformance kit (tests/conformance/tests.cmake,
+# docs/conformance.md), and each on the perturbed kit, where it must fail.
+set(SMPL_PYTHON_CORE_LOADER ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/python_core_conformance.py
+    --core ${PROJECT_SOURCE_DIR}/blender/smpl_correctives/core.py --kit)
+set(SMPL_MAYA_LOADER ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/maya_glue_conformance.py
+    --package ${SMPL_MAYA_DIR} --kit)
+add_test(NAME runtime.python_core.conformance COMMAND ${SMPL_PYTHON_CORE_LOADER} ${SMPL_CONFORMANCE_KIT})
+add_test(NAME runtime.maya_glue.conformance COMMAND ${SMPL_MAYA_LOADER} ${SMPL_CONFORMANCE_KIT})
+add_test(NAME runtime.python_core.conformance.perturbed
+  COMMAND ${SMPL_EXPECT_FAILURE} ${SMPL_PYTHON_CORE_LOADER} ${SMPL_CONFORMANCE_PERTURBED})
+add_test(NAME runtime.maya_glue.conformance.perturbed
+  COMMAND ${SMPL_EXPECT_FAILURE} ${SMPL_MAYA_LOADER} ${SMPL_CONFORMANCE_PERTURBED})
+set_tests_properties(runtime.python_core.conformance runtime.maya_glue.conformance PROPERTIES
+  LABELS unit FIXTURES_REQUIRED conformance_kit)
+set_tests_properties(runtime.python_core.conformance.perturbed runtime.maya_glue.conformance.perturbed
+  PROPERTIES LABELS unit FIXTURES_REQUIRED conformance_perturbed)
 
 # The Unreal plugin's glue sources compiled against stand-in Unreal headers
 # (unreal_standin/: CoreMinimal.h, AnimNodeBase.h, ... with Unreal's names and

@@ -17,18 +17,13 @@ namespace SmplExport.Correctives.StubRunner
 {
     public sealed class DemoTests
     {
-        const string Reference = "Packages/com.smpl-export.correctives/Tests/Data/csharp_reference_smpl.json";
-
         [TearDown]
         public void DestroyRigs() { TestRig.DestroyAll(); }
 
         [Test]
         public void BendsJointsAboutTheModelXAxisAndTogglesCorrectives()
         {
-            string error;
-            List<ReferenceModel> models = ReferenceModel.LoadAll(AssetDatabase.LoadAssetAtPath<TextAsset>(Reference).text, Reference, out error);
-            Assert.IsNotNull(models, error);
-            ReferenceModel model = models[0];
+            ReferenceModel model = KitReference.Load(new Kit(Kit.DirFromEnvironment()));
             var rig = new TestRig(model, "mixamorig:", "");
             UnityEngine.Object.DestroyImmediate(rig.Driver);  // the demo must add its own
             rig.W = new Quaternion(0f, 0.6f, 0f, 0.8f);  // the character turned about +Y

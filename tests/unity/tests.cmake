@@ -1,23 +1,15 @@
 # Unity runtime (unity/Runtime/*.cs) tested without Unity: compiled by mono's
 # mcs with unity/Tests/*.cs (not Tests/Editor: the NUnit wrappers) against a
-# hand-written stub of the UnityEngine types it uses, and checked
-# against features from the C++ reference (core/math/forward.h) for world rotations
-# as Unity reports them. Included from tests/CMakeLists.txt.
-
-add_executable(smpl-csharp-reference ${CMAKE_CURRENT_LIST_DIR}/csharp_reference.cpp)
-target_link_libraries(smpl-csharp-reference PRIVATE smpl_exporter smpl_load)
+# hand-written stub of the UnityEngine types it uses, and run as a loader of
+# the runtime conformance kit (tests/conformance/tests.cmake,
+# docs/conformance.md): every case, the bad sidecars, and the component tests
+# on the kit's Unity cases. Included from tests/CMakeLists.txt.
 
 find_program(SMPL_MCS mcs)
 find_program(SMPL_MONO mono)
 set(SMPL_CSHARP_DIR ${CMAKE_CURRENT_BINARY_DIR}/csharp)
-set(SMPL_CSHARP_REFERENCE_JSON ${SMPL_CSHARP_DIR}/reference.json)
-set(SMPL_CSHARP_MODELS ${SMPL_FIXTURE_DIR}/models/smpl_small.npz ${SMPL_FIXTURE_DIR}/models/smplx_small.npz)
 
 file(MAKE_DIRECTORY ${SMPL_CSHARP_DIR})
-
-add_test(NAME csharp_reference_data
-  COMMAND $<TARGET_FILE:smpl-csharp-reference> ${SMPL_CSHARP_REFERENCE_JSON} ${SMPL_CSHARP_MODELS})
-set_tests_properties(csharp_reference_data PROPERTIES LABELS csharp FIXTURES_SETUP csharp_reference)
 
 if(SMPL_MCS AND SMPL_MONO)
   file(GLOB SMPL_UNITY_RUNTIME CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/unity/Runtime/*.cs)
@@ -31,18 +23,22 @@ if(SMPL_MCS AND SMPL_MONO)
             ${SMPL_UNITY_RUNTIME} ${SMPL_UNITY_TEST_SOURCES}
     COMMENT "Compiling the Unity runtime and its tests with mcs")
   add_custom_target(smpl-csharp-tests ALL DEPENDS ${SMPL_CSHARP_EXE})
-  add_test(NAME unity_csharp COMMAND ${SMPL_MONO} ${SMPL_CSHARP_EXE} ${SMPL_CSHARP_REFERENCE_JSON})
+  add_test(NAME unity_csharp COMMAND ${SMPL_MONO} ${SMPL_CSHARP_EXE} ${SMPL_CONFORMANCE_KIT})
+  add_test(NAME unity_csharp.perturbed
+    COMMAND ${SMPL_EXPECT_FAILURE} ${SMPL_MONO} ${SMPL_CSHARP_EXE} ${SMPL_CONFORMANCE_PERTURBED})
 else()
   # A missing toolchain must show up as a failure, not as a silently absent test.
   add_test(NAME unity_csharp COMMAND ${CMAKE_COMMAND} -E false)
+  add_test(NAME unity_csharp.perturbed COMMAND ${CMAKE_COMMAND} -E false)
   message(WARNING "mcs/mono not found: test unity_csharp will fail (apt-get install mono-mcs mono-runtime)")
 endif()
-set_tests_properties(unity_csharp PROPERTIES LABELS csharp FIXTURES_REQUIRED csharp_reference)
+set_tests_properties(unity_csharp PROPERTIES LABELS csharp FIXTURES_REQUIRED conformance_kit)
+set_tests_properties(unity_csharp.perturbed PROPERTIES LABELS csharp FIXTURES_REQUIRED conformance_perturbed)
 
 # The package's EditMode tests (unity/Tests/Editor), Editor code (unity/Editor)
 # and sample (unity/Samples~) compiled by mcs against the UnityEngine,
 # UnityEditor and NUnit stubs, and run by a small [Test] runner
-# (EditModeRunner.cs) with the reference data shipped in the package. Not
+# (EditModeRunner.cs) with the conformance kit ($SMPL_CONFORMANCE_KIT). Not
 # Unity's Test Runner: no Unity on CI. Without -define:SMPL_EXPORT_MONO_TESTS
 # (the console harness and benchmark are left out, as in Unity).
 if(SMPL_MCS AND SMPL_MONO)
@@ -73,22 +69,9 @@ foreach(kind smpl smplh smplx)
     COMMAND smpl-export --model ${SMPL_FIXTURE_DIR}/models/${kind}_small.npz --out ${SMPL_HUMANOID_DIR}/${kind}.glb)
   set_tests_properties(unity_humanoid_export.${kind} PROPERTIES LABELS csharp FIXTURES_SETUP unity_humanoid_bodies)
 endforeach()
-set_tests_properties(unity_editmode_stub PROPERTIES LABELS csharp FIXTURES_REQUIRED unity_humanoid_bodies
-  ENVIRONMENT SMPL_HUMANOID_DIR=${SMPL_HUMANOID_DIR})
-
-# The C++ reference data shipped for Unity's Test Runner
-# (unity/Tests/Data/csharp_reference_smpl.json) must equal a fresh run on the
-# smpl_small fixture. To update it after changing csharp_reference.cpp:
-#   build/tests/smpl-csharp-reference unity/Tests/Data/csharp_reference_smpl.json \
-#       build/fixtures/models/smpl_small.npz
-set(SMPL_CSHARP_REFERENCE_SMPL ${SMPL_CSHARP_DIR}/reference_smpl.json)
-add_test(NAME unity_reference_data_generate
-  COMMAND $<TARGET_FILE:smpl-csharp-reference> ${SMPL_CSHARP_REFERENCE_SMPL} ${SMPL_FIXTURE_DIR}/models/smpl_small.npz)
-set_tests_properties(unity_reference_data_generate PROPERTIES LABELS csharp FIXTURES_SETUP csharp_reference_smpl)
-add_test(NAME unity_reference_data_current
-  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/compare_reference.py
-          ${SMPL_CSHARP_REFERENCE_SMPL} ${PROJECT_SOURCE_DIR}/unity/Tests/Data/csharp_reference_smpl.json)
-set_tests_properties(unity_reference_data_current PROPERTIES LABELS csharp FIXTURES_REQUIRED csharp_reference_smpl)
+set_tests_properties(unity_editmode_stub PROPERTIES LABELS csharp
+  FIXTURES_REQUIRED "unity_humanoid_bodies;conformance_kit"
+  ENVIRONMENT "SMPL_HUMANOID_DIR=${SMPL_HUMANOID_DIR};SMPL_CONFORMANCE_KIT=${SMPL_CONFORMANCE_KIT}")
 
 # Every asset of the Unity package has its committed, current .meta file
 # (scripts/unity-meta.py; Unity ignores assets without one in a git package).

@@ -8,6 +8,11 @@
 //                  [--max-influences M] [--skin-weights truncated|optimized]
 //                  [--corrective-refit on|off]
 //                  [--poses P] [--seed S] [--dump-model]
+//   smpl-reference --model PATH|builtin --conformance-kit DIR [--perturb CASE:features|weights]
+//
+// --conformance-kit writes the runtime conformance kit (docs/conformance.md,
+// tools/reference/conformance_kit.h) instead of PREFIX.json/.bin; --perturb
+// makes one expected value of one case wrong (the loaders' failure tests).
 //
 // Output: PREFIX.json, a header
 //   {"model_kind","joint_names","parents","max_influences","num_vertices",
@@ -47,6 +52,7 @@
 #include "exporter/request/check_request.h"
 #include "exporter/request/model_source.h"
 #include "exporter/request/request_options.h"
+#include "tools/reference/conformance_kit.h"
 
 namespace {
 
@@ -56,6 +62,7 @@ struct Options {
   int poses = 20;
   uint64_t seed = 1;
   bool dump_model = false;
+  smpl::KitRequest kit;  // --conformance-kit DIR, --perturb
   const smpl::ExportRequest& request() const { return export_settings.request; }
 };
 
@@ -97,6 +104,10 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
       o->poses = std::atoi(v);
     } else if (a == "--seed") {
       o->seed = std::strtoull(v, nullptr, 10);
+    } else if (a == "--conformance-kit") {
+      o->kit.dir = v;
+    } else if (a == "--perturb") {
+      o->kit.perturb = v;
     } else if (a == "--dump-model") {
       o->dump_model = true;
     } else {
@@ -104,8 +115,11 @@ bool parseArgs(int argc, char** argv, Options* o, std::string* error) {
     }
     if (needs) ++i;
   }
-  if (o->request().model.empty() || o->out.empty())
-    return *error = "--model and --out are required", false;
+  if (!o->kit.perturb.empty() && o->kit.dir.empty())
+    return *error = "--perturb needs --conformance-kit", false;
+  if (std::string e = smpl::checkPerturb(o->kit.perturb); !e.empty()) return *error = e, false;
+  if (o->request().model.empty() || (o->out.empty() == o->kit.dir.empty()))
+    return *error = "--model and one of --out and --conformance-kit are required", false;
   if (o->poses < 1) return *error = "--poses must be >= 1", false;
   if (smpl::Status st = smpl::checkRequestOptions(o->request()); !st)
     return *error = st.message(), false;
@@ -153,6 +167,13 @@ int main(int argc, char** argv) {
   if (smpl::Status st = smpl::checkRequestForModel(request, request.betas, *model); !st) {
     std::fprintf(stderr, "smpl-reference: %s\n", st.message().c_str());
     return 2;
+  }
+  if (!o.kit.dir.empty()) {
+    if (std::string e = smpl::writeConformanceKit(*model, o.kit); !e.empty()) {
+      std::fprintf(stderr, "smpl-reference: %s\n", e.c_str());
+      return 4;
+    }
+    return 0;
   }
   const int n = model->numVertices(), k = model->numJoints(), p = o.poses;
   const smpl::ExportOptions export_options = smpl::exportOptionsOf(request, request.betas);

@@ -121,7 +121,11 @@ namespace SmplExport.Correctives
                 return "'parents' has " + parents.Count + " entries; 'joint_names' has " + JointNames.Length;
             Parents = new int[parents.Count];
             for (int k = 0; k < parents.Count; ++k)
+            {
                 if (!ReadInt(parents[k], out Parents[k])) return "'parents'[" + k + "] is not an integer";
+                if (k == 0 ? Parents[0] != -1 : Parents[k] < 0 || Parents[k] >= k)
+                    return "'parents'[" + k + "] = " + Parents[k] + "; expected " + (k == 0 ? "-1 (the root)" : "0 <= parent < " + k);
+            }
             object correctives;
             if (!meta.TryGetValue("correctives", out correctives) || !(correctives is List<object>))
                 return "missing 'correctives' array";

@@ -131,14 +131,14 @@ namespace SmplExport.Correctives.Tests
             TestRig.DestroyAll();
         }
 
-        // The exporter's --corrective-basis metadata (K = 16, unit weights):
+        // The exporter's --corrective-basis metadata (the kit's K = 8, unit weights):
         // basis blend shapes get scale (C f) + offset, as the C++ computes it.
         static void BasisSidecar(ReferenceModel model)
         {
             var rig = new TestRig(model, "Armature|", "");
             string error;
             SidecarLayout layout = SidecarLayout.Parse(model.BasisSidecar, "basis.glb.smpl.json", out error);
-            CorrectivesTests.Check(layout != null && layout.Basis != null && layout.Basis.Targets.Length == 16 &&
+            CorrectivesTests.Check(layout != null && layout.Basis != null && layout.Basis.Targets.Length == 8 &&
                                    layout.Correctives.Length == 0, model.Name + ": basis sidecar parsed: " + error);
             if (layout == null || layout.Basis == null) return;
             var basisIndex = new int[layout.Basis.Targets.Length];

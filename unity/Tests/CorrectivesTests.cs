@@ -1,15 +1,15 @@
-// Checks of unity/Runtime against the C++ reference, shared by two runners:
+// Checks of unity/Runtime, shared by two runners:
 //  - the mono harness (tests/unity/tests.cmake): mcs compiles unity/Runtime,
 //    unity/Tests/*.cs and tests/unity/UnityEngineStub.cs with
 //    -define:SMPL_EXPORT_MONO_TESTS; Main below runs everything.
-//    usage: mono SmplCorrectivesTests.exe reference.json
+//    usage: mono SmplCorrectivesTests.exe KIT_DIR
 //  - Unity's Test Runner: the EditMode assembly of this folder
 //    (SmplExport.Correctives.Tests.asmdef, UNITY_INCLUDE_TESTS) with the
 //    NUnit wrappers in Editor/, which call the same Run methods.
-// reference.json comes from tests/unity/csharp_reference.cpp: the C++
-// reference features poseFeatures(R) for random poses, and the world
-// rotations Unity would report for two imported skeletons. A check that
-// fails is counted and printed; the runners fail if any did.
+// KIT_DIR is the runtime conformance kit (smpl-reference --conformance-kit,
+// docs/conformance.md): KitTests runs every case through the runtime, and the
+// component tests read their poses from its Unity cases (KitReference). A
+// check that fails is counted and printed; the runners fail if any did.
 using System;
 using System.Collections.Generic;
 using System.Globalization;
@@ -32,24 +32,26 @@ namespace SmplExport.Correctives.Tests
         {
             if (args.Length != 1)
             {
-                Console.Error.WriteLine("usage: SmplCorrectivesTests.exe reference.json");
+                Console.Error.WriteLine("usage: SmplCorrectivesTests.exe KIT_DIR");
                 return 2;
             }
-            string error;
-            List<ReferenceModel> models = ReferenceModel.LoadAll(System.IO.File.ReadAllText(args[0]), args[0], out error);
-            if (models == null)
+            Kit kit;
+            ReferenceModel model;
+            try
             {
-                Console.Error.WriteLine(error);
+                kit = new Kit(args[0]);
+                model = KitReference.Load(kit);
+            }
+            catch (Exception e)
+            {
+                Console.Error.WriteLine(args[0] + ": not a conformance kit (" + e.GetType().Name + ": " + e.Message + ")");
                 return 2;
             }
-            Check(models.Count >= 2, "reference has " + models.Count + " models; expected at least 2");
-            foreach (ReferenceModel model in models)
-            {
-                MathTests.Run(model);
-                ComponentTests.Run(model);
-            }
+            KitTests.Run(kit);
+            MathTests.Run(model);
+            ComponentTests.Run(model);
             UnitTests.Run();
-            foreach (ReferenceModel model in models) Benchmark.Run(model);
+            Benchmark.Run(model);
             Console.WriteLine(checks + " checks, " + Failures.Count + " failed");
             return Failures.Count == 0 ? 0 : 1;
         }
@@ -91,6 +93,7 @@ namespace SmplExport.Correctives.Tests
         public Quat[] IdentityRestWorld, BindRestWorld;
     }
 
+    /// <summary>A model's poses as the component tests use them (KitReference.Load).</summary>
     public sealed class ReferenceModel
     {
         public string Name;
@@ -98,80 +101,18 @@ namespace SmplExport.Correctives.Tests
         public int[] Parents;
         public double[] AxisMap;
         public Quat[] BindRest;
-        public string BasisSidecar;     // the exporter's metadata with --corrective-basis 16
+        public string BasisSidecar;     // the exporter's metadata with --corrective-basis 8 (unit)
         public List<ReferencePose> Poses = new List<ReferencePose>();
 
-        public ReferenceModel(Dictionary<string, object> o)
-        {
-            Name = (string)o["name"];
-            var names = (List<object>)o["joint_names"];
-            JointNames = names.ConvertAll(x => (string)x).ToArray();
-            Parents = Array.ConvertAll(Numbers(o["parents"]), x => (int)x);
-            AxisMap = Numbers(o["axis_map"]);
-            BindRest = Quats(o["bind_rest"]);
-            BasisSidecar = (string)o["basis_sidecar"];
-            foreach (object p in (List<object>)o["poses"])
-            {
-                var d = (Dictionary<string, object>)p;
-                Poses.Add(new ReferencePose {
-                    Features = Numbers(d["features"]),
-                    BasisWeights = Numbers(d["basis_weights"]),
-                    IdentityRestWorld = Quats(d["identity_rest_world"]),
-                    BindRestWorld = Quats(d["bind_rest_world"]) });
-            }
-        }
-
         public int JointCount { get { return Parents.Length; } }
-
-        /// <summary>The models of a reference.json text; null and a one-line error if it is not one.</summary>
-        public static List<ReferenceModel> LoadAll(string json, string context, out string error)
-        {
-            object root;
-            if (!MiniJson.TryParse(json, out root, out error))
-            {
-                error = context + ": " + error;
-                return null;
-            }
-            var result = new List<ReferenceModel>();
-            try
-            {
-                foreach (object m in (List<object>)((Dictionary<string, object>)root)["models"])
-                    result.Add(new ReferenceModel((Dictionary<string, object>)m));
-            }
-            catch (Exception e)
-            {
-                error = context + ": not reference data of csharp_reference.cpp (" + e.GetType().Name + ": " + e.Message + ")";
-                return null;
-            }
-            return result;
-        }
-
-        static double[] Numbers(object v) { return ((List<object>)v).ConvertAll(x => (double)x).ToArray(); }
-
-        static Quat[] Quats(object v)
-        {
-            var list = (List<object>)v;
-            var result = new Quat[list.Count];
-            for (int i = 0; i < list.Count; ++i)
-            {
-                double[] q = Numbers(list[i]);
-                result[i] = new Quat(q[0], q[1], q[2], q[3]);
-            }
-            return result;
-        }
     }
 
-    // CorrectiveMath in doubles against the C++ reference.
+    // CorrectiveMath in doubles beyond the kit's cases (KitTests): a wrong axis
+    // map is caught, a scaled one is the same conjugation.
     static class MathTests
     {
         public static void Run(ReferenceModel model)
         {
-            double identity = MaxError(model, CorrectiveMath.MirrorX, false);
-            CorrectivesTests.CheckClose(identity, CorrectivesTests.DoubleTolerance,
-                                        model.Name + ": CorrectiveMath, identity-rest bones, mirror X");
-            double bind = MaxError(model, CorrectiveMath.MirrorX, true);
-            CorrectivesTests.CheckClose(bind, CorrectivesTests.DoubleTolerance,
-                                        model.Name + ": CorrectiveMath, bind-rest bones, mirror X");
             // The comparison can fail: a wrong axis map must be caught.
             foreach (double[] wrong in new[] { CorrectiveMath.IdentityMap, CorrectiveMath.MirrorZ })
                 foreach (bool useBind in new[] { false, true })

@@ -69,11 +69,13 @@ namespace SmplExport.Correctives.Tests
             ExpectError(ok.Replace("\"target\":\"pose_a_22\",", ""), "target must be a string");
             ExpectError("{\"joint_names\":[", "JSON error");
             ExpectError("[1,2]", "no 'joint_names'");
-            // Parsed, but the table itself is invalid: reported by CorrectiveMath.Create.
+            // A parent table out of order: refused by the reader (the kit's bad sidecars
+            // cover more) and by CorrectiveMath.Create for tables built in code.
             string bad = ok.Replace("[-1,0]", "[-1,1]");
             layout = SidecarLayout.Parse(bad, "x.smpl.json", out error);
-            CorrectiveMath math = layout == null ? null : CorrectiveMath.Create(layout.Parents, CorrectiveMath.MirrorX, out error);
-            Check(math == null && error != null && error.Contains("joint 1 has parent 1"), "bad parents rejected: " + error);
+            Check(layout == null && error != null && error.Contains("'parents'[1] = 1"), "bad parents rejected: " + error);
+            CorrectiveMath math = CorrectiveMath.Create(new[] { -1, 1 }, CorrectiveMath.MirrorX, out error);
+            Check(math == null && error != null && error.Contains("joint 1 has parent 1"), "bad parents rejected by Create: " + error);
         }
 
         static void BasisParsing()

@@ -69,7 +69,8 @@ export interface Correctives {
 /**
  * Bind the correctives of every skinned mesh under `root`.
  * @throws Error when no skinned mesh carries a corrective target, a joint of
- *   the metadata has no bone, or corrective_basis is malformed.
+ *   the metadata has no bone, or the metadata's joint_names, parents,
+ *   correctives or corrective_basis are malformed (the message names the field).
  */
 export function bindCorrectives(root: Object3D, metadata: SmplMetadata | null, options?: BindOptions): Correctives;
 

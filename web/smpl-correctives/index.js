@@ -78,12 +78,15 @@ export function applyFbxUnitScale(fbxGroup) {
  * @param {{warn?: (message: string) => void}} [options]  warn: where the
  *   one-time warnings go (default console.warn)
  * @returns {import('./index').Correctives}
- * @throws {Error} when no skinned mesh has a corrective target, or a joint of
- *   the metadata has no bone (message names the joint)
+ * @throws {Error} when no skinned mesh has a corrective target, a joint of
+ *   the metadata has no bone (message names the joint), or the metadata's
+ *   joint_names, parents, correctives or corrective_basis are malformed
+ *   (message names the field)
  */
 export function bindCorrectives(root, metadata, options = {}) {
   const warn = options.warn || ((m) => console.warn(m));
   const meta = isObject(metadata) ? metadata : null;
+  if (meta) checkMetadata(meta);
   const meshes = skinnedMeshes(root);
   if (meshes.length === 0) throw new Error('smpl-correctives: no skinned mesh under the given root');
   const skeleton = meshes[0].skeleton;
@@ -100,6 +103,35 @@ export function bindCorrectives(root, metadata, options = {}) {
   }
   const rig = buildRig(skeleton, joints);
   return new Correctives(rig, layout, bound);
+}
+
+/**
+ * Throws on metadata that is present but malformed (files are untrusted):
+ * joint_names/parents (strings, one length, parents[0] = -1, 0 <= parents[k] < k)
+ * and correctives (a list of entries with an integer feature < 9(K-1), a
+ * string target, numeric scale and offset). The message names the field.
+ */
+function checkMetadata(meta) {
+  const fail = (m) => { throw new Error(`smpl-correctives: metadata ${m}`); };
+  const names = meta.joint_names, parents = meta.parents;
+  if (names !== undefined || parents !== undefined) {
+    if (!Array.isArray(names) || !names.every((n) => typeof n === 'string')) fail("'joint_names' must be a list of strings");
+    if (!Array.isArray(parents) || parents.length !== names.length) fail("'parents' must be a list as long as 'joint_names'");
+    parents.forEach((p, k) => {
+      if (!Number.isInteger(p) || (k === 0 ? p !== -1 : p < 0 || p >= k)) {
+        fail(`'parents'[${k}] = ${JSON.stringify(p)}; expected ${k === 0 ? '-1 (the root)' : `0 <= parent < ${k}`}`);
+      }
+    });
+  }
+  if (meta.correctives === undefined) return;
+  if (!Array.isArray(meta.correctives)) fail("'correctives' must be a list");
+  const count = Array.isArray(names) ? 9 * (names.length - 1) : Infinity;
+  meta.correctives.forEach((e, i) => {
+    const ok = isObject(e) && Number.isInteger(e.feature) && e.feature >= 0 && e.feature < count &&
+               typeof e.target === 'string' && (e.scale === undefined || Number.isFinite(e.scale)) &&
+               (e.offset === undefined || Number.isFinite(e.offset));
+    if (!ok) fail(`'correctives'[${i}] is malformed (feature 0..${count - 1}, target, numeric scale and offset)`);
+  });
 }
 
 function isObject(v) {

@@ -1,10 +1,11 @@
 // Unity Test Runner (EditMode) entry points: NUnit wrappers around the checks
 // the mono harness runs (unity/Tests/*.cs), so both run the same code.
-// Unity cannot run the C++ reference, so the reference features come from
-// Data/csharp_reference_smpl.json, shipped with the package and kept equal to
-// a fresh run of tests/unity/csharp_reference.cpp by the repository's CTest
-// test unity_reference_data_current. Each test fails if any check fails or if
-// no check ran. Needs "testables" in the project manifest (see README.md).
+// The expected values come from the runtime conformance kit, a folder written
+// by smpl-export's `smpl-reference --conformance-kit DIR` (Unity cannot run
+// it): set SMPL_CONFORMANCE_KIT to DIR before starting the Editor. Without
+// it the kit tests fail with a message saying so (they never skip). Each
+// test fails if any check fails or if no check ran. Needs "testables" in the
+// project manifest (see README.md).
 using System.Collections.Generic;
 using NUnit.Framework;
 using UnityEditor;
@@ -14,9 +15,6 @@ namespace SmplExport.Correctives.Tests
 {
     public sealed class CorrectivesEditModeTests
     {
-        /// <summary>Asset path of the shipped C++ reference data (a TextAsset).</summary>
-        public const string ReferencePath = "Packages/com.smpl-export.correctives/Tests/Data/csharp_reference_smpl.json";
-
         [SetUp]
         public void ResetChecks() { CorrectivesTests.Reset(); }
 
@@ -31,28 +29,24 @@ namespace SmplExport.Correctives.Tests
         }
 
         [Test]
-        public void CorrectiveMathMatchesCppReference()
+        public void ConformanceKitCases()
         {
-            foreach (ReferenceModel model in LoadReference()) MathTests.Run(model);
+            KitTests.Run(new Kit(Kit.DirFromEnvironment()));
             AssertAllPassed();
         }
 
         [Test]
-        public void ComponentMatchesCppReference()
+        public void CorrectiveMathAxisMaps()
         {
-            foreach (ReferenceModel model in LoadReference()) ComponentTests.Run(model);
+            MathTests.Run(KitReference.Load(new Kit(Kit.DirFromEnvironment())));
             AssertAllPassed();
         }
 
-        static List<ReferenceModel> LoadReference()
+        [Test]
+        public void ComponentMatchesTheKit()
         {
-            var asset = AssetDatabase.LoadAssetAtPath<TextAsset>(ReferencePath);
-            Assert.IsNotNull(asset, ReferencePath + ": not found (is the package's Tests folder imported?)");
-            string error;
-            List<ReferenceModel> models = ReferenceModel.LoadAll(asset.text, ReferencePath, out error);
-            Assert.IsNotNull(models, error);
-            Assert.IsTrue(models.Count > 0, ReferencePath + ": no models");
-            return models;
+            ComponentTests.Run(KitReference.Load(new Kit(Kit.DirFromEnvironment())));
+            AssertAllPassed();
         }
 
         static void AssertAllPassed()
