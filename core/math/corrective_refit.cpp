@@ -4,6 +4,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
+#include <atomic>
+#include <map>
 #include <thread>
 
 #include "core/math/motion_poses.h"
@@ -13,20 +15,26 @@
 namespace smpl {
 namespace {
 
+constexpr Eigen::Index kBlock = 32;  // vertices per block: their products are GEMMs
+
 // Poses with what every vertex needs of them.
 struct PoseSet {
-  std::vector<std::vector<Affine>> transforms;  // [pose][joint]
-  Eigen::MatrixXd features;                     // P x T
+  Eigen::MatrixXd features;    // P x T
+  Eigen::MatrixXd transforms;  // K x 12T: A_k(p) row by row at columns 12p + 4r + c
 };
 
 PoseSet poseSet(const BodyModel& model, const ShapedBody& body,
                 const std::vector<Eigen::VectorXd>& poses) {
   PoseSet s;
-  s.features.resize(model.numPoseFeatures(), Eigen::Index(poses.size()));
-  for (size_t p = 0; p < poses.size(); ++p) {
-    const Rotations r = rotationsFromAxisAngle(poses[p]);
-    s.features.col(Eigen::Index(p)) = poseFeatures(r);
-    s.transforms.push_back(skinningTransforms(model, body.joints, r));
+  const Eigen::Index t_count = Eigen::Index(poses.size());
+  s.features.resize(model.numPoseFeatures(), t_count);
+  s.transforms.resize(model.numJoints(), 12 * t_count);
+  for (Eigen::Index p = 0; p < t_count; ++p) {
+    const Rotations r = rotationsFromAxisAngle(poses[size_t(p)]);
+    s.features.col(p) = poseFeatures(r);
+    const std::vector<Affine> a = skinningTransforms(model, body.joints, r);
+    for (int k = 0; k < model.numJoints(); ++k)
+      for (int e = 0; e < 12; ++e) s.transforms(k, 12 * p + e) = a[size_t(k)](e / 4, e % 4);
   }
   return s;
 }
@@ -47,47 +55,58 @@ std::vector<Eigen::Index> featuresOf(const BodyModel& model, Eigen::Index i, boo
   return features;
 }
 
-// One vertex over one pose set: the pruning error e_p (3 x T) and the
-// pruned blend's rotations R_p (T of them).
-struct VertexPoses {
-  Eigen::Matrix3Xd error;
-  std::vector<Eigen::Matrix3d> blend;
+// A block of B vertices over one pose set: the pruning errors e_p (3B x T,
+// vertex b at rows 3b..3b+2) and the rotation part R_p of the pruned skin's
+// blend. e_p = (sum_k (w_k - u_k) A_k(p)) [x_p; 1]: the unpruned minus the
+// pruned blend, as one product of the weight differences.
+struct BlockPoses {
+  Eigen::MatrixXd error;
+  std::vector<Eigen::Matrix3d> blend;  // B x T, vertex b's pose p at b * T + p
+  const Eigen::Matrix3d& rotation(Eigen::Index b, Eigen::Index p) const {
+    return blend[size_t(b * error.cols() + p)];
+  }
 };
 
-VertexPoses vertexPoses(const BodyModel& model, const ShapedBody& body, const SparseSkin& skin,
-                        const PoseSet& set, Eigen::Index i) {
-  const Eigen::Index t_count = set.features.cols();
-  const Eigen::Matrix3Xd x = (model.posedirs.middleRows(3 * i, 3) * set.features).colwise() +
-                             body.v_shaped.row(i).transpose();
-  VertexPoses v;
-  v.error.resize(3, t_count);
-  v.blend.resize(size_t(t_count));
-  for (Eigen::Index p = 0; p < t_count; ++p) {
-    const std::vector<Affine>& a = set.transforms[size_t(p)];
-    Affine full = Affine::Zero(), pruned = Affine::Zero();
-    for (int k = 0; k < model.numJoints(); ++k)
-      if (model.weights(i, k) > 0) full += model.weights(i, k) * a[size_t(k)];
+BlockPoses blockPoses(const BodyModel& model, const ShapedBody& body, const SparseSkin& skin,
+                      const PoseSet& set, const std::vector<Eigen::Index>& ids) {
+  const Eigen::Index b_count = Eigen::Index(ids.size()), t_count = set.features.cols();
+  Eigen::MatrixXd dirs(3 * b_count, model.numPoseFeatures());
+  Eigen::MatrixXd pruned = Eigen::MatrixXd::Zero(b_count, model.numJoints());
+  Eigen::MatrixXd diff(b_count, model.numJoints());
+  for (Eigen::Index b = 0; b < b_count; ++b) {
+    const Eigen::Index i = ids[size_t(b)];
+    dirs.middleRows<3>(3 * b) = model.posedirs.middleRows<3>(3 * i);
     for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
-      if (skin.weights(i, s) > 0) pruned += skin.weights(i, s) * a[size_t(skin.joints(i, s))];
-    const Eigen::Vector4d xh = x.col(p).homogeneous();
-    v.error.col(p) = (full - pruned) * xh;
-    v.blend[size_t(p)] = pruned.leftCols<3>();
+      if (skin.weights(i, s) > 0) pruned(b, skin.joints(i, s)) += skin.weights(i, s);
+    diff.row(b) = model.weights.row(i) - pruned.row(b);
   }
-  return v;
-}
-
-// Mean and max over poses of |e_p - R_p D f_S(p)| (d empty: |e_p|).
-std::pair<double, double> poseErrors(const VertexPoses& v, const Eigen::MatrixXd& fs,
-                                     const Eigen::MatrixXd& d) {
-  double sum = 0.0, worst = 0.0;
-  for (Eigen::Index p = 0; p < v.error.cols(); ++p) {
-    Eigen::Vector3d r = v.error.col(p);
-    if (d.size() > 0) r -= v.blend[size_t(p)] * (d * fs.col(p));
-    const double e = r.norm();
-    sum += e;
-    worst = std::max(worst, e);
+  const Eigen::MatrixXd x = dirs * set.features;  // 3B x T: the posed rest vertices, less v_shaped
+  const Eigen::MatrixXd delta = diff * set.transforms;
+  BlockPoses out;
+  out.error.resize(3 * b_count, t_count);
+  out.blend.assign(size_t(b_count * t_count), Eigen::Matrix3d::Zero());
+  const Eigen::Index lt = set.transforms.rows();
+  for (Eigen::Index b = 0; b < b_count; ++b) {
+    const Eigen::Index i = ids[size_t(b)];
+    const Eigen::Vector3d rest = body.v_shaped.row(i).transpose();
+    for (Eigen::Index p = 0; p < t_count; ++p) {
+      Eigen::Matrix3d& rot = out.blend[size_t(b * t_count + p)];  // the skin's M joints only
+      for (Eigen::Index s = 0; s < skin.joints.cols(); ++s) {
+        const double u = skin.weights(i, s);
+        if (u <= 0) continue;
+        const double* a = &set.transforms(skin.joints(i, s), 12 * p);
+        for (int e = 0; e < 12; ++e)
+          if (e % 4 != 3) rot(e / 4, e % 4) += u * a[e * lt];
+      }
+      const Eigen::Vector3d xp = rest + x.block<3, 1>(3 * b, p);
+      for (int r = 0; r < 3; ++r) {
+        const double* d = &delta(b, 12 * p + 4 * r);  // not contiguous: the matrix is column-major
+        const Eigen::Index ld = delta.rows();
+        out.error(3 * b + r, p) = d[0] * xp(0) + d[ld] * xp(1) + d[2 * ld] * xp(2) + d[3 * ld];
+      }
+    }
   }
-  return {v.error.cols() > 0 ? sum / double(v.error.cols()) : 0.0, worst};
+  return out;
 }
 
 Eigen::MatrixXd selectRows(const Eigen::MatrixXd& m, const std::vector<Eigen::Index>& rows) {
@@ -105,29 +124,80 @@ struct Context {
   Eigen::MatrixXd gram;  // P x P, F F' of the training poses
 };
 
-// D_i (3 x |S|) of one vertex, or an empty matrix where the guard keeps the model's deltas.
-Eigen::MatrixXd fitVertex(const Context& c, Eigen::Index i,
-                          const std::vector<Eigen::Index>& features) {
-  if (features.empty()) return Eigen::MatrixXd();  // moved by the root alone: nothing to refit
-  const VertexPoses v = vertexPoses(c.model, c.body, c.skin, c.train, i);
-  const Eigen::MatrixXd fs = selectRows(c.train.features, features);  // |S| x T
-  Eigen::Matrix3Xd z(3, v.error.cols());  // rest-frame targets R_p^{-1} e_p
-  for (Eigen::Index p = 0; p < z.cols(); ++p)
-    z.col(p) = v.blend[size_t(p)].partialPivLu().solve(v.error.col(p));
-  const Eigen::Index s = Eigen::Index(features.size());
-  Eigen::MatrixXd h(s, s);
-  for (Eigen::Index a = 0; a < s; ++a)
-    for (Eigen::Index b = 0; b < s; ++b) h(a, b) = c.gram(features[size_t(a)], features[size_t(b)]);
+// Vertices with one feature set S, fitted together: D_i (3 x |S|) of each,
+// or an empty matrix where the guard keeps the model's deltas.
+struct Block {
+  std::vector<Eigen::Index> features;  // S
+  std::vector<Eigen::Index> vertices;  // at most kBlock
+  std::vector<size_t> slots;           // where each vertex's D goes
+};
+
+// Guard: keep the model's deltas (false) if the refit raises the exact error
+// |e_p - R_p D f_S(p)| of vertex b over the validation poses in the mean or at the maximum.
+bool passesGuard(const BlockPoses& v, const Eigen::MatrixXd& correction, Eigen::Index b) {
+  double before_sum = 0, before_max = 0, after_sum = 0, after_max = 0;
+  for (Eigen::Index p = 0; p < v.error.cols(); ++p) {
+    const Eigen::Vector3d e = v.error.block<3, 1>(3 * b, p);
+    const double before = e.norm();
+    const double after = (e - v.rotation(b, p) * correction.block<3, 1>(3 * b, p)).norm();
+    before_sum += before, after_sum += after;
+    before_max = std::max(before_max, before), after_max = std::max(after_max, after);
+  }
+  return after_sum <= before_sum && after_max <= before_max;
+}
+
+// The ridge regression of every vertex of the block (header): one Gram
+// matrix (F_S F_S' + lambda I) for all of them, shared by its Cholesky factor.
+void fitBlock(const Context& c, const Block& block, std::vector<Eigen::MatrixXd>* deltas) {
+  const BlockPoses v = blockPoses(c.model, c.body, c.skin, c.train, block.vertices);
+  const Eigen::Index b_count = Eigen::Index(block.vertices.size()), t_count = v.error.cols();
+  Eigen::MatrixXd z(3 * b_count, t_count);  // rest-frame targets R_p^{-1} e_p
+  for (Eigen::Index b = 0; b < b_count; ++b)
+    for (Eigen::Index p = 0; p < t_count; ++p)
+      z.block<3, 1>(3 * b, p) = v.rotation(b, p).inverse() * v.error.block<3, 1>(3 * b, p);
+  const std::vector<Eigen::Index>& s = block.features;
+  const Eigen::Index n = Eigen::Index(s.size());
+  Eigen::MatrixXd h(n, n);
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (Eigen::Index col = 0; col < n; ++col) h(a, col) = c.gram(s[size_t(a)], s[size_t(col)]);
   const double lambda = c.options.ridge * std::max(h.diagonal().mean(), 1e-12);
   h.diagonal().array() += lambda;
-  const Eigen::MatrixXd d = h.ldlt().solve(fs * z.transpose()).transpose();  // 3 x |S|
-  if (!c.options.guard) return d;
-  const VertexPoses check = vertexPoses(c.model, c.body, c.skin, c.validate, i);
-  const Eigen::MatrixXd check_fs = selectRows(c.validate.features, features);
-  const auto before = poseErrors(check, check_fs, Eigen::MatrixXd());
-  const auto after = poseErrors(check, check_fs, d);
-  if (after.first > before.first || after.second > before.second) return Eigen::MatrixXd();
-  return d;
+  const Eigen::MatrixXd fs = selectRows(c.train.features, s);  // |S| x T
+  const Eigen::MatrixXd d =
+      h.ldlt().solve(fs * z.transpose()).transpose();  // 3B x |S|: D_i at rows 3b..3b+2
+  Eigen::MatrixXd correction;
+  BlockPoses check;
+  if (c.options.guard) {
+    check = blockPoses(c.model, c.body, c.skin, c.validate, block.vertices);
+    correction = d * selectRows(c.validate.features, s);  // 3B x Tv: D_i f_S(p)
+  }
+  for (Eigen::Index b = 0; b < b_count; ++b)
+    if (!c.options.guard || passesGuard(check, correction, b))
+      (*deltas)[block.slots[size_t(b)]] = d.middleRows<3>(3 * b);
+}
+
+// The cut vertices grouped by feature set, in blocks of at most kBlock (in
+// vertex order within a set, so the blocks do not depend on the thread count).
+std::vector<Block> blocksOf(const BodyModel& model, const std::vector<Eigen::Index>& cut,
+                            bool parents, std::vector<std::vector<Eigen::Index>>* features) {
+  std::map<std::vector<Eigen::Index>, std::vector<size_t>> groups;
+  for (size_t j = 0; j < cut.size(); ++j) {
+    (*features)[j] = featuresOf(model, cut[j], parents);
+    if (!(*features)[j].empty())
+      groups[(*features)[j]].push_back(j);  // root only: nothing to refit
+  }
+  std::vector<Block> blocks;
+  for (const auto& [set, members] : groups)
+    for (size_t first = 0; first < members.size(); first += size_t(kBlock)) {
+      Block b;
+      b.features = set;
+      for (size_t j = first; j < std::min(members.size(), first + size_t(kBlock)); ++j) {
+        b.vertices.push_back(cut[members[j]]);
+        b.slots.push_back(members[j]);
+      }
+      blocks.push_back(std::move(b));
+    }
+  return blocks;
 }
 
 int nonZero(const Eigen::MatrixXd& m, Eigen::Index i) {
@@ -174,15 +244,14 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
   c.validate = poseSet(model, body, check);
   c.gram = c.train.features * c.train.features.transpose();
   std::vector<std::vector<Eigen::Index>> features(cut.size());
+  const std::vector<Block> work = blocksOf(model, cut, o.parents, &features);
   std::vector<Eigen::MatrixXd> deltas(cut.size());
-  const int workers = std::max(1, std::min<int>(o.threads, int(cut.size() / 64) + 1));
+  const int workers = std::max(1, std::min<int>(o.threads, int(work.size())));
+  std::atomic<size_t> next{0};  // blocks are independent: any order gives the same result
   std::vector<std::thread> pool;
   for (int w = 0; w < workers; ++w)
-    pool.emplace_back([&, w] {
-      for (size_t j = size_t(w); j < cut.size(); j += size_t(workers)) {
-        features[j] = featuresOf(model, cut[j], o.parents);
-        deltas[j] = fitVertex(c, cut[j], features[j]);
-      }
+    pool.emplace_back([&] {
+      for (size_t j; (j = next++) < work.size();) fitBlock(c, work[j], &deltas);
     });
   for (std::thread& t : pool) t.join();
   refit.block.assign(size_t(n), -1);

@@ -27,6 +27,10 @@
 // exact error |e_p - R_p D_i f_S(p)| in the mean or at the maximum.
 // Training and validation poses are motion-like (core/math/motion_poses.h):
 // trained on uniform random poses the refit overfits them (issue 25).
+// Cost: the vertices with one feature set S share the Gram matrix and its
+// factor; they are fitted in blocks of 32 whose posed vertices, blends and
+// right-hand sides are matrix products (the dense 6890-vertex stand-in:
+// 0.5 s on 2 cores, was 2.2 s vertex by vertex).
 // Deterministic: the result does not depend on the thread count.
 #pragma once
 

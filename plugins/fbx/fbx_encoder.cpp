@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstring>
 #include <limits>
+#include <string_view>
 #include <thread>
 #include <unordered_map>
 
@@ -102,6 +103,18 @@ void collectDeflates(const FbxNode& n, std::vector<const FbxProperty*>* pending)
   for (const FbxNode& child : n.children) collectDeflates(child, pending);
 }
 
+// Indexes into `pending` of the first array with the same bytes as each
+// (a shape's zero normal deltas, the Indexes of shapes that move every
+// vertex: identical payloads are common), so each distinct payload is
+// compressed once; the file is the same as with every array compressed.
+std::vector<size_t> firstCopies(const std::vector<const FbxProperty*>& pending) {
+  std::vector<size_t> first(pending.size());
+  std::unordered_map<std::string_view, size_t> seen;
+  for (size_t i = 0; i < pending.size(); ++i)
+    first[i] = seen.emplace(std::string_view(pending[i]->payload), i).first->second;
+  return first;
+}
+
 // Compress every deferred array on `threads` workers (0: all cores); the
 // result is independent of the thread count (each array is compressed on
 // its own, by its own call). Level 0 stores them raw.
@@ -110,24 +123,29 @@ std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector
   std::vector<const FbxProperty*> pending;
   if (options.compress_level > 0)  // level 0: the Encoder stores them raw, without a copy here
     for (const FbxNode& n : top) collectDeflates(n, &pending);
+  const std::vector<size_t> first = firstCopies(pending);
+  std::vector<size_t> distinct;
+  for (size_t i = 0; i < pending.size(); ++i)
+    if (first[i] == i) distinct.push_back(i);
   std::vector<std::string> done(pending.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
     libdeflate_compressor* compressor =
         options.compress_level > 0 ? libdeflate_alloc_compressor(options.compress_level) : nullptr;
-    for (size_t i; (i = next++) < pending.size();)
-      done[i] = deflatePayload(compressor, pending[i]->payload);
+    for (size_t j; (j = next++) < distinct.size();)
+      done[distinct[j]] = deflatePayload(compressor, pending[distinct[j]]->payload);
     if (compressor) libdeflate_free_compressor(compressor);
   };
   const size_t wanted = options.threads > 0 ? size_t(options.threads)
                                             : std::max(1u, std::thread::hardware_concurrency());
-  const size_t threads = std::min<size_t>(wanted, pending.size());
+  const size_t threads = std::min<size_t>(wanted, distinct.size());
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
   std::unordered_map<const FbxProperty*, std::string> out;
-  for (size_t i = 0; i < pending.size(); ++i) out.emplace(pending[i], std::move(done[i]));
+  for (size_t i = pending.size(); i-- > 0;)  // copies (after their first) before it moves
+    out.emplace(pending[i], first[i] == i ? std::move(done[i]) : done[first[i]]);
   return out;
 }
 
