@@ -175,6 +175,13 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   for (size_t t = 0; t < workers; ++t) pool.emplace_back(worker);
   for (std::thread& t : pool) t.join();
   printFolded(notes, warnings, s.quiet);
+  if (inputs.skins && inputs.skins->reused() > 0 && !s.quiet) {
+    const int computed = inputs.skins->computed(), reused = inputs.skins->reused();
+    std::printf(
+        "batch: skin fit computed for %d subject%s, reused for %d motion%s (same model, "
+        "betas and skin options)\n",
+        computed, computed == 1 ? "" : "s", reused, reused == 1 ? "" : "s");
+  }
   std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n",
               summary.converted, summary.skipped, summary.failed, summary.no_poses);
   if (record)

@@ -53,11 +53,12 @@ Status placeAsset(const BodyModel& model, const ExportOptions& options,
 }  // namespace
 
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
-                          const std::vector<MotionInput>& motions, const DmplInput* dmpl) {
+                          const std::vector<MotionInput>& motions, const DmplInput* dmpl,
+                          SkinCache* skins) {
   ExportOptions resolved = options;
   resolved.encoding =
       resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
-  Result<Asset> asset = buildAsset(model, resolved);
+  Result<Asset> asset = buildAsset(model, resolved, skins);
   if (!asset) return asset;
   if (dmpl && dmpl->basis && !asset->skeleton_only)  // DMPL targets need a mesh
     addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);

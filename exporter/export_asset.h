@@ -49,7 +49,10 @@ CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, 
 // one line each, no partial asset.
 // `dmpl` (optional): DMPL soft-tissue targets added after buildAsset, before
 // baking (dmpl_targets.h).
+// `skins` (optional): the fitted skin shared with exports of the same subject
+// (buildAsset, exporter/skin_cache.h).
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
-                          const std::vector<MotionInput>& motions, const DmplInput* dmpl = nullptr);
+                          const std::vector<MotionInput>& motions, const DmplInput* dmpl = nullptr,
+                          SkinCache* skins = nullptr);
 
 }  // namespace smpl

@@ -11,6 +11,7 @@
 #include "core/math/skin_weights.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/export_skin.h"
+#include "exporter/skin_cache.h"
 
 namespace smpl {
 namespace {
@@ -232,6 +233,20 @@ Asset skeletonAsset(const BodyModel& model, const ExportOptions& o, const Eigen:
   return asset;
 }
 
+// The skin and, when the options refit, the refit of the subject `body`:
+// from `skins` when given (the same subject's earlier export), else computed.
+std::shared_ptr<const FittedSkin> fittedSkin(const BodyModel& model, const ShapedBody& body,
+                                             const ExportOptions& o, SkinCache* skins) {
+  auto fit = [&] {
+    FittedSkin f;
+    f.skin = exportSkin(model, body, o);
+    if (refitsCorrectives(o))
+      f.refit = refitCorrectives(model, body, f.skin, CorrectiveRefitOptions());
+    return f;
+  };
+  return skins ? skins->get(model, o, fit) : std::make_shared<const FittedSkin>(fit());
+}
+
 }  // namespace
 
 const char* correctiveEncodingName(CorrectiveEncoding encoding) {
@@ -250,7 +265,7 @@ std::string correctiveTargetName(const BodyModel& model, int feature) {
   return "pose_" + model.joint_names[joint] + "_" + std::to_string(r) + std::to_string(c);
 }
 
-Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
+Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o, SkinCache* skins) {
   Result<ShapedBody> body = shapeBody(model, toVector(o.betas), toVector(o.expression));
   if (!body) return body.error();
   if (!o.mesh) return skeletonAsset(model, o, body->joints);
@@ -261,13 +276,13 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o) {
   Asset asset;
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);
-  const SparseSkin skin = exportSkin(model, *body, o);
+  const std::shared_ptr<const FittedSkin> fitted = fittedSkin(model, *body, o, skins);
+  const SparseSkin& skin = fitted->skin;
   const int m = static_cast<int>(skin.joints.cols());  // influencesFor(), or fewer with "all"
   buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
   fillMetadata(model, o, &asset.metadata);
   asset.metadata.max_influences = m;
-  if (refitsCorrectives(o))
-    asset.corrective_refit = refitCorrectives(model, *body, skin, CorrectiveRefitOptions());
+  asset.corrective_refit = fitted->refit;
   if (Status s = addMorphTargets(model, o, asset.corrective_refit, &asset); !s) return s.error();
   return asset;
 }

@@ -15,6 +15,8 @@
 
 namespace smpl {
 
+class SkinCache;  // exporter/skin_cache.h
+
 // How corrective weights are encoded (docs/file-contract.md "Pose correctives as morph targets").
 //   Signed: weight = f[n] (diagonal features in [-2, 0], off-diagonal in [-1, 1]).
 //   Unit:   weight = 0.5 f[n] + o, o = 1 (diagonal) or 0.5 (off-diagonal), so
@@ -98,7 +100,11 @@ inline bool refitsCorrectives(const ExportOptions& o) {
 // more betas or expression values than the model has (shapeBody), an
 // unreadable --uv file (kind Load), a basis that cannot be fitted. With
 // options.mesh false: the skeleton and metadata only (Asset::skeleton_only).
-Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& options);
+// `skins` (optional): the skin and refit of a subject exported before with
+// the same model, betas and skin options are taken from it, not fitted again
+// (exporter/skin_cache.h); `model` must then outlive the cache.
+Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& options,
+                         SkinCache* skins = nullptr);
 
 // Morph target name for pose feature n: pose_<joint>_<r><c> (docs/file-contract.md).
 std::string correctiveTargetName(const BodyModel& model, int feature);

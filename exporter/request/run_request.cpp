@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <thread>
 
 #include "core/io/file_io.h"
 #include "core/io/printable.h"
@@ -157,8 +158,10 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, const Lo
   Result<PreparedDmpl> dmpl = prepareDmpl(model, r, loaded.motions, report);  // dmpl_job.h
   if (!dmpl) return dmpl.error();
   std::vector<std::string> frame_notes;
-  Result<Asset> asset =
-      exportAsset(model, options, motionInputs(r, loaded.motions, &frame_notes), &dmpl->input);
+  // A mirrored hand model belongs to this job: its skin is not kept for others.
+  SkinCache* skins = loaded.side.mirrored ? nullptr : inputs.skins.get();
+  Result<Asset> asset = exportAsset(model, options, motionInputs(r, loaded.motions, &frame_notes),
+                                    &dmpl->input, skins);
   if (!asset) return exportFailure(r.out, asset.error(), options.uv_obj);
   noteMotions(loaded.motions, frame_notes, inputs.betas_given, *asset, report);
   noteDmplJointCost(*asset, report);
@@ -247,6 +250,9 @@ Result<RunInputs> loadRunInputs(const ExportRequest& r, ModelSource* models) {
   Stage stage;
   return guarded<RunInputs>(&stage, [&]() -> Result<RunInputs> {
     RunInputs inputs;
+    // One subject per worker in flight, and the next one (the batch's threads).
+    const unsigned workers = r.threads ? unsigned(*r.threads) : std::thread::hardware_concurrency();
+    inputs.skins = std::make_shared<SkinCache>(std::max(2u, workers + 1));
     inputs.betas = r.betas;
     inputs.betas_given = !r.betas.empty() || !r.betas_file.empty();
     if (!r.betas_file.empty()) {

@@ -23,12 +23,14 @@
 // export job, its motions included ("Error exporting o.glb: ...", exit 3).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/result.h"
 #include "exporter/request/export_request.h"
 #include "exporter/request/model_source.h"
+#include "exporter/skin_cache.h"
 
 namespace smpl {
 
@@ -37,6 +39,9 @@ struct RunInputs {
   std::vector<double> betas;  // --betas, or the values of --betas-file
   bool betas_given = false;   // --betas or --betas-file: the motions' betas are not used
   std::string betas_note;     // "<file>: <per-frame rows averaged ...>" or ""
+  // The fitted skins of the run's subjects: a batch's motions of one subject
+  // (same model, betas, skin options) fit once (exporter/skin_cache.h).
+  std::shared_ptr<SkinCache> skins;
 };
 
 // checkRequest, then the process's memory budget (--memory-limit,

@@ -2,7 +2,9 @@
 # Batch mode: `smpl-export --model builtin --motion-dir D --out-dir O`.
 # A bad motion fails alone (one "Error loading" line, exit 3) while the good
 # ones convert; a second run skips up-to-date outputs; touching a motion
-# reconverts only it; outputs are byte-identical across runs and out dirs.
+# reconverts only it; outputs are byte-identical across runs and out dirs;
+# motions of one subject fit the skin once, and their outputs equal
+# single-file exports byte for byte.
 # Usage: batch_test.sh SMPL_EXPORT FIXTURE_DIR
 set -u
 exe=$1 fixtures=$2
@@ -57,6 +59,22 @@ for f in $good; do
   glb=$out/${f%.*}.glb
   [ "$(head -c 4 "$glb")" = "glTF" ]; st=$?; check "$glb: not a GLB" "$st"
   grep -qa '"animations"' "$glb"; st=$?; check "$glb: no animations" "$st"
+done
+
+# 6. Motions of one subject (same betas): the skin fit and refit run once and
+# are reused; each output equals the single-file export of its motion.
+same=$work/same
+mkdir -p "$same"
+for i in 1 2 3; do cp "$fixtures/motions/smpl_72.npz" "$same/walk$i.npz" || exit 1; done
+"$exe" --model builtin --motion-dir "$same" --out-dir "$work/same_out" >"$work/stdout" 2>"$work/stderr"
+st=$?; check "batch of one subject: exit $st: $(cat "$work/stderr")" "$st"
+line="batch: skin fit computed for 1 subject, reused for 2 motions (same model, betas and skin options)"
+grep -qxF "$line" "$work/stdout"; st=$?; check "stdout lacks '$line': $(cat "$work/stdout")" "$st"
+for i in 1 3; do
+  "$exe" --model builtin --motion "$same/walk$i.npz" --out "$work/single$i.glb" -q; st=$?
+  check "single export of walk$i.npz: exit $st" "$st"
+  cmp -s "$work/single$i.glb" "$work/same_out/walk$i.glb"; st=$?
+  check "batch output walk$i.glb (skin reused) differs from its single-file export" "$st"
 done
 
 echo "batch_test: $passed passed, $failed failed"

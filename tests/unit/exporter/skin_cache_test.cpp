@@ -1,0 +1,124 @@
+// SkinCache (exporter/skin_cache.h): one fit per subject, shared by the
+// exports that need it, keyed on everything the fit depends on.
+#include "exporter/skin_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <thread>
+
+#include "core/demo/demo_body.h"
+#include "exporter/pipeline.h"
+
+namespace smpl {
+namespace {
+
+// A stand-in fit that counts its calls (the cache's bookkeeping, not the math).
+FittedSkin countedFit(std::atomic<int>* calls, int tag) {
+  ++*calls;
+  FittedSkin f;
+  f.skin.joints = Eigen::MatrixXi::Constant(1, 1, tag);
+  f.skin.weights = Eigen::MatrixXd::Ones(1, 1);
+  return f;
+}
+
+ExportOptions subject(double beta0) {
+  ExportOptions o;
+  o.betas = {beta0, -0.5};
+  return o;
+}
+
+TEST(SkinCache, OneFitPerSubjectAndEveryKeyPartSeparatesSubjects) {
+  const BodyModel& model = demoBody();
+  SkinCache cache(16);
+  std::atomic<int> calls{0};
+  auto fit = [&] { return countedFit(&calls, 0); };
+  (void)cache.get(model, subject(1.0), fit);
+  (void)cache.get(model, subject(1.0), fit);
+  EXPECT_EQ(calls, 1);
+  ExportOptions padded = subject(1.0);
+  padded.betas.push_back(0.0);  // the same subject: shapeBody pads betas with zeros
+  (void)cache.get(model, padded, fit);
+  EXPECT_EQ(calls, 1);
+  std::vector<ExportOptions> others(5, subject(1.0));
+  others[0].betas[0] = 1.0 + 1e-12;
+  others[1].max_influences = 3;
+  others[2].skin_weights = SkinWeightMethod::Truncated;
+  others[3].corrective_refit = false;
+  others[4].expression = {0.25};  // ignored by a model without expressions: padded away
+  for (const ExportOptions& o : others) (void)cache.get(model, o, fit);
+  EXPECT_EQ(calls, 5) << "betas, influences, method and refit each make a new subject; an "
+                         "expression the model does not have does not";
+  EXPECT_EQ(cache.computed(), 5);
+  EXPECT_EQ(cache.reused(), 3);
+}
+
+TEST(SkinCache, KeepsTheMostRecentSubjectsOnly) {
+  const BodyModel& model = demoBody();
+  SkinCache cache(1);
+  std::atomic<int> calls{0};
+  auto fit = [&] { return countedFit(&calls, 0); };
+  (void)cache.get(model, subject(1.0), fit);
+  (void)cache.get(model, subject(2.0), fit);  // evicts subject 1
+  (void)cache.get(model, subject(1.0), fit);
+  EXPECT_EQ(calls, 3);
+}
+
+TEST(SkinCache, ConcurrentCallersOfOneSubjectWaitForOneFit) {
+  const BodyModel& model = demoBody();
+  SkinCache cache(4);
+  std::atomic<int> calls{0};
+  auto slow = [&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    return countedFit(&calls, 7);
+  };
+  std::vector<std::thread> pool;
+  std::atomic<int> sevens{0};
+  for (int t = 0; t < 4; ++t)
+    pool.emplace_back(
+        [&] { sevens += cache.get(model, subject(1.0), slow)->skin.joints(0, 0) == 7; });
+  for (std::thread& t : pool) t.join();
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(sevens, 4);
+}
+
+TEST(SkinCache, AFailedFitReachesItsCallerAndIsNotKept) {
+  const BodyModel& model = demoBody();
+  SkinCache cache(4);
+  EXPECT_THROW((void)cache.get(model, subject(1.0), []() -> FittedSkin { throw std::bad_alloc(); }),
+               std::bad_alloc);
+  std::atomic<int> calls{0};
+  (void)cache.get(model, subject(1.0), [&] { return countedFit(&calls, 0); });
+  EXPECT_EQ(calls, 1);
+}
+
+// The real fit through buildAsset: the second export of a subject is served
+// from the cache and gives the same asset as an export without one.
+TEST(SkinCache, AReusedFitGivesTheSameAssetAsAFreshOne) {
+  const BodyModel& model = demoBody();
+  ExportOptions o = subject(0.8);
+  o.max_influences = 2;
+  SkinCache cache(4);
+  Result<Asset> first = buildAsset(model, o, &cache);
+  Result<Asset> second = buildAsset(model, o, &cache);
+  Result<Asset> fresh = buildAsset(model, o);
+  ASSERT_TRUE(first && second && fresh);
+  EXPECT_EQ(cache.computed(), 1);
+  EXPECT_EQ(cache.reused(), 1);
+  ASSERT_GT(fresh->corrective_refit.cut, 0);
+  EXPECT_EQ(second->mesh.joints, fresh->mesh.joints);
+  EXPECT_EQ(second->mesh.weights, fresh->mesh.weights);
+  ASSERT_EQ(second->mesh.morph_targets.size(), fresh->mesh.morph_targets.size());
+  for (size_t t = 0; t < fresh->mesh.morph_targets.size(); ++t)
+    ASSERT_EQ(second->mesh.morph_targets[t].deltas, fresh->mesh.morph_targets[t].deltas) << t;
+  ExportOptions other = o;
+  other.betas[0] = -0.8;  // another subject: its own fit, its own weights
+  Result<Asset> third = buildAsset(model, other, &cache);
+  ASSERT_TRUE(third);
+  EXPECT_EQ(cache.computed(), 2);
+  EXPECT_NE(third->mesh.weights, fresh->mesh.weights);
+}
+
+}  // namespace
+}  // namespace smpl
