@@ -124,6 +124,16 @@ Result<Motion> loadMotion(const std::string& path, const MotionOptions& options)
   return m;
 }
 
+void releaseFrames(Motion* m) {
+  std::vector<Rotations>().swap(m->frames);
+  std::vector<Eigen::Vector3d>().swap(m->translation);
+  std::vector<Eigen::Matrix3d>().swap(m->world_rotation);
+  std::vector<Eigen::Vector3d>().swap(m->world_translation);
+  m->dmpls.resize(0, 0);
+  m->expression.resize(0, 0);
+  m->charge.release();
+}
+
 Result<bool> hasPoseData(const std::string& path) {
   Result<MotionFile> file = probeMotionFile(path);
   if (!file) return file.error();

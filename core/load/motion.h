@@ -87,6 +87,11 @@ struct Motion {
   MemoryCharge charge;             // `frames` and `translation` against the memory budget
 };
 
+// Frees the per-frame arrays of `m` (frames, translation, DMPL and expression
+// coefficients, the frame changes) and their memory charge, once an export
+// has baked them; the rest (name, rate, betas, notes) stays.
+void releaseFrames(Motion* m);
+
 // Which parameters of a tool that writes both a world and a camera version
 // (WHAM pose_world/pose, GVHMR smpl_params_global/incam, TRAM with or without
 // camera.npy) a layout reads: --source-params. Default: the layout's

@@ -214,6 +214,9 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   report.betas_note = inputs.betas_note;
   Result<Asset> asset = buildJob(r, inputs, *loaded, &report);
   if (!asset) return asset.error();
+  // The baked clips hold all the writer needs: the decoded frames are freed
+  // first, so a long clip peaks in the bake or in the write, not in both.
+  for (Motion& m : loaded->motions) releaseFrames(&m);
   Result<size_t> bytes = writeJob(r, *asset, *writer);
   if (!bytes) return bytes.error();
   const BodyModel& model = *loaded->pick.model;

@@ -11,12 +11,15 @@
 //    PyTorch code, tools/bench/smplx_forward_time.py) on 1 thread, same model,
 //    same frame count and batch size, CPU time per frame (robust to other load);
 //  - Blender 3.4's own glTF and FBX exporters writing the asset smpl-export
-//    wrote (imported first; only the export is timed).
+//    wrote (imported first; only the export is timed);
+//  - a 10-minute 120 fps clip exported by the CLI: its peak resident memory
+//    (the child's ru_maxrss) against the size of the GLB it wrote.
 #include "tools/bench/compare.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -41,7 +44,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 const char* const kStandins[] = {"standin_smpl_py2.pkl", "standin_smpl_stored.npz",
-                                 "standin_smpl_deflated.npz"};
+                                 "standin_smpl_deflated.npz", "standin_motion_10min.npz"};
 
 double seconds(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -298,6 +301,49 @@ void compareBlender(const CompareOptions& o, const CliTimes& cli, const std::str
       fmt("%.1f", fbx.wall / cli.fbx.wall) + fmt(" / %.1fx", fbx.cpu / cli.fbx.cpu));
 }
 
+// Runs argv (no shell) and waits for it: exit status, wall seconds and the
+// child's own peak resident set in bytes (wait4's ru_maxrss, KiB on Linux).
+struct Measured {
+  int status = -1;
+  double wall = 0;
+  double peak_bytes = 0;
+};
+Measured runMeasured(const std::vector<std::string>& argv) {
+  Measured m;
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execv(args[0], args.data());
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (pid < 0 || wait4(pid, &status, 0, &usage) != pid) return m;
+  m.wall = seconds(start);
+  m.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  m.peak_bytes = double(usage.ru_maxrss) * 1024.0;
+  return m;
+}
+
+void compareLongClip(const std::string& dir) {
+  const std::string out = (fs::path(dir) / "long_clip.glb").string();
+  const Measured m =
+      runMeasured({SMPL_EXPORT_BIN, "--model", (fs::path(dir) / kStandins[0]).string(), "--motion",
+                   (fs::path(dir) / kStandins[3]).string(), "--out", out, "-q"});
+  std::error_code ec;
+  const double size = m.status == 0 ? double(fs::file_size(out, ec)) : 0;
+  if (m.status != 0 || size <= 0)
+    return row("10-minute clip, 120 fps: peak RSS / output", "smpl-export failed", "", "-");
+  row("10-minute clip, 120 fps (.pkl + AMASS .npz -> .glb)", fmt("%.1f s", m.wall),
+      fmt("%.0f MB GLB", size / 1e6), "");
+  row("  its peak resident memory", fmt("%.0f MB", m.peak_bytes / 1e6), "",
+      fmt("%.2fx the output", m.peak_bytes / size));
+  fs::remove(out, ec);
+}
+
 }  // namespace
 
 int runCompare(const CompareOptions& o) {
@@ -322,6 +368,7 @@ int runCompare(const CompareOptions& o) {
   compareWrite(*model);
   compareForward(*model, o, npz);
   compareBlender(o, cli, dir);
+  compareLongClip(dir);
   return 0;
 }
 

@@ -9,6 +9,9 @@ Writes OUTDIR/:
                          J_regressor as scipy.sparse.csc_matrix
   standin_smpl_stored.npz    the same arrays, np.savez (stored members)
   standin_smpl_deflated.npz  the same arrays, np.savez_compressed
+  standin_motion_10min.npz   a 10-minute AMASS-style SMPL motion at 120 fps
+                         (72000 frames of 72 pose values, smooth sines; the
+                         long-clip memory row)
 6890 vertices, 24 joints, 207 pose features, 10 betas; random values (not a
 body: timing only). Usage: make_standin.py OUTDIR
 """
@@ -69,6 +72,14 @@ def write_pickle(path, m):
         fh.write(w.out)
 
 
+def long_motion(path, minutes=10, fps=120):
+    rng = np.random.default_rng(17)
+    t = np.arange(int(minutes * 60 * fps))[:, None] / fps
+    poses = 0.3 * np.sin(t * np.linspace(0.5, 3.0, 72)[None, :] + rng.uniform(0, 6, 72)[None, :])
+    np.savez(path, poses=poses, trans=np.zeros((len(poses), 3)), betas=np.zeros(BETAS),
+             mocap_framerate=np.array(float(fps)), gender=np.array("neutral"))
+
+
 def main(out):
     os.makedirs(out, exist_ok=True)
     m = model()
@@ -76,6 +87,7 @@ def main(out):
     arrays = {k: (v.toarray() if sp.issparse(v) else v) for k, v in m.items() if not isinstance(v, str)}
     np.savez(os.path.join(out, "standin_smpl_stored.npz"), **arrays)
     np.savez_compressed(os.path.join(out, "standin_smpl_deflated.npz"), **arrays)
+    long_motion(os.path.join(out, "standin_motion_10min.npz"))
 
 
 if __name__ == "__main__":

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/memory_budget.h"
+
 namespace smpl {
 namespace {
 
@@ -18,6 +20,23 @@ TEST(Motion, AmassSmplh) {
   EXPECT_EQ(m->gender, "female");
   EXPECT_EQ(m->world, MotionWorld::Z);
   EXPECT_NEAR(m->translation[100].x(), 0.2, 1e-12);
+}
+
+// After the bake (exporter/request/run_request.cpp) the per-frame arrays
+// and their charge go; what names and describes the motion stays.
+TEST(Motion, ReleaseFramesFreesTheFramesAndTheirCharge) {
+  const uint64_t before = memoryCharged();
+  Result<Motion> m = loadMotion(kMotions + "amass_smplh.npz");
+  ASSERT_TRUE(m.ok()) << m.message();
+  ASSERT_GT(memoryCharged(), before);
+  releaseFrames(&*m);
+  EXPECT_EQ(memoryCharged(), before);
+  EXPECT_TRUE(m->frames.empty() && m->frames.capacity() == 0);
+  EXPECT_TRUE(m->translation.empty() && m->translation.capacity() == 0);
+  EXPECT_EQ(m->dmpls.size(), 0);
+  EXPECT_EQ(m->name, "amass_smplh");
+  EXPECT_EQ(m->betas.size(), 16u);
+  EXPECT_EQ(m->fps, 120.0);
 }
 
 TEST(Motion, AmassSmplxSplitKeys) {
