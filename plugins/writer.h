@@ -48,11 +48,12 @@ struct Writer {
   struct Files {
     std::string bytes;
     std::string buffer;
+    std::string tail;  // the output file is bytes + tail (a GLB's BIN chunk, not copied)
   };
   virtual Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const {
     Result<std::string> bytes = serialize(asset, options);
     if (!bytes) return bytes.error();
-    return Files{std::move(*bytes), std::string()};
+    return Files{std::move(*bytes), std::string(), std::string()};
   }
 };
 

@@ -174,6 +174,8 @@ Status writeAll(int fd, const std::string& path, const uint8_t* p, size_t size) 
 Status writeTemp(const Temp& t, const FileContent& f) {
   if (Status st = writeAll(t.fd, f.path, static_cast<const uint8_t*>(f.data), f.size); !st)
     return st;
+  if (Status st = writeAll(t.fd, f.path, static_cast<const uint8_t*>(f.tail), f.tail_size); !st)
+    return st;
   if (::fsync(t.fd) != 0) return ioError(f.path, "cannot write (fsync)", errno);
   return Status();
 }

@@ -85,6 +85,10 @@ struct FileContent {
   std::string path;
   const void* data;  // not owned
   size_t size;
+  // Bytes the file holds after `data` (not owned): a GLB's BIN chunk, written
+  // from the writer's buffer rather than copied behind its header first.
+  const void* tail = nullptr;
+  size_t tail_size = 0;
 };
 Status writeFilesTogether(const std::vector<FileContent>& files);
 

@@ -39,9 +39,12 @@ std::string finish(EVP_MD_CTX* ctx) {
 
 }  // namespace
 
-std::string sha256Hex(const void* data, size_t size) {
+std::string sha256Hex(const void* data, size_t size) { return sha256Hex(data, size, nullptr, 0); }
+
+std::string sha256Hex(const void* data, size_t size, const void* tail, size_t tail_size) {
   DigestContext ctx = newSha256();
   if (!ctx || EVP_DigestUpdate(ctx.get(), data, size) != 1) return std::string();
+  if (tail_size > 0 && EVP_DigestUpdate(ctx.get(), tail, tail_size) != 1) return std::string();
   return finish(ctx.get());
 }
 

@@ -12,6 +12,8 @@ namespace smpl {
 
 std::string sha256Hex(const std::string& bytes);
 std::string sha256Hex(const void* data, size_t size);
+// Of `data` followed by `tail` (a file written in two parts), without joining them.
+std::string sha256Hex(const void* data, size_t size, const void* tail, size_t tail_size);
 
 // Errors name the file.
 Result<std::string> sha256File(const std::string& path);

@@ -70,21 +70,21 @@ Status spliceMetadata(std::string& json, const std::string& metadata) {
   return st;
 }
 
-// GLB: header, JSON chunk (space-padded), BIN chunk written once from b.bin.
-std::string assembleGlb(std::string json, const std::string& bin) {
+// GLB up to the BIN chunk's data: header, JSON chunk (space-padded), the BIN
+// chunk's header when there is a buffer; the file is this + the buffer.
+std::string glbHead(std::string json, size_t bin_size) {
   json.resize(align4(json.size()), ' ');
   std::string out;
-  out.reserve(28 + json.size() + bin.size());
+  out.reserve(28 + json.size());
   out += "glTF";
   putU32(out, 2);
-  putU32(out, uint32_t(12 + 8 + json.size() + (bin.empty() ? 0 : 8 + bin.size())));
+  putU32(out, uint32_t(12 + 8 + json.size() + (bin_size == 0 ? 0 : 8 + bin_size)));
   putU32(out, uint32_t(json.size()));
   putU32(out, 0x4E4F534Au);
   out += json;
-  if (!bin.empty()) {
-    putU32(out, uint32_t(bin.size()));
+  if (bin_size > 0) {
+    putU32(out, uint32_t(bin_size));
     putU32(out, 0x004E4942u);
-    out += bin;
   }
   return out;
 }

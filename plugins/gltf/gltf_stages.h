@@ -85,7 +85,7 @@ Status splice(std::string& json, const std::string& placeholder, const std::stri
 // The metadata text over both metadata placeholders (asset and scene extras).
 Status spliceMetadata(std::string& json, const std::string& metadata);
 // GLB: header, JSON chunk (space-padded), BIN chunk written once from `bin`.
-std::string assembleGlb(std::string json, const std::string& bin);
+std::string glbHead(std::string json, size_t bin_size);
 // tinygltf's JSON of `model`: compact (the GLB's JSON chunk) or indented (.gltf).
 Result<std::string> serializeJson(tinygltf::Model& model, bool binary);
 // A pretty-printed .gltf whose (empty, placeholder-named) buffer becomes the

@@ -26,7 +26,7 @@ namespace {
 using gltf::addAnimation;  // the stages (gltf_stages.h)
 using gltf::addMesh;
 using gltf::addNodesAndSkin;
-using gltf::assembleGlb;
+using gltf::glbHead;
 using gltf::kBufferPlaceholder;
 using gltf::kMetadataPlaceholder;
 using gltf::placeholderText;
@@ -96,7 +96,7 @@ class GltfWriter : public Writer {
     embedded.buffer_uri.clear();
     Result<Files> files = serializeFiles(asset, embedded);
     if (!files) return files.error();
-    return std::move(files->bytes);
+    return std::move(files->bytes) + files->tail;
   }
 
   Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const override {
@@ -121,8 +121,8 @@ class GltfWriter : public Writer {
                   byte_length);
     if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, b.bin.size());
     if (!st) return st.error();
-    if (options.binary) return Files{assembleGlb(std::move(*json), b.bin), std::string()};
-    return Files{std::move(*json), external ? std::move(b.bin) : std::string()};
+    if (options.binary) return Files{glbHead(std::move(*json), b.bin.size()), "", std::move(b.bin)};
+    return Files{std::move(*json), external ? std::move(b.bin) : std::string(), ""};
   }
 };
 

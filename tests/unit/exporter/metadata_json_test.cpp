@@ -120,6 +120,14 @@ TEST(MetadataJson, SidecarRecordsEveryOutputFile) {
   EXPECT_EQ(back[1].file, "walk\\xff.bin");
   EXPECT_EQ(back[1].bytes, 1000u);
   EXPECT_EQ(back[1].sha256, j["producer"]["outputs"][1]["sha256"]);
+  // A file written in two parts is recorded as the whole: "glTF " + "bytes".
+  const std::string head = "glTF ", tail = "bytes";
+  const std::vector<RecordedOutput> two = recordedOutputsOf(
+      sidecarJson(metadataAsset(), "0",
+                  {{"/out/walk.glb", head.data(), head.size(), tail.data(), tail.size()}}));
+  ASSERT_EQ(two.size(), 1u);
+  EXPECT_EQ(two[0].bytes, glb.size());
+  EXPECT_EQ(two[0].sha256, "80dcc14bfc3491e609e212c9518577319eac1125b73b5a00d466a57de9787542");
   EXPECT_EQ(producerHashOf(sidecar), "0123456789abcdef");
   EXPECT_TRUE(recordedOutputsOf(sidecarJson(metadataAsset(), "0123456789abcdef")).empty());
   EXPECT_TRUE(recordedOutputsOf(R"({"producer": {"outputs": [{"file": 1}]}})").empty());

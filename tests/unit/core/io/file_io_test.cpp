@@ -65,6 +65,18 @@ TEST_F(FileIo, WriteThenReadRoundTripsBinaryData) {
   EXPECT_EQ(list(), std::vector<std::string>{"out.glb"});  // no temporary left behind
 }
 
+// A file given in two parts (a GLB's head and its BIN chunk) is written as
+// their concatenation.
+TEST_F(FileIo, AFileInTwoPartsIsWrittenAsTheirConcatenation) {
+  const std::string head = "glTF head|", tail(200000, 'b');
+  const std::string path = dir_ + "/two.glb";
+  ASSERT_TRUE(
+      writeFilesTogether({FileContent{path, head.data(), head.size(), tail.data(), tail.size()}})
+          .ok());
+  EXPECT_EQ(readText(path), head + tail);
+  EXPECT_EQ(list(), std::vector<std::string>{"two.glb"});
+}
+
 TEST_F(FileIo, OverwritesAnExistingFile) {
   const std::string path = dir_ + "/x.json";
   ASSERT_TRUE(writeFileAtomic(path, std::string("a much longer first version")).ok());

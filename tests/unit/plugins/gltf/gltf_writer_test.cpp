@@ -306,6 +306,23 @@ TEST(GltfWriter, GlbFourInfluencesWithUvs) {
   expectAsset(writeAndLoad(a, true, "m4_uv.glb"), a);
 }
 
+// serializeFiles hands a GLB over as its head (header, JSON chunk, BIN chunk
+// header) and the BIN data apart, so the CLI writes the buffer without
+// copying it behind the head; together they are serialize()'s bytes.
+TEST(GltfWriter, GlbHeadAndBufferAreTheWholeFile) {
+  const Asset a = makeAsset({});
+  const Writer* w = writerForPath("x.glb");
+  ASSERT_NE(w, nullptr);
+  Result<Writer::Files> files = w->serializeFiles(a, WriterOptions());
+  Result<std::string> whole = w->serialize(a, WriterOptions());
+  ASSERT_TRUE(files && whole);
+  EXPECT_EQ(files->bytes + files->tail, *whole);
+  ASSERT_GT(files->tail.size(), 0u);
+  EXPECT_EQ(files->bytes.size() % 4, 0u);
+  EXPECT_EQ(files->bytes.compare(files->bytes.size() - 4, 4, "BIN\0", 4), 0);
+  EXPECT_TRUE(files->buffer.empty());
+}
+
 TEST(GltfWriter, GlbEightInfluencesWithoutUvs) {
   AssetSpec spec;
   spec.influences = 8;
