@@ -7,7 +7,6 @@
 namespace smpl {
 namespace {
 
-constexpr double kStreamBytes = 32e6;  // results larger than this are streamed
 
 // Pose features and the top 3x4 rows of A_k = G_k [I | -J_k] of one frame,
 // in double, written as float: f (P values, row-major vec(R_k - I) for
@@ -55,8 +54,8 @@ void frameInputs(const std::vector<int>& parents, const Rotations& rot, const do
 // One block of frames: each frame's features and transforms, then the
 // kernels (the corrective GEMM once, the skinning with each weight set).
 void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs,
-              const std::vector<const batch::PackedSkin*>& skins, const double* rest,
-              const BatchInput& in, Kernels kernels, bool stream, int first, int count,
+              const std::vector<const batch::PackedSkin*>& skins, const batch::PackedRest& rest,
+              const BatchInput& in, Kernels kernels, int first, int count,
               const std::vector<Eigen::MatrixXd*>& out) {
   const int k = model.numJoints(), p = posedirs.depth;
   std::vector<float> features(static_cast<size_t>(p) * count), transforms(12 * k * count);
@@ -72,7 +71,7 @@ void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs,
   block.frames = count;
   block.joints = k;
   batch::evaluateBlock(posedirs, skins, rest, block, dst.data(),
-                       3 * static_cast<size_t>(model.numVertices()), kernels, stream);
+                       3 * static_cast<size_t>(model.numVertices()), kernels);
 }
 
 void run(const BodyModel& model, const BatchInput& in,
@@ -88,18 +87,20 @@ void run(const BodyModel& model, const BatchInput& in,
     packed.push_back(batch::packSkin((w ? *w : model.weights).data(), n, model.numJoints()));
   std::vector<const batch::PackedSkin*> skins;
   for (const batch::PackedSkin& s : packed) skins.push_back(&s);
-  const batch::PackedPosedirs posedirs =
-      batch::packPosedirs(model.posedirs.data(), n, static_cast<int>(model.posedirs.cols()));
-  const batch::AlignedVector<double> rest = batch::packRest(in.body->v_shaped.data(), n);
+  const int depth = static_cast<int>(model.posedirs.cols());
+  const bool reuse = in.posedirs && in.posedirs->vertices == n && in.posedirs->depth == depth &&
+                     in.posedirs->steps == (n + batch::kStepVertices - 1) / batch::kStepVertices &&
+                     in.posedirs->data.size() ==
+                         static_cast<size_t>(in.posedirs->steps) * batch::kStepRows * depth;
+  const batch::PackedPosedirs own = reuse ? batch::PackedPosedirs() : packPosedirs(model);
+  const batch::PackedPosedirs& posedirs = reuse ? *in.posedirs : own;
+  const batch::PackedRest rest = batch::packRest(in.body->v_shaped.data(), n);
   const Kernels kernels = batch::resolveKernels(in.kernels);
-  // Results much larger than the caches go past them (nothing reads them
-  // back soon); smaller ones stay cached for the caller.
-  const bool stream = 3.0 * n * frames * sizeof(double) * out.size() > kStreamBytes;
   const int block = std::max(1, in.block);
   const int blocks = (frames + block - 1) / block;
   auto work = [&](int worker, int workers) {
     for (int b = worker; b < blocks; b += workers)
-      runBlock(model, posedirs, skins, rest.data(), in, kernels, stream, b * block,
+      runBlock(model, posedirs, skins, rest, in, kernels, b * block,
                std::min(block, frames - b * block), out);
   };
   const int workers = std::max(1, std::min(in.threads, blocks));
@@ -110,6 +111,11 @@ void run(const BodyModel& model, const BatchInput& in,
 }
 
 }  // namespace
+
+batch::PackedPosedirs packPosedirs(const BodyModel& model) {
+  return batch::packPosedirs(model.posedirs.data(), model.numVertices(),
+                             static_cast<int>(model.posedirs.cols()));
+}
 
 std::vector<Eigen::MatrixXd> forwardBatchSkins(const BodyModel& model, const BatchInput& in,
                                                const std::vector<const Eigen::MatrixXd*>& skins) {

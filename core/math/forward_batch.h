@@ -34,7 +34,14 @@ struct BatchInput {
   // Kernel set (forward_batch_kernels.h). Best: the widest the CPU runs.
   // A set the CPU lacks is never run: the request falls back to Best.
   Kernels kernels = Kernels::Best;
+  // Optional: packPosedirs(model) made once for many calls on the same
+  // (unchanged) model. Null: each call packs posedirs itself, which reads
+  // all of them (34 MB for SMPL); one whose sizes do not match is ignored.
+  const batch::PackedPosedirs* posedirs = nullptr;
 };
+
+// posedirs packed for the kernels (float panels), for BatchInput::posedirs.
+batch::PackedPosedirs packPosedirs(const BodyModel& model);
 
 // Returns 3N x T: column t holds frame t's vertices (x0 y0 z0 x1 ...).
 Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& input);

@@ -29,23 +29,53 @@ inline unsigned char laneMask(int lanes) {  // the low `lanes` (0..8) bits
   return static_cast<unsigned char>((1u << clampLanes(lanes)) - 1);
 }
 
+// What a skinning kernel gets for one step: the joints that weigh on the
+// step and their 32 weights per entry, the step's rest positions and
+// correctives (96 values per frame: block h, component d, lane l at
+// 48 h + 16 d + l), and where each frame's 3N doubles go (out + t * ld).
+struct SkinStep {
+  const int* joints;
+  int count;         // entries in joints
+  const float* w;    // count x 32
+  int first, n;      // the step's first vertex; N
+  const double* rest64;
+  const float* rest32;
+  const float* corr;  // frames x 96
+  int frames;
+  const float* transforms;  // frames x K x 12
+  int k;
+  double* out;
+  size_t ld;
+};
+
 // ---------------------------------------------------------------- AVX-512
 
 // One 48 x 8 tile: corr rows [0, 48) of 8 frames (stride kStepRows) =
 // panels a, a + ps, a + 2 ps (16 x depth each, feature-major) times b
 // (depth x 8, interleaved by frame: b[8 p + j]). 24 named accumulators (GCC
-// keeps an array of vectors in memory); the broadcasts fold into the FMAs.
+// keeps an array of vectors in memory). Meanwhile the first `pf_lines`
+// iterations each prefetch one cache line from pf into L2 (the next step's
+// panels, while this step's are being used), and every 4th iteration
+// prefetches for writing one of the pw_lines result lines pw[] the
+// skinning of these frames will store: the result's memory traffic then
+// overlaps the multiply-adds instead of stalling the skinning's stores.
 __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(const float* a,
                                                                           size_t ps,
                                                                           const float* b, int depth,
-                                                                          float* corr) {
+                                                                          float* corr,
+                                                                          const char* pf,
+                                                                          int pf_lines,
+                                                                          char* const* pw,
+                                                                          int pw_lines) {
   __m512 c00 = _mm512_setzero_ps(), c01 = c00, c02 = c00, c10 = c00, c11 = c00, c12 = c00,
          c20 = c00, c21 = c00, c22 = c00, c30 = c00, c31 = c00, c32 = c00, c40 = c00, c41 = c00,
          c42 = c00, c50 = c00, c51 = c00, c52 = c00, c60 = c00, c61 = c00, c62 = c00, c70 = c00,
          c71 = c00, c72 = c00;
   const float *a0 = a, *a1 = a + ps, *a2 = a + 2 * ps;
   for (int p = 0; p < depth; ++p, a0 += kL, a1 += kL, a2 += kL, b += 8) {
-    const __m512 x0 = _mm512_loadu_ps(a0), x1 = _mm512_loadu_ps(a1), x2 = _mm512_loadu_ps(a2);
+    if (p < pf_lines) _mm_prefetch(pf + 64 * p, _MM_HINT_T1);
+    if ((p & 3) == 0 && (p >> 2) < pw_lines) __builtin_prefetch(pw[p >> 2], 1, 3);
+    const __m512 x0 = _mm512_load_ps(a0), x1 = _mm512_load_ps(a1), x2 = _mm512_load_ps(a2);
     __m512 s = _mm512_set1_ps(b[0]);
     c00 = _mm512_fmadd_ps(x0, s, c00), c01 = _mm512_fmadd_ps(x1, s, c01);
     c02 = _mm512_fmadd_ps(x2, s, c02);
@@ -74,63 +104,59 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(const
   const __m512 all[8][3] = {{c00, c01, c02}, {c10, c11, c12}, {c20, c21, c22}, {c30, c31, c32},
                             {c40, c41, c42}, {c50, c51, c52}, {c60, c61, c62}, {c70, c71, c72}};
   for (int j = 0; j < 8; ++j)
-    for (int d = 0; d < 3; ++d) _mm512_storeu_ps(corr + j * kStepRows + d * kL, all[j][d]);
+    for (int d = 0; d < 3; ++d) _mm512_store_ps(corr + j * kStepRows + d * kL, all[j][d]);
+  for (int i = (depth + 3) >> 2; i < pw_lines; ++i)  // what the loop had no room for
+    __builtin_prefetch(pw[i], 1, 3);
 }
 
-// The step's correctives: corr[t * 96 + r] for every frame t of `tiles`
-// tiles of 8 (b: tile after tile, depth x 8 each), r = 48 h + 16 d + lane.
+// One tile of 8 frames of the step's correctives: corr[j * 96 + r] for
+// frame j of the tile (b: depth x 8), r = 48 h + 16 d + lane; pf_lines
+// lines from pf and the pw_lines lines pw[] prefetched on the way.
 __attribute__((target("avx512f,fma"))) void gemmAvx512(const float* a, int depth, const float* b,
-                                                       int tiles, float* corr) {
+                                                       int, float* corr, const char* pf,
+                                                       int pf_lines, char* const* pw,
+                                                       int pw_lines) {
   const size_t ps = static_cast<size_t>(depth) * kL;
-  for (int t = 0; t < tiles; ++t)  // the tile's features (6.6 KB) in L1, the panels from L2
-    for (int h = 0; h < 2; ++h)
-      tile48x8(a + 3 * h * ps, ps, b + static_cast<size_t>(t) * depth * 8, depth,
-               corr + static_cast<size_t>(t) * 8 * kStepRows + 3 * kL * h);
+  const int half = (pf_lines + 1) / 2, whalf = (pw_lines + 1) / 2;
+  tile48x8(a, ps, b, depth, corr, pf, half, pw, whalf);
+  tile48x8(a + 3 * ps, ps, b, depth, corr + 3 * kL, pf + 64 * static_cast<size_t>(half),
+           pf_lines - half, pw + whalf, pw_lines - whalf);
 }
 
-// Writes 8 vertices' x y z (doubles X, Y, Z) interleaved at dst, the first
-// `count` of them (0..8).
-__attribute__((target("avx512f,fma"), always_inline)) inline void storeXyz(__m512d x, __m512d y,
-                                                                          __m512d z, double* dst,
-                                                                          int count) {
-  // Output element e = 8 m + k holds component e % 3 of vertex e / 3.
-  const __m512i xy0 = _mm512_set_epi64(10, 2, 0, 9, 1, 0, 8, 0),
-                xyz0 = _mm512_set_epi64(7, 6, 9, 4, 3, 8, 1, 0);
-  const __m512i xy1 = _mm512_set_epi64(5, 0, 12, 4, 0, 11, 3, 0),
-                xyz1 = _mm512_set_epi64(7, 12, 5, 4, 11, 2, 1, 10);
-  const __m512i xy2 = _mm512_set_epi64(0, 15, 7, 0, 14, 6, 0, 13),
-                xyz2 = _mm512_set_epi64(15, 6, 5, 14, 3, 2, 13, 0);
-  const __m512d o0 = _mm512_permutex2var_pd(_mm512_permutex2var_pd(x, xy0, y), xyz0, z);
-  const __m512d o1 = _mm512_permutex2var_pd(_mm512_permutex2var_pd(x, xy1, y), xyz1, z);
-  const __m512d o2 = _mm512_permutex2var_pd(_mm512_permutex2var_pd(x, xy2, y), xyz2, z);
-  if (count == 8) {
-    _mm512_storeu_pd(dst, o0), _mm512_storeu_pd(dst + 8, o1), _mm512_storeu_pd(dst + 16, o2);
-    return;
-  }
-  const int values = 3 * count;  // 0..21
-  _mm512_mask_storeu_pd(dst, laneMask(values), o0);
-  _mm512_mask_storeu_pd(dst + 8, laneMask(values - 8), o1);
-  _mm512_mask_storeu_pd(dst + 16, laneMask(values - 16), o2);
-}
-
-// Copies the first `count` doubles of a step's frame result from the
-// staging buffer to dst past the caches: stage + off mirrors dst's
-// alignment (off = (dst mod 64) / 8), so every cache line of dst that the
-// result covers whole gets one aligned non-temporal store; the partial lines
-// at the ends (shared with the neighbouring steps) get masked plain stores.
-__attribute__((target("avx512f,fma"), always_inline)) inline void streamOut(const double* stage,
-                                                                           int off, int count,
-                                                                           double* dst) {
-  const uintptr_t base = reinterpret_cast<uintptr_t>(dst) - 8 * static_cast<uintptr_t>(off);
-  for (int line = 0; 8 * line - off < count; ++line) {
-    const int k0 = 8 * line - off;  // dst index of the line's first double
-    const __m512d v = _mm512_load_pd(stage + 8 * line);
-    double* d = reinterpret_cast<double*>(base + 64 * static_cast<uintptr_t>(line));
-    if (k0 >= 0 && k0 + 8 <= count) {
-      _mm512_stream_pd(d, v);
+// 16 vertices of one block, one frame: p = rest + c, out = M [p; 1] in
+// float (M: the 12 blended entries, 16 lanes each), interleaved x y z and
+// widened to double: 48 doubles at dst, the first `count` of them.
+__attribute__((target("avx512f,fma"), always_inline)) inline void finishBlock(
+    __m512 m0, __m512 m1, __m512 m2, __m512 m3, __m512 m4, __m512 m5, __m512 m6, __m512 m7,
+    __m512 m8, __m512 m9, __m512 m10, __m512 m11, const float* rest, const float* c, double* dst,
+    int count) {
+  const __m512 px = _mm512_add_ps(_mm512_load_ps(rest), _mm512_load_ps(c));
+  const __m512 py = _mm512_add_ps(_mm512_load_ps(rest + kL), _mm512_load_ps(c + kL));
+  const __m512 pz = _mm512_add_ps(_mm512_load_ps(rest + 2 * kL), _mm512_load_ps(c + 2 * kL));
+  const __m512 x = _mm512_fmadd_ps(m0, px, _mm512_fmadd_ps(m1, py, _mm512_fmadd_ps(m2, pz, m3)));
+  const __m512 y = _mm512_fmadd_ps(m4, px, _mm512_fmadd_ps(m5, py, _mm512_fmadd_ps(m6, pz, m7)));
+  const __m512 z = _mm512_fmadd_ps(m8, px, _mm512_fmadd_ps(m9, py, _mm512_fmadd_ps(m10, pz, m11)));
+  // Output float e = 16 q + k holds component e % 3 of vertex e / 3: first
+  // x and y by one two-source permute, then z into the remaining lanes.
+  const __m512i xy0 = _mm512_set_epi32(5, 0, 20, 4, 0, 19, 3, 0, 18, 2, 0, 17, 1, 0, 16, 0),
+                xyz0 = _mm512_set_epi32(15, 20, 13, 12, 19, 10, 9, 18, 7, 6, 17, 4, 3, 16, 1, 0),
+                xy1 = _mm512_set_epi32(26, 10, 0, 25, 9, 0, 24, 8, 0, 23, 7, 0, 22, 6, 0, 21),
+                xyz1 = _mm512_set_epi32(15, 14, 25, 12, 11, 24, 9, 8, 23, 6, 5, 22, 3, 2, 21, 0),
+                xy2 = _mm512_set_epi32(0, 31, 15, 0, 30, 14, 0, 29, 13, 0, 28, 12, 0, 27, 11, 0),
+                xyz2 = _mm512_set_epi32(31, 14, 13, 30, 11, 10, 29, 8, 7, 28, 5, 4, 27, 2, 1, 26);
+  const __m512 o[3] = {
+      _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy0, y), xyz0, z),
+      _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy1, y), xyz1, z),
+      _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy2, y), xyz2, z)};
+  for (int q = 0; q < 3; ++q) {
+    const __m512d lo = _mm512_cvtps_pd(_mm512_castps512_ps256(o[q]));
+    const __m512d hi =
+        _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(o[q]), 1)));
+    if (count >= 16 * q + 16) {
+      _mm512_storeu_pd(dst + 16 * q, lo), _mm512_storeu_pd(dst + 16 * q + 8, hi);
     } else {
-      const int lo = k0 < 0 ? -k0 : 0, hi = count - k0 < 8 ? count - k0 : 8;
-      _mm512_mask_storeu_pd(d, static_cast<__mmask8>(laneMask(hi) & ~laneMask(lo)), v);
+      _mm512_mask_storeu_pd(dst + 16 * q, laneMask(count - 16 * q), lo);
+      _mm512_mask_storeu_pd(dst + 16 * q + 8, laneMask(count - 16 * q - 8), hi);
     }
   }
 }
@@ -139,14 +165,16 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void streamOut(cons
 // its 32 weights per entry; rest: the step's packed rest positions (96
 // doubles); corr: the step's correctives (96 per frame); out + t*ld: frame
 // t's 3N doubles.
-__attribute__((target("avx512f,fma"))) void skinAvx512(const int* joints, int count,
-                                                       const float* w, int first, int n,
-                                                       const double* rest, const float* corr,
-                                                       int frames, const float* transforms, int k,
-                                                       double* out, size_t ld, bool stream) {
-  const int valid = imin(kStepVertices, n - first);
-  alignas(64) float blended[12][kStepVertices];
-  alignas(64) double stage[kStepRows + 16];
+__attribute__((target("avx512f,fma"))) void skinAvx512(const SkinStep& a) {
+  const int* const joints = a.joints;
+  const float* const w = a.w;
+  const float* const rest = a.rest32;
+  const int count = a.count, first = a.first, frames = a.frames, k = a.k;
+  const float* const corr = a.corr;
+  const float* const transforms = a.transforms;
+  double* const out = a.out;
+  const size_t ld = a.ld;
+  const int valid = imin(kStepVertices, a.n - first);
   for (int t = 0; t < frames; ++t) {
     const float* tr = transforms + static_cast<size_t>(t) * k * 12;
     __m512 m00 = _mm512_setzero_ps(), m01 = m00, m10 = m00, m11 = m00, m20 = m00, m21 = m00,
@@ -181,40 +209,14 @@ __attribute__((target("avx512f,fma"))) void skinAvx512(const int* joints, int co
       s = _mm512_set1_ps(tj[11]);
       mb0 = _mm512_fmadd_ps(w0, s, mb0), mb1 = _mm512_fmadd_ps(w1, s, mb1);
     }
-    const __m512 all[12][2] = {{m00, m01}, {m10, m11}, {m20, m21}, {m30, m31},
-                               {m40, m41}, {m50, m51}, {m60, m61}, {m70, m71},
-                               {m80, m81}, {m90, m91}, {ma0, ma1}, {mb0, mb1}};
-    for (int e = 0; e < 12; ++e) {
-      _mm512_store_ps(blended[e], all[e][0]);
-      _mm512_store_ps(blended[e] + 16, all[e][1]);
-    }
-    // In double, 8 vertices at a time: p = rest + c, out = M [p; 1].
     const float* c = corr + static_cast<size_t>(t) * kStepRows;
     double* dst = out + static_cast<size_t>(t) * ld + 3 * static_cast<size_t>(first);
-    const int off = static_cast<int>(reinterpret_cast<uintptr_t>(dst) & 63) / 8;
-    double* target = stream ? stage + off : dst;
-    for (int g = 0; g < 4 && 8 * g < valid; ++g) {
-      const int lane = 8 * g;  // first lane in the step; block g / 2
-      const float* ch = c + 3 * kL * (g / 2) + 8 * (g % 2);
-      const __m512d px =
-          _mm512_add_pd(_mm512_load_pd(rest + lane), _mm512_cvtps_pd(_mm256_loadu_ps(ch)));
-      const __m512d py = _mm512_add_pd(_mm512_load_pd(rest + kStepVertices + lane),
-                                       _mm512_cvtps_pd(_mm256_loadu_ps(ch + kL)));
-      const __m512d pz = _mm512_add_pd(_mm512_load_pd(rest + 2 * kStepVertices + lane),
-                                       _mm512_cvtps_pd(_mm256_loadu_ps(ch + 2 * kL)));
-      __m512d r[3];
-      for (int row = 0; row < 3; ++row) {
-        const float* mr = &blended[4 * row][lane];
-        __m512d acc = _mm512_cvtps_pd(_mm256_load_ps(mr + 3 * kStepVertices));
-        acc = _mm512_fmadd_pd(_mm512_cvtps_pd(_mm256_load_ps(mr)), px, acc);
-        acc = _mm512_fmadd_pd(_mm512_cvtps_pd(_mm256_load_ps(mr + kStepVertices)), py, acc);
-        r[row] = _mm512_fmadd_pd(_mm512_cvtps_pd(_mm256_load_ps(mr + 2 * kStepVertices)), pz, acc);
-      }
-      storeXyz(r[0], r[1], r[2], target + 3 * lane, stream ? 8 : imin(8, valid - lane));
-    }
-    if (stream) streamOut(stage, off, 3 * valid, dst);
+    finishBlock(m00, m10, m20, m30, m40, m50, m60, m70, m80, m90, ma0, mb0, rest, c, dst,
+                3 * imin(kL, valid));
+    if (valid > kL)
+      finishBlock(m01, m11, m21, m31, m41, m51, m61, m71, m81, m91, ma1, mb1, rest + 3 * kL,
+                  c + 3 * kL, dst + 3 * kL, 3 * (valid - kL));
   }
-  if (stream) _mm_sfence();  // the streamed lines are visible before the caller goes on
 }
 
 // ---------------------------------------------------------------- AVX2
@@ -248,13 +250,18 @@ __attribute__((target("avx2,fma"), always_inline)) inline void tile16x6(const fl
   }
 }
 
-__attribute__((target("avx2,fma"))) void gemmAvx2(const float* a, int depth, const float* b,
-                                                  int tiles, float* corr) {
+// One tile of 6 frames (b: depth x 6) of the step's 96 rows, panel by
+// panel; the next step's lines are prefetched first, the result lines pw[]
+// for writing a sixth before each panel.
+__attribute__((target("avx2,fma"))) void gemmAvx2(const float* a, int depth, const float* b, int,
+                                                  float* corr, const char* pf, int pf_lines,
+                                                  char* const* pw, int pw_lines) {
+  for (int l = 0; l < pf_lines; ++l) _mm_prefetch(pf + 64 * l, _MM_HINT_T1);
   const size_t ps = static_cast<size_t>(depth) * kL;
-  for (int q = 0; q < 6; ++q)  // panel q: rows 16 q of the step
-    for (int t = 0; t < tiles; ++t)
-      tile16x6(a + q * ps, b + static_cast<size_t>(t) * depth * 6, depth,
-               corr + static_cast<size_t>(t) * 6 * kStepRows + kL * q);
+  for (int q = 0; q < 6; ++q) {
+    for (int l = q * pw_lines / 6; l < (q + 1) * pw_lines / 6; ++l) __builtin_prefetch(pw[l], 1, 3);
+    tile16x6(a + q * ps, b, depth, corr + kL * q);
+  }
 }
 
 // out = m [x y z 1] for one vertex, m the blended 3x4 transform (float,
@@ -268,12 +275,15 @@ inline void transformVertex(const float* m, size_t stride, double x, double y, d
 
 // 8 vertices per step of the loop, 12 blended entries in 12 named
 // registers; the transform one vertex at a time.
-__attribute__((target("avx2,fma"))) void skinAvx2(const int* joints, int count, const float* w,
-                                                  int first, int n, const double* rest,
-                                                  const float* corr, int frames,
-                                                  const float* transforms, int k, double* out,
-                                                  size_t ld, bool) {
-  const int valid = imin(kStepVertices, n - first);
+__attribute__((target("avx2,fma"))) void skinAvx2(const SkinStep& a) {
+  const int* const joints = a.joints;
+  const float* const w = a.w;
+  const int count = a.count, first = a.first, frames = a.frames, k = a.k;
+  const float* const corr = a.corr;
+  const float* const transforms = a.transforms;
+  double* const out = a.out;
+  const size_t ld = a.ld;
+  const int valid = imin(kStepVertices, a.n - first);
   alignas(32) float m[12][8];
   for (int t = 0; t < frames; ++t) {
     const float* tr = transforms + static_cast<size_t>(t) * k * 12;
@@ -300,13 +310,12 @@ __attribute__((target("avx2,fma"))) void skinAvx2(const int* joints, int count, 
       }
       const __m256 all[12] = {m0, m1, m2, m3, m4, m5, m6, m7, m8, m9, m10, m11};
       for (int e = 0; e < 12; ++e) _mm256_store_ps(m[e], all[e]);
-      const float* cg = c + 3 * kL * (g / 2) + 8 * (g % 2);
-      for (int l = 0; l < 8 && 8 * g + l < valid; ++l) {
-        const int lane = 8 * g + l;
-        transformVertex(&m[0][l], 8, rest[lane] + cg[l], rest[kStepVertices + lane] + cg[kL + l],
-                        rest[2 * kStepVertices + lane] + cg[2 * kL + l],
-                        dst + 3 * (first + lane));
-      }
+      const int at = 3 * kL * (g / 2) + 8 * (g % 2);  // the group's x in corr and rest
+      const float* cg = c + at;
+      const double* rg = a.rest64 + at;
+      for (int l = 0; l < 8 && 8 * g + l < valid; ++l)
+        transformVertex(&m[0][l], 8, rg[l] + cg[l], rg[kL + l] + cg[kL + l],
+                        rg[2 * kL + l] + cg[2 * kL + l], dst + 3 * (first + 8 * g + l));
     }
   }
 }
@@ -314,7 +323,8 @@ __attribute__((target("avx2,fma"))) void skinAvx2(const int* joints, int count, 
 // ---------------------------------------------------------------- portable
 
 // b is one tile of all `cols` frames (b[cols * p + j]).
-void gemmPortable(const float* a, int depth, const float* b, int cols, float* corr) {
+void gemmPortable(const float* a, int depth, const float* b, int cols, float* corr, const char*,
+                  int, char* const*, int) {
   const size_t ps = static_cast<size_t>(depth) * kL;
   const Eigen::Map<const Eigen::MatrixXf> ft(b, cols, depth);  // frames x features
   for (int q = 0; q < 6; ++q) {
@@ -324,34 +334,33 @@ void gemmPortable(const float* a, int depth, const float* b, int cols, float* co
   }
 }
 
-void skinPortable(const int* joints, int count, const float* w, int first, int n,
-                  const double* rest, const float* corr, int frames, const float* transforms,
-                  int k, double* out, size_t ld, bool) {
-  const int valid = std::min(kStepVertices, n - first);
-  for (int t = 0; t < frames; ++t) {
-    const float* tr = transforms + static_cast<size_t>(t) * k * 12;
-    const float* c = corr + static_cast<size_t>(t) * kStepRows;
+void skinPortable(const SkinStep& a) {
+  const int valid = std::min(kStepVertices, a.n - a.first);
+  for (int t = 0; t < a.frames; ++t) {
+    const float* tr = a.transforms + static_cast<size_t>(t) * a.k * 12;
+    const float* c = a.corr + static_cast<size_t>(t) * kStepRows;
     for (int l = 0; l < valid; ++l) {
       float m[12] = {};
-      for (int e = 0; e < count; ++e) {
-        const float wl = w[32 * e + l];
+      for (int e = 0; e < a.count; ++e) {
+        const float wl = a.w[32 * e + l];
         if (wl == 0.0f) continue;
-        const float* tj = tr + joints[e] * 12;
+        const float* tj = tr + a.joints[e] * 12;
         for (int q = 0; q < 12; ++q) m[q] += wl * tj[q];
       }
-      const float* cl = c + 3 * kL * (l / kL) + l % kL;
-      transformVertex(m, 1, rest[l] + cl[0], rest[kStepVertices + l] + cl[kL],
-                      rest[2 * kStepVertices + l] + cl[2 * kL],
-                      out + static_cast<size_t>(t) * ld + 3 * (first + l));
+      const int at = 3 * kL * (l / kL) + l % kL;  // x of lane l in corr and rest
+      const float* cl = c + at;
+      const double* rl = a.rest64 + at;
+      transformVertex(m, 1, rl[0] + cl[0], rl[kL] + cl[kL], rl[2 * kL] + cl[2 * kL],
+                      a.out + static_cast<size_t>(t) * a.ld + 3 * (a.first + l));
     }
   }
 }
 
 // ---------------------------------------------------------------- dispatch
 
-using GemmFn = void (*)(const float*, int, const float*, int, float*);
-using SkinFn = void (*)(const int*, int, const float*, int, int, const double*, const float*, int,
-                        const float*, int, double*, size_t, bool);
+using GemmFn = void (*)(const float*, int, const float*, int, float*, const char*, int,
+                        char* const*, int);
+using SkinFn = void (*)(const SkinStep&);
 struct KernelSet {
   GemmFn gemm;
   SkinFn skin;
@@ -444,16 +453,20 @@ PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth) {
   return a;
 }
 
-AlignedVector<double> packRest(const double* v_shaped, int vertices) {
+PackedRest packRest(const double* v_shaped, int vertices) {
   const int steps = (vertices + kStepVertices - 1) / kStepVertices;
-  AlignedVector<double> rest(static_cast<size_t>(steps) * kStepRows);
+  PackedRest rest;
+  rest.f64.resize(static_cast<size_t>(steps) * kStepRows);
+  rest.f32.resize(rest.f64.size());
   for (int s = 0; s < steps; ++s)
-    for (int d = 0; d < 3; ++d)
-      for (int l = 0; l < kStepVertices; ++l) {
-        const int i = s * kStepVertices + l;
-        rest[(3 * static_cast<size_t>(s) + d) * kStepVertices + l] =
-            i < vertices ? v_shaped[static_cast<size_t>(d) * vertices + i] : 0.0;
-      }
+    for (int h = 0; h < 2; ++h)
+      for (int d = 0; d < 3; ++d)
+        for (int l = 0; l < kL; ++l) {
+          const int i = s * kStepVertices + h * kL + l;
+          const size_t at = static_cast<size_t>(s) * kStepRows + 3 * kL * h + kL * d + l;
+          rest.f64[at] = i < vertices ? v_shaped[static_cast<size_t>(d) * vertices + i] : 0.0;
+          rest.f32[at] = static_cast<float>(rest.f64[at]);
+        }
   return rest;
 }
 
@@ -479,8 +492,8 @@ PackedSkin packSkin(const double* weights, int vertices, int joints) {
 }
 
 void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const PackedSkin*>& skins,
-                   const double* rest, const FrameBlock& block, double* const* out, size_t ld,
-                   Kernels kernels, bool stream) {
+                   const PackedRest& rest, const FrameBlock& block, double* const* out,
+                   size_t ld, Kernels kernels) {
   const KernelSet ks = kernelSet(kernels);
   const int depth = posedirs.depth, frames = block.frames, n = posedirs.vertices;
   const int width = ks.tile_cols > 0 ? ks.tile_cols : frames;
@@ -493,18 +506,56 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
     const float* f = block.features + static_cast<size_t>(t) * depth;
     for (int p = 0; p < depth; ++p) tile[static_cast<size_t>(p) * width] = f[p];
   }
-  AlignedVector<float> corr(static_cast<size_t>(kStepRows) * cols, 0.0f);
+  // Tile by tile: the GEMM of a tile's frames, then their skinning, so the
+  // result's stores overlap the next tile's arithmetic; the next step's
+  // panels are prefetched a share per tile.
+  AlignedVector<float> corr(static_cast<size_t>(kStepRows) * width, 0.0f);
+  // The result lines each tile's skinning will write (every skin), for the
+  // GEMM to prefetch.
+  std::vector<char*> lines(skins.size() * width * (kStepRows / 8 + 1));
+  const size_t step_floats = static_cast<size_t>(6) * depth * kL;
+  const int step_lines = static_cast<int>(step_floats / 16), tile_lines = (step_lines + tiles - 1) / tiles;
   for (int s = 0; s < posedirs.steps; ++s) {
-    if (depth > 0)
-      ks.gemm(posedirs.data.data() + static_cast<size_t>(s) * 6 * depth * kL, depth, b.data(),
-              ks.tile_cols > 0 ? tiles : cols, corr.data());
-    for (size_t i = 0; i < skins.size(); ++i) {
-      const PackedSkin& sk = *skins[i];
-      const int e0 = sk.begin[s];
-      ks.skin(sk.joints.data() + e0, sk.begin[s + 1] - e0,
-              sk.w.data() + static_cast<size_t>(e0) * kStepVertices, s * kStepVertices, n,
-              rest + static_cast<size_t>(s) * kStepRows, corr.data(), frames, block.transforms,
-              block.joints, out[i], ld, stream && kernels == Kernels::Avx512);
+    const float* a = posedirs.data.data() + s * step_floats;
+    const char* next = reinterpret_cast<const char*>(a + step_floats);
+    for (int t = 0; t < tiles; ++t) {
+      const int t0 = t * width, nr = std::min(width, frames - t0);
+      const int pf_first = std::min(step_lines, t * tile_lines);
+      const int pf_lines = s + 1 < posedirs.steps ? std::min(tile_lines, step_lines - pf_first) : 0;
+      int pw_lines = 0;
+      if (ks.tile_cols > 0) {
+        const size_t lo = 3 * static_cast<size_t>(s) * kStepVertices;
+        const size_t hi = 3 * static_cast<size_t>(std::min(n, (s + 1) * kStepVertices));
+        for (size_t i = 0; i < skins.size(); ++i)
+          for (int j = 0; j < nr; ++j) {
+            const uintptr_t col = reinterpret_cast<uintptr_t>(out[i] + (t0 + j) * ld);
+            const uintptr_t end = col + 8 * hi;
+            for (uintptr_t l = (col + 8 * lo) & ~uintptr_t(63); l < end; l += 64)
+              lines[pw_lines++] = reinterpret_cast<char*>(l);
+          }
+      }
+      if (depth > 0)
+        ks.gemm(a, depth, b.data() + static_cast<size_t>(t) * depth * width, width, corr.data(),
+                next + 64 * static_cast<size_t>(pf_first), pf_lines, lines.data(), pw_lines);
+      for (size_t i = 0; i < skins.size(); ++i) {
+        const PackedSkin& sk = *skins[i];
+        const int e0 = sk.begin[s];
+        SkinStep step;
+        step.joints = sk.joints.data() + e0;
+        step.count = sk.begin[s + 1] - e0;
+        step.w = sk.w.data() + static_cast<size_t>(e0) * kStepVertices;
+        step.first = s * kStepVertices;
+        step.n = n;
+        step.rest64 = rest.f64.data() + static_cast<size_t>(s) * kStepRows;
+        step.rest32 = rest.f32.data() + static_cast<size_t>(s) * kStepRows;
+        step.corr = corr.data();
+        step.frames = nr;
+        step.transforms = block.transforms + static_cast<size_t>(t0) * block.joints * 12;
+        step.k = block.joints;
+        step.out = out[i] + static_cast<size_t>(t0) * ld;
+        step.ld = ld;
+        ks.skin(step);
+      }
     }
   }
 }

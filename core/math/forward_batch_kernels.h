@@ -115,9 +115,14 @@ struct PackedSkin {
 };
 PackedSkin packSkin(const double* weights, int vertices, int joints);
 
-// v_shaped (N x 3, column-major doubles) per step: component d of vertex
-// 32 s + l at [(3 s + d) * 32 + l], zero past N.
-AlignedVector<double> packRest(const double* v_shaped, int vertices);
+// v_shaped (N x 3, column-major doubles) per step, in the correctives'
+// layout: component d of vertex 32 s + 16 h + l at [96 s + 48 h + 16 d + l],
+// zero past N; in double and rounded to float.
+struct PackedRest {
+  AlignedVector<double> f64;
+  AlignedVector<float> f32;
+};
+PackedRest packRest(const double* v_shaped, int vertices);
 
 // One block of frames through the whole pass.
 struct FrameBlock {
@@ -130,12 +135,10 @@ struct FrameBlock {
 // For every skin s and frame t: out[s] + t * ld receives frame t's 3N
 // vertex coordinates (x0 y0 z0 x1 ...) in double, metres:
 // out_i = (sum_k w_ik T_k) [v_shaped_i + c_i; 1], c = posedirs * f.
-// rest: packRest(v_shaped). kernels: a resolved set the CPU runs. stream:
-// write the result past the caches (non-temporal stores, Avx512 only), for
-// results much larger than the caches that are not read back at once.
+// rest: packRest(v_shaped). kernels: a resolved set the CPU runs.
 void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const PackedSkin*>& skins,
-                   const double* rest, const FrameBlock& block, double* const* out, size_t ld,
-                   Kernels kernels, bool stream = false);
+                   const PackedRest& rest, const FrameBlock& block, double* const* out, size_t ld,
+                   Kernels kernels);
 
 }  // namespace batch
 }  // namespace smpl
