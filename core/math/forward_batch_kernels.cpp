@@ -53,74 +53,83 @@ struct SkinStep {
 // One 48 x 8 tile: corr rows [0, 48) of 8 frames (stride kStepRows) =
 // panels a, a + ps, a + 2 ps (16 x depth each, feature-major) times b
 // (depth x 8, interleaved by frame: b[8 p + j]). 24 named accumulators (GCC
-// keeps an array of vectors in memory). Meanwhile the first `pf_lines`
-// iterations each prefetch one cache line from pf into L2 (the next step's
-// panels, while this step's are being used), and every 4th iteration
-// prefetches for writing one of the pw_lines result lines pw[] the
-// skinning of these frames will store: the result's memory traffic then
-// overlaps the multiply-adds instead of stalling the skinning's stores.
-__attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(const float* a,
-                                                                          size_t ps,
-                                                                          const float* b, int depth,
-                                                                          float* corr,
-                                                                          const char* pf,
-                                                                          int pf_lines,
-                                                                          char* const* pw,
-                                                                          int pw_lines) {
+// keeps an array of vectors in memory). The loop runs 4 features at a time
+// and on the way, per group of 4: prefetches 2 cache lines pf[...] into L2
+// (the next step's panels, while this step's are in use) and, for writing,
+// one result line pw[g] that the skinning of these frames will store (pw
+// has an entry for every group: kernels' own scratch where there is none),
+// so the result's memory traffic overlaps the multiply-adds instead of
+// stalling the skinning's stores; pw entries past the groups come after.
+#define SMPL_TILE48X8_FEATURE(o)                                                              \
+  do {                                                                                        \
+    const __m512 x0 = _mm512_load_ps(a0 + (o) * kL), x1 = _mm512_load_ps(a1 + (o) * kL),      \
+                 x2 = _mm512_load_ps(a2 + (o) * kL);                                          \
+    const float* bo = b + 8 * (o);                                                            \
+    __m512 s = _mm512_set1_ps(bo[0]);                                                         \
+    c00 = _mm512_fmadd_ps(x0, s, c00), c01 = _mm512_fmadd_ps(x1, s, c01);                     \
+    c02 = _mm512_fmadd_ps(x2, s, c02);                                                        \
+    s = _mm512_set1_ps(bo[1]);                                                                \
+    c10 = _mm512_fmadd_ps(x0, s, c10), c11 = _mm512_fmadd_ps(x1, s, c11);                     \
+    c12 = _mm512_fmadd_ps(x2, s, c12);                                                        \
+    s = _mm512_set1_ps(bo[2]);                                                                \
+    c20 = _mm512_fmadd_ps(x0, s, c20), c21 = _mm512_fmadd_ps(x1, s, c21);                     \
+    c22 = _mm512_fmadd_ps(x2, s, c22);                                                        \
+    s = _mm512_set1_ps(bo[3]);                                                                \
+    c30 = _mm512_fmadd_ps(x0, s, c30), c31 = _mm512_fmadd_ps(x1, s, c31);                     \
+    c32 = _mm512_fmadd_ps(x2, s, c32);                                                        \
+    s = _mm512_set1_ps(bo[4]);                                                                \
+    c40 = _mm512_fmadd_ps(x0, s, c40), c41 = _mm512_fmadd_ps(x1, s, c41);                     \
+    c42 = _mm512_fmadd_ps(x2, s, c42);                                                        \
+    s = _mm512_set1_ps(bo[5]);                                                                \
+    c50 = _mm512_fmadd_ps(x0, s, c50), c51 = _mm512_fmadd_ps(x1, s, c51);                     \
+    c52 = _mm512_fmadd_ps(x2, s, c52);                                                        \
+    s = _mm512_set1_ps(bo[6]);                                                                \
+    c60 = _mm512_fmadd_ps(x0, s, c60), c61 = _mm512_fmadd_ps(x1, s, c61);                     \
+    c62 = _mm512_fmadd_ps(x2, s, c62);                                                        \
+    s = _mm512_set1_ps(bo[7]);                                                                \
+    c70 = _mm512_fmadd_ps(x0, s, c70), c71 = _mm512_fmadd_ps(x1, s, c71);                     \
+    c72 = _mm512_fmadd_ps(x2, s, c72);                                                        \
+  } while (0)
+
+__attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
+    const float* a, size_t ps, const float* b, int depth, float* corr, const char* pf,
+    char* const* pw, int pw_lines) {
   __m512 c00 = _mm512_setzero_ps(), c01 = c00, c02 = c00, c10 = c00, c11 = c00, c12 = c00,
          c20 = c00, c21 = c00, c22 = c00, c30 = c00, c31 = c00, c32 = c00, c40 = c00, c41 = c00,
          c42 = c00, c50 = c00, c51 = c00, c52 = c00, c60 = c00, c61 = c00, c62 = c00, c70 = c00,
          c71 = c00, c72 = c00;
   const float *a0 = a, *a1 = a + ps, *a2 = a + 2 * ps;
-  for (int p = 0; p < depth; ++p, a0 += kL, a1 += kL, a2 += kL, b += 8) {
-    if (p < pf_lines) _mm_prefetch(pf + 64 * p, _MM_HINT_T1);
-    if ((p & 3) == 0 && (p >> 2) < pw_lines) __builtin_prefetch(pw[p >> 2], 1, 3);
-    const __m512 x0 = _mm512_load_ps(a0), x1 = _mm512_load_ps(a1), x2 = _mm512_load_ps(a2);
-    __m512 s = _mm512_set1_ps(b[0]);
-    c00 = _mm512_fmadd_ps(x0, s, c00), c01 = _mm512_fmadd_ps(x1, s, c01);
-    c02 = _mm512_fmadd_ps(x2, s, c02);
-    s = _mm512_set1_ps(b[1]);
-    c10 = _mm512_fmadd_ps(x0, s, c10), c11 = _mm512_fmadd_ps(x1, s, c11);
-    c12 = _mm512_fmadd_ps(x2, s, c12);
-    s = _mm512_set1_ps(b[2]);
-    c20 = _mm512_fmadd_ps(x0, s, c20), c21 = _mm512_fmadd_ps(x1, s, c21);
-    c22 = _mm512_fmadd_ps(x2, s, c22);
-    s = _mm512_set1_ps(b[3]);
-    c30 = _mm512_fmadd_ps(x0, s, c30), c31 = _mm512_fmadd_ps(x1, s, c31);
-    c32 = _mm512_fmadd_ps(x2, s, c32);
-    s = _mm512_set1_ps(b[4]);
-    c40 = _mm512_fmadd_ps(x0, s, c40), c41 = _mm512_fmadd_ps(x1, s, c41);
-    c42 = _mm512_fmadd_ps(x2, s, c42);
-    s = _mm512_set1_ps(b[5]);
-    c50 = _mm512_fmadd_ps(x0, s, c50), c51 = _mm512_fmadd_ps(x1, s, c51);
-    c52 = _mm512_fmadd_ps(x2, s, c52);
-    s = _mm512_set1_ps(b[6]);
-    c60 = _mm512_fmadd_ps(x0, s, c60), c61 = _mm512_fmadd_ps(x1, s, c61);
-    c62 = _mm512_fmadd_ps(x2, s, c62);
-    s = _mm512_set1_ps(b[7]);
-    c70 = _mm512_fmadd_ps(x0, s, c70), c71 = _mm512_fmadd_ps(x1, s, c71);
-    c72 = _mm512_fmadd_ps(x2, s, c72);
+  const int groups = depth / 4;
+  for (int g = 0; g < groups; ++g, a0 += 4 * kL, a1 += 4 * kL, a2 += 4 * kL, b += 32) {
+    _mm_prefetch(pf + 128 * g, _MM_HINT_T1);
+    _mm_prefetch(pf + 128 * g + 64, _MM_HINT_T1);
+    __builtin_prefetch(pw[g], 1, 3);
+    SMPL_TILE48X8_FEATURE(0);
+    SMPL_TILE48X8_FEATURE(1);
+    SMPL_TILE48X8_FEATURE(2);
+    SMPL_TILE48X8_FEATURE(3);
   }
+  for (int o = 0; o < depth - 4 * groups; ++o) SMPL_TILE48X8_FEATURE(o);
   const __m512 all[8][3] = {{c00, c01, c02}, {c10, c11, c12}, {c20, c21, c22}, {c30, c31, c32},
                             {c40, c41, c42}, {c50, c51, c52}, {c60, c61, c62}, {c70, c71, c72}};
   for (int j = 0; j < 8; ++j)
     for (int d = 0; d < 3; ++d) _mm512_store_ps(corr + j * kStepRows + d * kL, all[j][d]);
-  for (int i = (depth + 3) >> 2; i < pw_lines; ++i)  // what the loop had no room for
-    __builtin_prefetch(pw[i], 1, 3);
+  for (int i = groups; i < pw_lines; ++i) __builtin_prefetch(pw[i], 1, 3);
 }
+#undef SMPL_TILE48X8_FEATURE
 
 // One tile of 8 frames of the step's correctives: corr[j * 96 + r] for
-// frame j of the tile (b: depth x 8), r = 48 h + 16 d + lane; pf_lines
-// lines from pf and the pw_lines lines pw[] prefetched on the way.
+// frame j of the tile (b: depth x 8), r = 48 h + 16 d + lane; on the way,
+// 4 lines per 4 features from pf on (tile48x8) and the result lines pw[]
+// (at least 2 (depth / 4) entries, padded) prefetched.
 __attribute__((target("avx512f,fma"))) void gemmAvx512(const float* a, int depth, const float* b,
-                                                       int, float* corr, const char* pf,
-                                                       int pf_lines, char* const* pw,
-                                                       int pw_lines) {
+                                                       int, float* corr, const char* pf, int,
+                                                       char* const* pw, int pw_lines) {
   const size_t ps = static_cast<size_t>(depth) * kL;
-  const int half = (pf_lines + 1) / 2, whalf = (pw_lines + 1) / 2;
-  tile48x8(a, ps, b, depth, corr, pf, half, pw, whalf);
-  tile48x8(a + 3 * ps, ps, b, depth, corr + 3 * kL, pf + 64 * static_cast<size_t>(half),
-           pf_lines - half, pw + whalf, pw_lines - whalf);
+  const int groups = depth / 4, first = pw_lines < groups ? pw_lines : groups;
+  tile48x8(a, ps, b, depth, corr, pf, pw, first);
+  tile48x8(a + 3 * ps, ps, b, depth, corr + 3 * kL, pf + 128 * static_cast<size_t>(groups),
+           pw + first, pw_lines - first);
 }
 
 // 16 vertices of one block, one frame: p = rest + c, out = M [p; 1] in
@@ -512,7 +521,11 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
   AlignedVector<float> corr(static_cast<size_t>(kStepRows) * width, 0.0f);
   // The result lines each tile's skinning will write (every skin), for the
   // GEMM to prefetch.
-  std::vector<char*> lines(skins.size() * width * (kStepRows / 8 + 1));
+  // Padded (to one per group of 4 features in both halves of a tile) with
+  // a line of the kernels' own scratch, so the GEMM needs no test.
+  const size_t line_slots = std::max<size_t>(skins.size() * width * (kStepRows / 8 + 1),
+                                             2 * static_cast<size_t>(depth / 4));
+  std::vector<char*> lines(line_slots, reinterpret_cast<char*>(corr.data()));
   const size_t step_floats = static_cast<size_t>(6) * depth * kL;
   const int step_lines = static_cast<int>(step_floats / 16), tile_lines = (step_lines + tiles - 1) / tiles;
   for (int s = 0; s < posedirs.steps; ++s) {
@@ -520,8 +533,10 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
     const char* next = reinterpret_cast<const char*>(a + step_floats);
     for (int t = 0; t < tiles; ++t) {
       const int t0 = t * width, nr = std::min(width, frames - t0);
+      // This tile's share of the next step's panels (past the last step:
+      // prefetches of lines nobody reads, harmless).
       const int pf_first = std::min(step_lines, t * tile_lines);
-      const int pf_lines = s + 1 < posedirs.steps ? std::min(tile_lines, step_lines - pf_first) : 0;
+      const int pf_lines = std::min(tile_lines, step_lines - pf_first);
       int pw_lines = 0;
       if (ks.tile_cols > 0) {
         const size_t lo = 3 * static_cast<size_t>(s) * kStepVertices;
@@ -537,6 +552,7 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
       if (depth > 0)
         ks.gemm(a, depth, b.data() + static_cast<size_t>(t) * depth * width, width, corr.data(),
                 next + 64 * static_cast<size_t>(pf_first), pf_lines, lines.data(), pw_lines);
+      for (int l = 0; l < pw_lines; ++l) lines[l] = reinterpret_cast<char*>(corr.data());
       for (size_t i = 0; i < skins.size(); ++i) {
         const PackedSkin& sk = *skins[i];
         const int e0 = sk.begin[s];
