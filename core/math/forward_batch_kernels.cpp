@@ -34,7 +34,7 @@ inline unsigned char laneMask(int lanes) {  // the low `lanes` (0..8) bits
 // correctives (96 values per frame: block h, component d, lane l at
 // 48 h + 16 d + l), and where each frame's 3N doubles go (out + t * ld).
 struct SkinStep {
-  const int* joints;
+  const ptrdiff_t* joints;  // 12 * joint: where each entry's transform starts
   int count;         // entries in joints
   const float* w;    // count x 32
   int first, n;      // the step's first vertex; N
@@ -56,7 +56,7 @@ struct SkinStep {
 // keeps an array of vectors in memory). The loop runs 4 features at a time
 // and on the way, per group of 4: prefetches 2 cache lines pf[...] into L2
 // (the next step's panels, while this step's are in use) and, for writing,
-// one result line pw[g] that the skinning of these frames will store (pw
+// one result line pw[g] + pw_offset that the skinning of these frames will store (pw
 // has an entry for every group: kernels' own scratch where there is none),
 // so the result's memory traffic overlaps the multiply-adds instead of
 // stalling the skinning's stores; pw entries past the groups come after.
@@ -93,7 +93,7 @@ struct SkinStep {
 
 __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
     const float* a, size_t ps, const float* b, int depth, float* corr, const char* pf,
-    char* const* pw, int pw_lines) {
+    char* const* pw, int pw_lines, ptrdiff_t pw_offset) {
   __m512 c00 = _mm512_setzero_ps(), c01 = c00, c02 = c00, c10 = c00, c11 = c00, c12 = c00,
          c20 = c00, c21 = c00, c22 = c00, c30 = c00, c31 = c00, c32 = c00, c40 = c00, c41 = c00,
          c42 = c00, c50 = c00, c51 = c00, c52 = c00, c60 = c00, c61 = c00, c62 = c00, c70 = c00,
@@ -103,7 +103,7 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
   for (int g = 0; g < groups; ++g, a0 += 4 * kL, a1 += 4 * kL, a2 += 4 * kL, b += 32) {
     _mm_prefetch(pf + 128 * g, _MM_HINT_T1);
     _mm_prefetch(pf + 128 * g + 64, _MM_HINT_T1);
-    __builtin_prefetch(pw[g], 1, 3);
+    __builtin_prefetch(pw[g] + pw_offset, 1, 3);
     SMPL_TILE48X8_FEATURE(0);
     SMPL_TILE48X8_FEATURE(1);
     SMPL_TILE48X8_FEATURE(2);
@@ -114,7 +114,7 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
                             {c40, c41, c42}, {c50, c51, c52}, {c60, c61, c62}, {c70, c71, c72}};
   for (int j = 0; j < 8; ++j)
     for (int d = 0; d < 3; ++d) _mm512_store_ps(corr + j * kStepRows + d * kL, all[j][d]);
-  for (int i = groups; i < pw_lines; ++i) __builtin_prefetch(pw[i], 1, 3);
+  for (int i = groups; i < pw_lines; ++i) __builtin_prefetch(pw[i] + pw_offset, 1, 3);
 }
 #undef SMPL_TILE48X8_FEATURE
 
@@ -124,12 +124,13 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
 // (at least 2 (depth / 4) entries, padded) prefetched.
 __attribute__((target("avx512f,fma"))) void gemmAvx512(const float* a, int depth, const float* b,
                                                        int, float* corr, const char* pf, int,
-                                                       char* const* pw, int pw_lines) {
+                                                       char* const* pw, int pw_lines,
+                                                       ptrdiff_t pw_offset) {
   const size_t ps = static_cast<size_t>(depth) * kL;
   const int groups = depth / 4, first = pw_lines < groups ? pw_lines : groups;
-  tile48x8(a, ps, b, depth, corr, pf, pw, first);
+  tile48x8(a, ps, b, depth, corr, pf, pw, first, pw_offset);
   tile48x8(a + 3 * ps, ps, b, depth, corr + 3 * kL, pf + 128 * static_cast<size_t>(groups),
-           pw + first, pw_lines - first);
+           pw + first, pw_lines - first, pw_offset);
 }
 
 // 16 vertices of one block, one frame: p = rest + c, out = M [p; 1] in
@@ -175,7 +176,7 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void finishBlock(
 // doubles); corr: the step's correctives (96 per frame); out + t*ld: frame
 // t's 3N doubles.
 __attribute__((target("avx512f,fma"))) void skinAvx512(const SkinStep& a) {
-  const int* const joints = a.joints;
+  const ptrdiff_t* const joints = a.joints;
   const float* const w = a.w;
   const float* const rest = a.rest32;
   const int count = a.count, first = a.first, frames = a.frames, k = a.k;
@@ -192,7 +193,7 @@ __attribute__((target("avx512f,fma"))) void skinAvx512(const SkinStep& a) {
            ma0 = m00, ma1 = m00, mb0 = m00, mb1 = m00;
     for (int e = 0; e < count; ++e) {
       const __m512 w0 = _mm512_load_ps(w + 32 * e), w1 = _mm512_load_ps(w + 32 * e + 16);
-      const float* tj = tr + joints[e] * 12;
+      const float* tj = tr + joints[e];
       __m512 s = _mm512_set1_ps(tj[0]);
       m00 = _mm512_fmadd_ps(w0, s, m00), m01 = _mm512_fmadd_ps(w1, s, m01);
       s = _mm512_set1_ps(tj[1]);
@@ -264,11 +265,13 @@ __attribute__((target("avx2,fma"), always_inline)) inline void tile16x6(const fl
 // for writing a sixth before each panel.
 __attribute__((target("avx2,fma"))) void gemmAvx2(const float* a, int depth, const float* b, int,
                                                   float* corr, const char* pf, int pf_lines,
-                                                  char* const* pw, int pw_lines) {
+                                                  char* const* pw, int pw_lines,
+                                                  ptrdiff_t pw_offset) {
   for (int l = 0; l < pf_lines; ++l) _mm_prefetch(pf + 64 * l, _MM_HINT_T1);
   const size_t ps = static_cast<size_t>(depth) * kL;
   for (int q = 0; q < 6; ++q) {
-    for (int l = q * pw_lines / 6; l < (q + 1) * pw_lines / 6; ++l) __builtin_prefetch(pw[l], 1, 3);
+    for (int l = q * pw_lines / 6; l < (q + 1) * pw_lines / 6; ++l)
+      __builtin_prefetch(pw[l] + pw_offset, 1, 3);
     tile16x6(a + q * ps, b, depth, corr + kL * q);
   }
 }
@@ -285,7 +288,7 @@ inline void transformVertex(const float* m, size_t stride, double x, double y, d
 // 8 vertices per step of the loop, 12 blended entries in 12 named
 // registers; the transform one vertex at a time.
 __attribute__((target("avx2,fma"))) void skinAvx2(const SkinStep& a) {
-  const int* const joints = a.joints;
+  const ptrdiff_t* const joints = a.joints;
   const float* const w = a.w;
   const int count = a.count, first = a.first, frames = a.frames, k = a.k;
   const float* const corr = a.corr;
@@ -303,7 +306,7 @@ __attribute__((target("avx2,fma"))) void skinAvx2(const SkinStep& a) {
              m7 = m0, m8 = m0, m9 = m0, m10 = m0, m11 = m0;
       for (int e = 0; e < count; ++e) {
         const __m256 wj = _mm256_load_ps(w + 32 * e + 8 * g);
-        const float* tj = tr + joints[e] * 12;
+        const float* tj = tr + joints[e];
         m0 = _mm256_fmadd_ps(wj, _mm256_broadcast_ss(tj + 0), m0);
         m1 = _mm256_fmadd_ps(wj, _mm256_broadcast_ss(tj + 1), m1);
         m2 = _mm256_fmadd_ps(wj, _mm256_broadcast_ss(tj + 2), m2);
@@ -333,7 +336,7 @@ __attribute__((target("avx2,fma"))) void skinAvx2(const SkinStep& a) {
 
 // b is one tile of all `cols` frames (b[cols * p + j]).
 void gemmPortable(const float* a, int depth, const float* b, int cols, float* corr, const char*,
-                  int, char* const*, int) {
+                  int, char* const*, int, ptrdiff_t) {
   const size_t ps = static_cast<size_t>(depth) * kL;
   const Eigen::Map<const Eigen::MatrixXf> ft(b, cols, depth);  // frames x features
   for (int q = 0; q < 6; ++q) {
@@ -353,7 +356,7 @@ void skinPortable(const SkinStep& a) {
       for (int e = 0; e < a.count; ++e) {
         const float wl = a.w[32 * e + l];
         if (wl == 0.0f) continue;
-        const float* tj = tr + a.joints[e] * 12;
+        const float* tj = tr + a.joints[e];
         for (int q = 0; q < 12; ++q) m[q] += wl * tj[q];
       }
       const int at = 3 * kL * (l / kL) + l % kL;  // x of lane l in corr and rest
@@ -368,7 +371,7 @@ void skinPortable(const SkinStep& a) {
 // ---------------------------------------------------------------- dispatch
 
 using GemmFn = void (*)(const float*, int, const float*, int, float*, const char*, int,
-                        char* const*, int);
+                        char* const*, int, ptrdiff_t);
 using SkinFn = void (*)(const SkinStep&);
 struct KernelSet {
   GemmFn gemm;
@@ -493,6 +496,7 @@ PackedSkin packSkin(const double* weights, int vertices, int joints) {
       if (nonzero == 0) continue;
       s.nonzeros += nonzero;
       s.joints.push_back(j);
+      s.offsets.push_back(12 * static_cast<ptrdiff_t>(j));
       s.w.insert(s.w.end(), w, w + kStepVertices);
     }
     s.begin.push_back(static_cast<int>(s.joints.size()));
@@ -520,14 +524,32 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
   // panels are prefetched a share per tile.
   AlignedVector<float> corr(static_cast<size_t>(kStepRows) * width, 0.0f);
   // The result lines each tile's skinning will write (every skin), for the
-  // GEMM to prefetch.
-  // Padded (to one per group of 4 features in both halves of a tile) with
-  // a line of the kernels' own scratch, so the GEMM needs no test.
-  const size_t line_slots = std::max<size_t>(skins.size() * width * (kStepRows / 8 + 1),
-                                             2 * static_cast<size_t>(depth / 4));
-  std::vector<char*> lines(line_slots, reinterpret_cast<char*>(corr.data()));
+  // GEMM to prefetch: listed for the first step, step s's are 96 doubles
+  // further on (the same count: a column's alignment is the same for every
+  // step; the last step's extra lines are prefetches nobody needs). Padded
+  // to one per group of 4 features in both halves of a tile with the
+  // tile's last line, so the GEMM needs no test.
+  const size_t per_tile = std::max<size_t>(skins.size() * width * (kStepRows / 8 + 1),
+                                           2 * static_cast<size_t>(depth / 4));
+  std::vector<char*> lines(ks.tile_cols > 0 ? tiles * per_tile : 0);
+  std::vector<int> line_count(tiles, 0);
+  for (int t = 0; t < tiles && ks.tile_cols > 0; ++t) {
+    char** list = lines.data() + t * per_tile;
+    const int t0 = t * width, nr = std::min(width, frames - t0);
+    int count = 0;
+    for (size_t i = 0; i < skins.size(); ++i)
+      for (int j = 0; j < nr; ++j) {
+        const uintptr_t col = reinterpret_cast<uintptr_t>(out[i] + (t0 + j) * ld);
+        for (uintptr_t l = col & ~uintptr_t(63); l < col + 8 * kStepRows; l += 64)
+          list[count++] = reinterpret_cast<char*>(l);
+      }
+    line_count[t] = count;
+    for (size_t l = count; l < per_tile; ++l)
+      list[l] = count > 0 ? list[count - 1] : reinterpret_cast<char*>(corr.data());
+  }
   const size_t step_floats = static_cast<size_t>(6) * depth * kL;
-  const int step_lines = static_cast<int>(step_floats / 16), tile_lines = (step_lines + tiles - 1) / tiles;
+  const int step_lines = static_cast<int>(step_floats / 16),
+            tile_lines = (step_lines + tiles - 1) / tiles;
   for (int s = 0; s < posedirs.steps; ++s) {
     const float* a = posedirs.data.data() + s * step_floats;
     const char* next = reinterpret_cast<const char*>(a + step_floats);
@@ -537,27 +559,17 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
       // prefetches of lines nobody reads, harmless).
       const int pf_first = std::min(step_lines, t * tile_lines);
       const int pf_lines = std::min(tile_lines, step_lines - pf_first);
-      int pw_lines = 0;
-      if (ks.tile_cols > 0) {
-        const size_t lo = 3 * static_cast<size_t>(s) * kStepVertices;
-        const size_t hi = 3 * static_cast<size_t>(std::min(n, (s + 1) * kStepVertices));
-        for (size_t i = 0; i < skins.size(); ++i)
-          for (int j = 0; j < nr; ++j) {
-            const uintptr_t col = reinterpret_cast<uintptr_t>(out[i] + (t0 + j) * ld);
-            const uintptr_t end = col + 8 * hi;
-            for (uintptr_t l = (col + 8 * lo) & ~uintptr_t(63); l < end; l += 64)
-              lines[pw_lines++] = reinterpret_cast<char*>(l);
-          }
-      }
+      const ptrdiff_t pw_offset = line_count[t] > 0 ? 8 * kStepRows * static_cast<ptrdiff_t>(s) : 0;
       if (depth > 0)
         ks.gemm(a, depth, b.data() + static_cast<size_t>(t) * depth * width, width, corr.data(),
-                next + 64 * static_cast<size_t>(pf_first), pf_lines, lines.data(), pw_lines);
-      for (int l = 0; l < pw_lines; ++l) lines[l] = reinterpret_cast<char*>(corr.data());
+                next + 64 * static_cast<size_t>(pf_first), pf_lines,
+                ks.tile_cols > 0 ? lines.data() + t * per_tile : nullptr, line_count[t],
+                pw_offset);
       for (size_t i = 0; i < skins.size(); ++i) {
         const PackedSkin& sk = *skins[i];
         const int e0 = sk.begin[s];
         SkinStep step;
-        step.joints = sk.joints.data() + e0;
+        step.joints = sk.offsets.data() + e0;
         step.count = sk.begin[s + 1] - e0;
         step.w = sk.w.data() + static_cast<size_t>(e0) * kStepVertices;
         step.first = s * kStepVertices;

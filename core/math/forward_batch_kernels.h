@@ -110,6 +110,7 @@ PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth);
 // (vertices past N zero).
 struct PackedSkin {
   std::vector<int> joints, begin;
+  std::vector<ptrdiff_t> offsets;  // 12 * joints[e]: where entry e's transform starts
   AlignedVector<float> w;
   long long nonzeros = 0;  // non-zero weights in the matrix (the cost model's count)
 };
