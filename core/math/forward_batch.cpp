@@ -8,6 +8,7 @@ namespace smpl {
 namespace {
 
 
+
 // Pose features and the top 3x4 rows of A_k = G_k [I | -J_k] of one frame,
 // in double, written as float: f (P values, row-major vec(R_k - I) for
 // k = 1..K-1, zero past 9(K-1)) and a (K x 12, joint by joint, row by row).
@@ -79,7 +80,10 @@ void run(const BodyModel& model, const BatchInput& in,
          const std::vector<Eigen::MatrixXd*>& out) {
   const int n = model.numVertices(), frames = static_cast<int>(in.frames->size());
   for (Eigen::MatrixXd* o : out)
-    if (o->rows() != 3 * n || o->cols() != frames) o->resize(3 * n, frames);
+    if (o->rows() != 3 * n || o->cols() != frames) {
+      o->resize(3 * n, frames);  // not touched yet: Eigen does not initialise
+      batch::adviseHugePages(o->data(), static_cast<size_t>(o->size()) * sizeof(double));
+    }
   if (frames == 0 || n == 0) return;
   std::vector<batch::PackedSkin> packed;
   packed.reserve(weights.size());

@@ -16,6 +16,10 @@
 #include <cstdint>
 #include <cstring>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace smpl {
 namespace batch {
 namespace {
@@ -118,19 +122,27 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
 }
 #undef SMPL_TILE48X8_FEATURE
 
-// One tile of 8 frames of the step's correctives: corr[j * 96 + r] for
-// frame j of the tile (b: depth x 8), r = 48 h + 16 d + lane; on the way,
-// 4 lines per 4 features from pf on (tile48x8) and the result lines pw[]
-// (at least 2 (depth / 4) entries, padded) prefetched.
+// The step's correctives for `tiles` tiles of 8 frames: corr[t * 96 + r]
+// for frame t (b: tile after tile, depth x 8 each), r = 48 h + 16 d + lane.
+// Block by block (h), so a block's 3 panels (40 KB) stay in L1 while the
+// tiles' features pass. On the way, a share of the pf_lines lines from pf
+// (the next step's panels) and of the pw_lines result lines pw[] + pw_offset
+// (padded with at least depth / 4 entries) per tile48x8.
 __attribute__((target("avx512f,fma"))) void gemmAvx512(const float* a, int depth, const float* b,
-                                                       int, float* corr, const char* pf, int,
-                                                       char* const* pw, int pw_lines,
-                                                       ptrdiff_t pw_offset) {
+                                                       int tiles, float* corr, const char* pf,
+                                                       int pf_lines, char* const* pw,
+                                                       int pw_lines, ptrdiff_t pw_offset) {
   const size_t ps = static_cast<size_t>(depth) * kL;
-  const int groups = depth / 4, first = pw_lines < groups ? pw_lines : groups;
-  tile48x8(a, ps, b, depth, corr, pf, pw, first, pw_offset);
-  tile48x8(a + 3 * ps, ps, b, depth, corr + 3 * kL, pf + 128 * static_cast<size_t>(groups),
-           pw + first, pw_lines - first, pw_offset);
+  const int calls = 2 * tiles;
+  const int pf_share = (pf_lines + calls - 1) / calls, pw_share = (pw_lines + calls - 1) / calls;
+  for (int h = 0, call = 0; h < 2; ++h)
+    for (int t = 0; t < tiles; ++t, ++call) {
+      const int w0 = imin(pw_lines, call * pw_share), f0 = imin(pf_lines, call * pf_share);
+      tile48x8(a + 3 * h * ps, ps, b + static_cast<size_t>(t) * depth * 8, depth,
+               corr + static_cast<size_t>(t) * 8 * kStepRows + 3 * kL * h,
+               pf + 64 * static_cast<size_t>(f0), pw + w0, imin(pw_share, pw_lines - w0),
+               pw_offset);
+    }
 }
 
 // 16 vertices of one block, one frame: p = rest + c, out = M [p; 1] in
@@ -260,19 +272,22 @@ __attribute__((target("avx2,fma"), always_inline)) inline void tile16x6(const fl
   }
 }
 
-// One tile of 6 frames (b: depth x 6) of the step's 96 rows, panel by
-// panel; the next step's lines are prefetched first, the result lines pw[]
-// for writing a sixth before each panel.
-__attribute__((target("avx2,fma"))) void gemmAvx2(const float* a, int depth, const float* b, int,
-                                                  float* corr, const char* pf, int pf_lines,
-                                                  char* const* pw, int pw_lines,
+// The step's 96 rows for `tiles` tiles of 6 frames (b: depth x 6 each),
+// panel by panel (a panel, 13 KB, stays in L1 over the tiles); before each
+// panel a sixth of the next step's lines pf and of the result lines pw[].
+__attribute__((target("avx2,fma"))) void gemmAvx2(const float* a, int depth, const float* b,
+                                                  int tiles, float* corr, const char* pf,
+                                                  int pf_lines, char* const* pw, int pw_lines,
                                                   ptrdiff_t pw_offset) {
-  for (int l = 0; l < pf_lines; ++l) _mm_prefetch(pf + 64 * l, _MM_HINT_T1);
   const size_t ps = static_cast<size_t>(depth) * kL;
   for (int q = 0; q < 6; ++q) {
+    for (int l = q * pf_lines / 6; l < (q + 1) * pf_lines / 6; ++l)
+      _mm_prefetch(pf + 64 * l, _MM_HINT_T1);
     for (int l = q * pw_lines / 6; l < (q + 1) * pw_lines / 6; ++l)
       __builtin_prefetch(pw[l] + pw_offset, 1, 3);
-    tile16x6(a + q * ps, b, depth, corr + kL * q);
+    for (int t = 0; t < tiles; ++t)
+      tile16x6(a + q * ps, b + static_cast<size_t>(t) * depth * 6, depth,
+               corr + static_cast<size_t>(t) * 6 * kStepRows + kL * q);
   }
 }
 
@@ -439,6 +454,19 @@ const char* kernelsName(Kernels kernels) {
   return "?";
 }
 
+void adviseHugePages(void* data, size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr uintptr_t kHuge = uintptr_t{2} << 20;
+  if (data == nullptr || bytes < 2 * kHuge) return;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kHuge - 1);
+  if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
 PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth) {
   PackedPosedirs a;
   a.vertices = vertices;
@@ -446,6 +474,7 @@ PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth) {
   a.steps = (vertices + kStepVertices - 1) / kStepVertices;
   const int blocks = 2 * a.steps;
   a.data.resize(static_cast<size_t>(blocks) * 3 * depth * kL);  // every element written below
+  adviseHugePages(a.data.data(), a.data.size() * sizeof(float));
   const size_t rows = 3 * static_cast<size_t>(vertices);
   // Feature by feature: each posedirs column is read in order, and each
   // destination write is one whole cache line (16 floats).
@@ -519,52 +548,40 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
     const float* f = block.features + static_cast<size_t>(t) * depth;
     for (int p = 0; p < depth; ++p) tile[static_cast<size_t>(p) * width] = f[p];
   }
-  // Tile by tile: the GEMM of a tile's frames, then their skinning, so the
-  // result's stores overlap the next tile's arithmetic; the next step's
-  // panels are prefetched a share per tile.
-  AlignedVector<float> corr(static_cast<size_t>(kStepRows) * width, 0.0f);
-  // The result lines each tile's skinning will write (every skin), for the
-  // GEMM to prefetch: listed for the first step, step s's are 96 doubles
-  // further on (the same count: a column's alignment is the same for every
-  // step; the last step's extra lines are prefetches nobody needs). Padded
-  // to one per group of 4 features in both halves of a tile with the
-  // tile's last line, so the GEMM needs no test.
-  const size_t per_tile = std::max<size_t>(skins.size() * width * (kStepRows / 8 + 1),
-                                           2 * static_cast<size_t>(depth / 4));
-  std::vector<char*> lines(ks.tile_cols > 0 ? tiles * per_tile : 0);
-  std::vector<int> line_count(tiles, 0);
-  for (int t = 0; t < tiles && ks.tile_cols > 0; ++t) {
-    char** list = lines.data() + t * per_tile;
-    const int t0 = t * width, nr = std::min(width, frames - t0);
-    int count = 0;
+  // Step by step: the GEMM of all frames, then their skinning.
+  AlignedVector<float> corr(static_cast<size_t>(kStepRows) * cols, 0.0f);
+  // The result lines the step's skinning will write (every skin and frame),
+  // prefetched for writing by the step's GEMM so the result's memory
+  // traffic overlaps the multiply-adds instead of stalling the skinning's
+  // stores. Listed for the first step; step s's are 96 doubles further on
+  // (the same count: a column's alignment is the same for every step; the
+  // last step's extra lines are prefetches nobody needs). Padded with
+  // depth / 4 + 1 copies of the last line, so the GEMM tiles need no test.
+  std::vector<char*> lines;
+  if (ks.tile_cols > 0) {
     for (size_t i = 0; i < skins.size(); ++i)
-      for (int j = 0; j < nr; ++j) {
-        const uintptr_t col = reinterpret_cast<uintptr_t>(out[i] + (t0 + j) * ld);
+      for (int t = 0; t < frames; ++t) {
+        const uintptr_t col = reinterpret_cast<uintptr_t>(out[i] + t * ld);
         for (uintptr_t l = col & ~uintptr_t(63); l < col + 8 * kStepRows; l += 64)
-          list[count++] = reinterpret_cast<char*>(l);
+          lines.push_back(reinterpret_cast<char*>(l));
       }
-    line_count[t] = count;
-    for (size_t l = count; l < per_tile; ++l)
-      list[l] = count > 0 ? list[count - 1] : reinterpret_cast<char*>(corr.data());
   }
+  const int line_count = static_cast<int>(lines.size());
+  lines.resize(lines.size() + depth / 4 + 1,
+               line_count > 0 ? lines.back() : reinterpret_cast<char*>(corr.data()));
   const size_t step_floats = static_cast<size_t>(6) * depth * kL;
-  const int step_lines = static_cast<int>(step_floats / 16),
-            tile_lines = (step_lines + tiles - 1) / tiles;
+  const int step_lines = static_cast<int>(step_floats / 16);
   for (int s = 0; s < posedirs.steps; ++s) {
     const float* a = posedirs.data.data() + s * step_floats;
+    // The next step's panels (past the last step: prefetches of lines
+    // nobody reads, harmless).
     const char* next = reinterpret_cast<const char*>(a + step_floats);
-    for (int t = 0; t < tiles; ++t) {
-      const int t0 = t * width, nr = std::min(width, frames - t0);
-      // This tile's share of the next step's panels (past the last step:
-      // prefetches of lines nobody reads, harmless).
-      const int pf_first = std::min(step_lines, t * tile_lines);
-      const int pf_lines = std::min(tile_lines, step_lines - pf_first);
-      const ptrdiff_t pw_offset = line_count[t] > 0 ? 8 * kStepRows * static_cast<ptrdiff_t>(s) : 0;
-      if (depth > 0)
-        ks.gemm(a, depth, b.data() + static_cast<size_t>(t) * depth * width, width, corr.data(),
-                next + 64 * static_cast<size_t>(pf_first), pf_lines,
-                ks.tile_cols > 0 ? lines.data() + t * per_tile : nullptr, line_count[t],
-                pw_offset);
+    const ptrdiff_t pw_offset = line_count > 0 ? 8 * kStepRows * static_cast<ptrdiff_t>(s) : 0;
+    if (depth > 0)
+      ks.gemm(a, depth, b.data(), ks.tile_cols > 0 ? tiles : cols, corr.data(), next, step_lines,
+              lines.data(), line_count, pw_offset);
+    {
+      const int t0 = 0, nr = frames;
       for (size_t i = 0; i < skins.size(); ++i) {
         const PackedSkin& sk = *skins[i];
         const int e0 = sk.begin[s];
@@ -576,7 +593,7 @@ void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const Packe
         step.n = n;
         step.rest64 = rest.f64.data() + static_cast<size_t>(s) * kStepRows;
         step.rest32 = rest.f32.data() + static_cast<size_t>(s) * kStepRows;
-        step.corr = corr.data();
+        step.corr = corr.data() + static_cast<size_t>(t0) * kStepRows;
         step.frames = nr;
         step.transforms = block.transforms + static_cast<size_t>(t0) * block.joints * 12;
         step.k = block.joints;

@@ -88,6 +88,14 @@ struct Aligned64 {
 template <typename T>
 using AlignedVector = std::vector<T, Aligned64<T>>;
 
+// Large fresh buffers (a 169 MB result for 1024 SMPL frames, packed
+// posedirs) are first touched one 4 KiB page at a time: a page fault each,
+// about as much time as the arithmetic. This asks Linux for transparent
+// huge pages on the buffer's 2 MiB-aligned interior (as core/io/huge_pages.h
+// does for decoded model arrays; core/math may not include core/io), so it
+// faults 512 times less often. Only advice; call it before the first write.
+void adviseHugePages(void* data, size_t bytes);
+
 constexpr int kBlockVertices = 16;                   // vertices per panel
 constexpr int kStepVertices = 2 * kBlockVertices;    // vertices per step
 constexpr int kStepRows = 3 * kStepVertices;         // corrective rows per step (96)
