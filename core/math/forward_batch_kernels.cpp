@@ -361,23 +361,28 @@ void gemmPortable(const float* a, int depth, const float* b, int cols, float* co
   }
 }
 
+// The blend joint by joint over the step's 32 lanes (loops the compiler
+// vectorises with the baseline instruction set), then each vertex in double.
 void skinPortable(const SkinStep& a) {
   const int valid = std::min(kStepVertices, a.n - a.first);
   for (int t = 0; t < a.frames; ++t) {
     const float* tr = a.transforms + static_cast<size_t>(t) * a.k * 12;
     const float* c = a.corr + static_cast<size_t>(t) * kStepRows;
-    for (int l = 0; l < valid; ++l) {
-      float m[12] = {};
-      for (int e = 0; e < a.count; ++e) {
-        const float wl = a.w[32 * e + l];
-        if (wl == 0.0f) continue;
-        const float* tj = tr + a.joints[e];
-        for (int q = 0; q < 12; ++q) m[q] += wl * tj[q];
+    alignas(64) float m[12][kStepVertices] = {};
+    for (int e = 0; e < a.count; ++e) {
+      const float* we = a.w + kStepVertices * e;
+      const float* tj = tr + a.joints[e];
+      for (int q = 0; q < 12; ++q) {
+        const float tq = tj[q];
+        for (int l = 0; l < kStepVertices; ++l) m[q][l] += we[l] * tq;
       }
+    }
+    for (int l = 0; l < valid; ++l) {
       const int at = 3 * kL * (l / kL) + l % kL;  // x of lane l in corr and rest
       const float* cl = c + at;
       const double* rl = a.rest64 + at;
-      transformVertex(m, 1, rl[0] + cl[0], rl[kL] + cl[kL], rl[2 * kL] + cl[2 * kL],
+      transformVertex(&m[0][l], kStepVertices, rl[0] + cl[0], rl[kL] + cl[kL],
+                      rl[2 * kL] + cl[2 * kL],
                       a.out + static_cast<size_t>(t) * a.ld + 3 * (a.first + l));
     }
   }
