@@ -3,17 +3,19 @@
 // the skinning one (N x K)(K x 12) product per frame. Same math as forward()
 // (tests compare them); for benchmarks and bulk evaluation. The corrective
 // GEMM and the blend of the joint transforms run in single precision (twice
-// the SIMD width, half the memory traffic of posedirs), the final position in
-// double: together they add < 1e-6 m, about float32 file precision. The loops
-// are core/math/forward_batch_kernels.h: AVX-512, AVX2 or portable kernels,
-// the widest the CPU runs unless BatchInput::kernels says otherwise.
+// the SIMD width, half the memory traffic of posedirs), the final transform
+// in double (in float, widened, with the AVX-512 kernels), the result in
+// double: together < 1e-6 m from forward(), about float32 file precision.
+// The loops are core/math/forward_batch_kernels.h: AVX-512, AVX2 or
+// portable kernels, the widest the CPU runs unless BatchInput::kernels says
+// otherwise.
 //
 // Per frame of the 6890-vertex SMPL layout that is 6.35 M multiply-adds
 // (dense weights); smpl-bench --compare prints ours against that count at
 // the machine's measured multiply-add peak. Besides them, per frame: the
-// kinematic chain and pose features (O(K), in double), and writing the 3N
-// doubles of the result; once per call: packing posedirs and the weights
-// into float (48 bytes per vertex and feature read, 12 written).
+// kinematic chain and pose features (O(K), in double) and writing the 3N
+// doubles of the result; per call: packing the weights and the rest mesh,
+// and posedirs unless BatchInput::posedirs is given.
 #pragma once
 
 #include <Eigen/Core>

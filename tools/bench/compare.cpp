@@ -360,18 +360,19 @@ void compareForward(const BodyModel& model, const CompareOptions& o, const std::
   const double pack_ms = 1e3 * (threadCpuSeconds() - pack_start);
   BatchInput prepared = in;
   prepared.posedirs = &packed;
-  Eigen::MatrixXd result;
-  const double ours = bestMsPerFrame([&] { forwardBatch(model, prepared, &result); });
-  const double fresh = bestMsPerFrame([&] { (void)forwardBatch(model, in); });
   // The limit: the multiply-adds of one frame (corrective product 3N P, the
   // blend 12 per non-zero weight, the final transform 12 per vertex) at the
-  // measured multiply-add peak of the kernel set forwardBatch runs.
+  // measured multiply-add peak of the kernel set forwardBatch runs, measured
+  // just before our row (a core's clock follows the load on the others).
   const Kernels kernels = batch::resolveKernels(in.kernels);
   const double n = model.numVertices(), p = model.numPoseFeatures();
   const double nonzero = static_cast<double>((model.weights.array() != 0.0).count());
   const double madds = 3 * n * p + 12 * nonzero + 12 * n;
   const double peak = measurePeak(kernels);
   const double limit = 1e3 * madds / peak;
+  Eigen::MatrixXd result;
+  const double ours = bestMsPerFrame([&] { forwardBatch(model, prepared, &result); });
+  const double fresh = bestMsPerFrame([&] { (void)forwardBatch(model, in); });
   if (o.smplx.empty()) {
     row("forward, CPU ms/frame, 1 thread", fmt("%.3f ms", ours), "smplx: absent (--smplx PATH)",
         "-");

@@ -153,6 +153,26 @@ TEST(ForwardBatch, FullSizeSmplLayoutWithinMicrometre) {
   }
 }
 
+// Every small fixture (SMPL 288 vertices, SMPL-H, SMPL-X 660, MANO 192;
+// their weights have up to 6 influences), shaped, 13 frames (tails of the
+// 8- and 6-frame tiles), every kernel set.
+TEST(ForwardBatch, EverySmallFixtureEveryKernel) {
+  for (const char* name : {"smpl_small", "smplh_small", "smplx_small", "mano_small"}) {
+    Result<BodyModel> model =
+        loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/" + name + ".npz");
+    ASSERT_TRUE(model.ok()) << name << ": " << model.message();
+    const Eigen::VectorXd betas = Eigen::VectorXd::LinSpaced(4, -1, 1);
+    Result<ShapedBody> body = shapeBody(*model, betas);
+    ASSERT_TRUE(body.ok()) << name;
+    const std::vector<Rotations> frames = randomFrames(model->numJoints(), 13, 21);
+    for (Kernels kernels : batch::supportedKernels()) {
+      BatchInput in{&*body, &frames, nullptr, 1, 64, kernels};
+      EXPECT_LT(maxErrorVsForward(*model, betas, frames, nullptr, forwardBatch(*model, in)), 1e-6)
+          << name << ", kernels " << batch::kernelsName(kernels);
+    }
+  }
+}
+
 // Vertex counts around the 16-vertex blocks and 32-vertex steps and frame
 // counts around the register tiles (8 frames AVX-512, 6 AVX2), dense and
 // sparse weights (3 influences, single influences, a vertex with none),
@@ -211,7 +231,9 @@ TEST(ForwardBatch, KernelRequestsResolveToSetsTheCpuRuns) {
 
 // Writing into a caller's matrix: every element is written (a NaN-filled
 // matrix of the right shape comes back equal to a fresh result), and the
-// skins of forwardBatchSkins equal one forwardBatch per weight matrix.
+// skins of forwardBatchSkins equal one forwardBatch per weight matrix; a
+// posedirs packing made once (BatchInput::posedirs) gives the same result,
+// and one of another model's size is ignored.
 TEST(ForwardBatch, IntoExistingMatrixAndSeveralSkinsMatchFreshResults) {
   const BodyModel model = smplLayoutTestModel(70, /*sparse_weights=*/false);
   const Eigen::MatrixXd sparse = smplLayoutTestModel(70, /*sparse_weights=*/true).weights;
@@ -232,6 +254,13 @@ TEST(ForwardBatch, IntoExistingMatrixAndSeveralSkinsMatchFreshResults) {
     in.weights = &sparse;
     EXPECT_TRUE(skins[1] == forwardBatch(model, in)) << batch::kernelsName(kernels);
     EXPECT_LT(maxErrorVsForward(model, Eigen::VectorXd(), frames, &sparse, skins[1]), 1e-6);
+    in.weights = nullptr;
+    const batch::PackedPosedirs packed = packPosedirs(model);
+    in.posedirs = &packed;
+    EXPECT_TRUE(forwardBatch(model, in) == fresh) << batch::kernelsName(kernels);
+    const batch::PackedPosedirs other = packPosedirs(smplLayoutTestModel(40, false));
+    in.posedirs = &other;
+    EXPECT_TRUE(forwardBatch(model, in) == fresh) << batch::kernelsName(kernels);
   }
 }
 
