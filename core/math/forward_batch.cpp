@@ -7,14 +7,12 @@
 namespace smpl {
 namespace {
 
-
-
 // Pose features and the top 3x4 rows of A_k = G_k [I | -J_k] of one frame,
 // in double, written as float: f (P values, row-major vec(R_k - I) for
 // k = 1..K-1, zero past 9(K-1)) and a (K x 12, joint by joint, row by row).
 // world: 12 K doubles of scratch (each joint's world rotation and origin).
-void frameInputs(const std::vector<int>& parents, const Rotations& rot, const double* joints,
-                 int p, double* world, float* f, float* a) {
+void frameInputs(const std::vector<int>& parents, const Rotations& rot, const double* joints, int p,
+                 double* world, float* f, float* a) {
   const int k = static_cast<int>(parents.size());
   for (int i = 0; i < p; ++i) f[i] = 0.0f;
   for (int j = 1; j < k; ++j)

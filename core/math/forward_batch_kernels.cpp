@@ -39,9 +39,9 @@ inline unsigned char laneMask(int lanes) {  // the low `lanes` (0..8) bits
 // 48 h + 16 d + l), and where each frame's 3N doubles go (out + t * ld).
 struct SkinStep {
   const ptrdiff_t* joints;  // 12 * joint: where each entry's transform starts
-  int count;         // entries in joints
-  const float* w;    // count x 32
-  int first, n;      // the step's first vertex; N
+  int count;                // entries in joints
+  const float* w;           // count x 32
+  int first, n;             // the step's first vertex; N
   const double* rest64;
   const float* rest32;
   const float* corr;  // frames x 96
@@ -64,35 +64,35 @@ struct SkinStep {
 // has an entry for every group: kernels' own scratch where there is none),
 // so the result's memory traffic overlaps the multiply-adds instead of
 // stalling the skinning's stores; pw entries past the groups come after.
-#define SMPL_TILE48X8_FEATURE(o)                                                              \
-  do {                                                                                        \
-    const __m512 x0 = _mm512_load_ps(a0 + (o) * kL), x1 = _mm512_load_ps(a1 + (o) * kL),      \
-                 x2 = _mm512_load_ps(a2 + (o) * kL);                                          \
-    const float* bo = b + 8 * (o);                                                            \
-    __m512 s = _mm512_set1_ps(bo[0]);                                                         \
-    c00 = _mm512_fmadd_ps(x0, s, c00), c01 = _mm512_fmadd_ps(x1, s, c01);                     \
-    c02 = _mm512_fmadd_ps(x2, s, c02);                                                        \
-    s = _mm512_set1_ps(bo[1]);                                                                \
-    c10 = _mm512_fmadd_ps(x0, s, c10), c11 = _mm512_fmadd_ps(x1, s, c11);                     \
-    c12 = _mm512_fmadd_ps(x2, s, c12);                                                        \
-    s = _mm512_set1_ps(bo[2]);                                                                \
-    c20 = _mm512_fmadd_ps(x0, s, c20), c21 = _mm512_fmadd_ps(x1, s, c21);                     \
-    c22 = _mm512_fmadd_ps(x2, s, c22);                                                        \
-    s = _mm512_set1_ps(bo[3]);                                                                \
-    c30 = _mm512_fmadd_ps(x0, s, c30), c31 = _mm512_fmadd_ps(x1, s, c31);                     \
-    c32 = _mm512_fmadd_ps(x2, s, c32);                                                        \
-    s = _mm512_set1_ps(bo[4]);                                                                \
-    c40 = _mm512_fmadd_ps(x0, s, c40), c41 = _mm512_fmadd_ps(x1, s, c41);                     \
-    c42 = _mm512_fmadd_ps(x2, s, c42);                                                        \
-    s = _mm512_set1_ps(bo[5]);                                                                \
-    c50 = _mm512_fmadd_ps(x0, s, c50), c51 = _mm512_fmadd_ps(x1, s, c51);                     \
-    c52 = _mm512_fmadd_ps(x2, s, c52);                                                        \
-    s = _mm512_set1_ps(bo[6]);                                                                \
-    c60 = _mm512_fmadd_ps(x0, s, c60), c61 = _mm512_fmadd_ps(x1, s, c61);                     \
-    c62 = _mm512_fmadd_ps(x2, s, c62);                                                        \
-    s = _mm512_set1_ps(bo[7]);                                                                \
-    c70 = _mm512_fmadd_ps(x0, s, c70), c71 = _mm512_fmadd_ps(x1, s, c71);                     \
-    c72 = _mm512_fmadd_ps(x2, s, c72);                                                        \
+#define SMPL_TILE48X8_FEATURE(o)                                                     \
+  do {                                                                               \
+    const __m512 x0 = _mm512_load_ps(a0 + (o)*kL), x1 = _mm512_load_ps(a1 + (o)*kL), \
+                 x2 = _mm512_load_ps(a2 + (o)*kL);                                   \
+    const float* bo = b + 8 * (o);                                                   \
+    __m512 s = _mm512_set1_ps(bo[0]);                                                \
+    c00 = _mm512_fmadd_ps(x0, s, c00), c01 = _mm512_fmadd_ps(x1, s, c01);            \
+    c02 = _mm512_fmadd_ps(x2, s, c02);                                               \
+    s = _mm512_set1_ps(bo[1]);                                                       \
+    c10 = _mm512_fmadd_ps(x0, s, c10), c11 = _mm512_fmadd_ps(x1, s, c11);            \
+    c12 = _mm512_fmadd_ps(x2, s, c12);                                               \
+    s = _mm512_set1_ps(bo[2]);                                                       \
+    c20 = _mm512_fmadd_ps(x0, s, c20), c21 = _mm512_fmadd_ps(x1, s, c21);            \
+    c22 = _mm512_fmadd_ps(x2, s, c22);                                               \
+    s = _mm512_set1_ps(bo[3]);                                                       \
+    c30 = _mm512_fmadd_ps(x0, s, c30), c31 = _mm512_fmadd_ps(x1, s, c31);            \
+    c32 = _mm512_fmadd_ps(x2, s, c32);                                               \
+    s = _mm512_set1_ps(bo[4]);                                                       \
+    c40 = _mm512_fmadd_ps(x0, s, c40), c41 = _mm512_fmadd_ps(x1, s, c41);            \
+    c42 = _mm512_fmadd_ps(x2, s, c42);                                               \
+    s = _mm512_set1_ps(bo[5]);                                                       \
+    c50 = _mm512_fmadd_ps(x0, s, c50), c51 = _mm512_fmadd_ps(x1, s, c51);            \
+    c52 = _mm512_fmadd_ps(x2, s, c52);                                               \
+    s = _mm512_set1_ps(bo[6]);                                                       \
+    c60 = _mm512_fmadd_ps(x0, s, c60), c61 = _mm512_fmadd_ps(x1, s, c61);            \
+    c62 = _mm512_fmadd_ps(x2, s, c62);                                               \
+    s = _mm512_set1_ps(bo[7]);                                                       \
+    c70 = _mm512_fmadd_ps(x0, s, c70), c71 = _mm512_fmadd_ps(x1, s, c71);            \
+    c72 = _mm512_fmadd_ps(x2, s, c72);                                               \
   } while (0)
 
 __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
@@ -130,8 +130,8 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void tile48x8(
 // (padded with at least depth / 4 entries) per tile48x8.
 __attribute__((target("avx512f,fma"))) void gemmAvx512(const float* a, int depth, const float* b,
                                                        int tiles, float* corr, const char* pf,
-                                                       int pf_lines, char* const* pw,
-                                                       int pw_lines, ptrdiff_t pw_offset) {
+                                                       int pf_lines, char* const* pw, int pw_lines,
+                                                       ptrdiff_t pw_offset) {
   const size_t ps = static_cast<size_t>(depth) * kL;
   const int calls = 2 * tiles;
   const int pf_share = (pf_lines + calls - 1) / calls, pw_share = (pw_lines + calls - 1) / calls;
@@ -166,10 +166,9 @@ __attribute__((target("avx512f,fma"), always_inline)) inline void finishBlock(
                 xyz1 = _mm512_set_epi32(15, 14, 25, 12, 11, 24, 9, 8, 23, 6, 5, 22, 3, 2, 21, 0),
                 xy2 = _mm512_set_epi32(0, 31, 15, 0, 30, 14, 0, 29, 13, 0, 28, 12, 0, 27, 11, 0),
                 xyz2 = _mm512_set_epi32(31, 14, 13, 30, 11, 10, 29, 8, 7, 28, 5, 4, 27, 2, 1, 26);
-  const __m512 o[3] = {
-      _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy0, y), xyz0, z),
-      _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy1, y), xyz1, z),
-      _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy2, y), xyz2, z)};
+  const __m512 o[3] = {_mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy0, y), xyz0, z),
+                       _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy1, y), xyz1, z),
+                       _mm512_permutex2var_ps(_mm512_permutex2var_ps(x, xy2, y), xyz2, z)};
   for (int q = 0; q < 3; ++q) {
     const __m512d lo = _mm512_cvtps_pd(_mm512_castps512_ps256(o[q]));
     const __m512d hi =
@@ -200,9 +199,9 @@ __attribute__((target("avx512f,fma"))) void skinAvx512(const SkinStep& a) {
   for (int t = 0; t < frames; ++t) {
     const float* tr = transforms + static_cast<size_t>(t) * k * 12;
     __m512 m00 = _mm512_setzero_ps(), m01 = m00, m10 = m00, m11 = m00, m20 = m00, m21 = m00,
-           m30 = m00, m31 = m00, m40 = m00, m41 = m00, m50 = m00, m51 = m00, m60 = m00,
-           m61 = m00, m70 = m00, m71 = m00, m80 = m00, m81 = m00, m90 = m00, m91 = m00,
-           ma0 = m00, ma1 = m00, mb0 = m00, mb1 = m00;
+           m30 = m00, m31 = m00, m40 = m00, m41 = m00, m50 = m00, m51 = m00, m60 = m00, m61 = m00,
+           m70 = m00, m71 = m00, m80 = m00, m81 = m00, m90 = m00, m91 = m00, ma0 = m00, ma1 = m00,
+           mb0 = m00, mb1 = m00;
     for (int e = 0; e < count; ++e) {
       const __m512 w0 = _mm512_load_ps(w + 32 * e), w1 = _mm512_load_ps(w + 32 * e + 16);
       const float* tj = tr + joints[e];
@@ -246,8 +245,8 @@ __attribute__((target("avx512f,fma"))) void skinAvx512(const SkinStep& a) {
 // One 16 x 6 tile: corr rows [0, 16) of 6 frames (stride kStepRows) =
 // panel (16 x depth) * b (depth x 6, b[6 p + j]). Twelve named accumulators.
 __attribute__((target("avx2,fma"), always_inline)) inline void tile16x6(const float* panel,
-                                                                       const float* b, int depth,
-                                                                       float* corr) {
+                                                                        const float* b, int depth,
+                                                                        float* corr) {
   __m256 c00 = _mm256_setzero_ps(), c01 = c00, c10 = c00, c11 = c00, c20 = c00, c21 = c00,
          c30 = c00, c31 = c00, c40 = c00, c41 = c00, c50 = c00, c51 = c00;
   for (int p = 0; p < depth; ++p, panel += kL, b += 6) {
@@ -539,8 +538,8 @@ PackedSkin packSkin(const double* weights, int vertices, int joints) {
 }
 
 void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const PackedSkin*>& skins,
-                   const PackedRest& rest, const FrameBlock& block, double* const* out,
-                   size_t ld, Kernels kernels) {
+                   const PackedRest& rest, const FrameBlock& block, double* const* out, size_t ld,
+                   Kernels kernels) {
   const KernelSet ks = kernelSet(kernels);
   const int depth = posedirs.depth, frames = block.frames, n = posedirs.vertices;
   const int width = ks.tile_cols > 0 ? ks.tile_cols : frames;

@@ -107,9 +107,9 @@ using AlignedVector = std::vector<T, Aligned64<T>>;
 // faults 512 times less often. Only advice; call it before the first write.
 void adviseHugePages(void* data, size_t bytes);
 
-constexpr int kBlockVertices = 16;                   // vertices per panel
-constexpr int kStepVertices = 2 * kBlockVertices;    // vertices per step
-constexpr int kStepRows = 3 * kStepVertices;         // corrective rows per step (96)
+constexpr int kBlockVertices = 16;                 // vertices per panel
+constexpr int kStepVertices = 2 * kBlockVertices;  // vertices per step
+constexpr int kStepRows = 3 * kStepVertices;       // corrective rows per step (96)
 
 // posedirs (3N x P, column-major doubles, row 3i+d = component d of vertex
 // i) as float panels: component d of vertex 16b+l, feature p at

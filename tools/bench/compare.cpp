@@ -254,13 +254,14 @@ __attribute__((target("avx512f,fma"), noinline)) float fmaLoopAvx512(long iters)
     c6 = _mm512_fmadd_ps(c6, a, b), c7 = _mm512_fmadd_ps(c7, a, b), c8 = _mm512_fmadd_ps(c8, a, b);
     c9 = _mm512_fmadd_ps(c9, a, b), c10 = _mm512_fmadd_ps(c10, a, b);
     c11 = _mm512_fmadd_ps(c11, a, b);
-    __asm__ volatile("" : "+v"(c0), "+v"(c1), "+v"(c2), "+v"(c3), "+v"(c4), "+v"(c5), "+v"(c6),
-                     "+v"(c7), "+v"(c8), "+v"(c9), "+v"(c10), "+v"(c11));
+    __asm__ volatile(""
+                     : "+v"(c0), "+v"(c1), "+v"(c2), "+v"(c3), "+v"(c4), "+v"(c5), "+v"(c6),
+                       "+v"(c7), "+v"(c8), "+v"(c9), "+v"(c10), "+v"(c11));
   }
-  const __m512 s = _mm512_add_ps(
-      _mm512_add_ps(_mm512_add_ps(_mm512_add_ps(c0, c1), _mm512_add_ps(c2, c3)),
-                    _mm512_add_ps(_mm512_add_ps(c4, c5), _mm512_add_ps(c6, c7))),
-      _mm512_add_ps(_mm512_add_ps(c8, c9), _mm512_add_ps(c10, c11)));
+  const __m512 s =
+      _mm512_add_ps(_mm512_add_ps(_mm512_add_ps(_mm512_add_ps(c0, c1), _mm512_add_ps(c2, c3)),
+                                  _mm512_add_ps(_mm512_add_ps(c4, c5), _mm512_add_ps(c6, c7))),
+                    _mm512_add_ps(_mm512_add_ps(c8, c9), _mm512_add_ps(c10, c11)));
   alignas(64) float out[16];
   _mm512_store_ps(out, s);
   return out[0] + out[15];
@@ -276,13 +277,14 @@ __attribute__((target("avx2,fma"), noinline)) float fmaLoopAvx2(long iters) {
     c6 = _mm256_fmadd_ps(c6, a, b), c7 = _mm256_fmadd_ps(c7, a, b), c8 = _mm256_fmadd_ps(c8, a, b);
     c9 = _mm256_fmadd_ps(c9, a, b), c10 = _mm256_fmadd_ps(c10, a, b);
     c11 = _mm256_fmadd_ps(c11, a, b);
-    __asm__ volatile("" : "+x"(c0), "+x"(c1), "+x"(c2), "+x"(c3), "+x"(c4), "+x"(c5), "+x"(c6),
-                     "+x"(c7), "+x"(c8), "+x"(c9), "+x"(c10), "+x"(c11));
+    __asm__ volatile(""
+                     : "+x"(c0), "+x"(c1), "+x"(c2), "+x"(c3), "+x"(c4), "+x"(c5), "+x"(c6),
+                       "+x"(c7), "+x"(c8), "+x"(c9), "+x"(c10), "+x"(c11));
   }
-  const __m256 s = _mm256_add_ps(
-      _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(c0, c1), _mm256_add_ps(c2, c3)),
-                    _mm256_add_ps(_mm256_add_ps(c4, c5), _mm256_add_ps(c6, c7))),
-      _mm256_add_ps(_mm256_add_ps(c8, c9), _mm256_add_ps(c10, c11)));
+  const __m256 s =
+      _mm256_add_ps(_mm256_add_ps(_mm256_add_ps(_mm256_add_ps(c0, c1), _mm256_add_ps(c2, c3)),
+                                  _mm256_add_ps(_mm256_add_ps(c4, c5), _mm256_add_ps(c6, c7))),
+                    _mm256_add_ps(_mm256_add_ps(c8, c9), _mm256_add_ps(c10, c11)));
   alignas(32) float out[8];
   _mm256_store_ps(out, s);
   return out[0] + out[7];
@@ -301,8 +303,9 @@ __attribute__((noinline)) float fmaLoopSse2(long iters) {
     c6 = _mm_add_ps(_mm_mul_ps(c6, a), b), c7 = _mm_add_ps(_mm_mul_ps(c7, a), b);
     c8 = _mm_add_ps(_mm_mul_ps(c8, a), b), c9 = _mm_add_ps(_mm_mul_ps(c9, a), b);
     c10 = _mm_add_ps(_mm_mul_ps(c10, a), b), c11 = _mm_add_ps(_mm_mul_ps(c11, a), b);
-    __asm__ volatile("" : "+x"(c0), "+x"(c1), "+x"(c2), "+x"(c3), "+x"(c4), "+x"(c5), "+x"(c6),
-                     "+x"(c7), "+x"(c8), "+x"(c9), "+x"(c10), "+x"(c11));
+    __asm__ volatile(""
+                     : "+x"(c0), "+x"(c1), "+x"(c2), "+x"(c3), "+x"(c4), "+x"(c5), "+x"(c6),
+                       "+x"(c7), "+x"(c8), "+x"(c9), "+x"(c10), "+x"(c11));
   }
   const __m128 s = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_add_ps(c0, c1), _mm_add_ps(c2, c3)),
                                          _mm_add_ps(_mm_add_ps(c4, c5), _mm_add_ps(c6, c7))),

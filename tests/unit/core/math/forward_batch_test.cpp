@@ -72,8 +72,9 @@ double maxErrorVsForward(const BodyModel& model, const Eigen::VectorXd& betas,
     fi.weights = weights;
     Result<ForwardResult> ref = forward(model, fi);
     if (!ref.ok()) return INFINITY;
-    Eigen::MatrixXd got = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
-        batch.col(static_cast<Eigen::Index>(t)).data(), model.numVertices(), 3);
+    Eigen::MatrixXd got =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+            batch.col(static_cast<Eigen::Index>(t)).data(), model.numVertices(), 3);
     worst = std::max(worst, (got - ref->vertices).cwiseAbs().maxCoeff());
     if (!std::isfinite(got.sum())) return INFINITY;
   }
@@ -158,8 +159,7 @@ TEST(ForwardBatch, FullSizeSmplLayoutWithinMicrometre) {
 // 8- and 6-frame tiles), every kernel set.
 TEST(ForwardBatch, EverySmallFixtureEveryKernel) {
   for (const char* name : {"smpl_small", "smplh_small", "smplx_small", "mano_small"}) {
-    Result<BodyModel> model =
-        loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/" + name + ".npz");
+    Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/" + name + ".npz");
     ASSERT_TRUE(model.ok()) << name << ": " << model.message();
     const Eigen::VectorXd betas = Eigen::VectorXd::LinSpaced(4, -1, 1);
     Result<ShapedBody> body = shapeBody(*model, betas);
