@@ -81,6 +81,16 @@ double maxErrorVsForward(const BodyModel& model, const Eigen::VectorXd& betas,
   return worst;
 }
 
+// forwardBatch into a NaN-filled matrix of the result's shape (kept, not
+// reallocated): an element a kernel fails to write stays NaN and fails the
+// comparison, instead of holding the freed result of the previous kernel.
+Eigen::MatrixXd batchIntoNan(const BodyModel& model, const BatchInput& in) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(
+      3 * model.numVertices(), static_cast<Eigen::Index>(in.frames->size()), NAN);
+  forwardBatch(model, in, &out);
+  return out;
+}
+
 std::vector<Rotations> randomFrames(int joints, int count, uint64_t seed) {
   std::vector<Rotations> frames;
   for (const Eigen::VectorXd& pose : samplePoses(joints, count, seed))
@@ -107,7 +117,9 @@ TEST(ForwardBatch, EqualsForwardForEveryFrameAndThreadCount) {
          std::vector<const Eigen::MatrixXd*>{&pruned, &model->weights}) {
       for (int threads : {1, 3}) {
         BatchInput in{&*body, &frames, weights, threads, 8, kernels};
-        Eigen::MatrixXd batch = forwardBatch(*model, in);
+        Eigen::MatrixXd batch = batchIntoNan(*model, in);
+        EXPECT_TRUE(batch.allFinite())
+            << "unwritten elements, kernels " << batch::kernelsName(kernels);
         for (size_t t = 0; t < frames.size(); ++t) {
           ForwardInput fi;
           fi.betas = betas;
@@ -139,7 +151,8 @@ TEST(ForwardBatch, FullSizeSmplLayoutWithinMicrometre) {
     frames.push_back(rotationsFromAxisAngle(pose));
   for (Kernels kernels : batch::supportedKernels()) {
     BatchInput in{&*body, &frames, nullptr, 1, 64, kernels};
-    Eigen::MatrixXd batch = forwardBatch(model, in);
+    Eigen::MatrixXd batch = batchIntoNan(model, in);
+    EXPECT_TRUE(batch.allFinite()) << "unwritten elements, kernels " << batch::kernelsName(kernels);
     for (size_t t = 0; t < frames.size(); ++t) {
       ForwardInput fi;
       fi.rotations = frames[t];
@@ -167,7 +180,7 @@ TEST(ForwardBatch, EverySmallFixtureEveryKernel) {
     const std::vector<Rotations> frames = randomFrames(model->numJoints(), 13, 21);
     for (Kernels kernels : batch::supportedKernels()) {
       BatchInput in{&*body, &frames, nullptr, 1, 64, kernels};
-      EXPECT_LT(maxErrorVsForward(*model, betas, frames, nullptr, forwardBatch(*model, in)), 1e-6)
+      EXPECT_LT(maxErrorVsForward(*model, betas, frames, nullptr, batchIntoNan(*model, in)), 1e-6)
           << name << ", kernels " << batch::kernelsName(kernels);
     }
   }
@@ -188,7 +201,7 @@ TEST(ForwardBatch, EveryKernelOnVertexAndFrameTails) {
         for (Kernels kernels : batch::supportedKernels()) {
           for (int block : {5, 8, 64}) {
             BatchInput in{&*body, &frames, nullptr, 1, block, kernels};
-            const Eigen::MatrixXd batch = forwardBatch(model, in);
+            const Eigen::MatrixXd batch = batchIntoNan(model, in);
             EXPECT_LT(maxErrorVsForward(model, Eigen::VectorXd(), frames, nullptr, batch), 1e-6)
                 << n << " vertices, " << count << " frames, block " << block
                 << (sparse ? ", sparse" : ", dense") << " weights, kernels "
@@ -208,7 +221,7 @@ TEST(ForwardBatch, FullSizeSparseWeightsWithinMicrometre) {
   const std::vector<Rotations> frames = randomFrames(model.numJoints(), 11, 4);
   for (Kernels kernels : batch::supportedKernels()) {
     BatchInput in{&*body, &frames, nullptr, 1, 64, kernels};
-    EXPECT_LT(maxErrorVsForward(model, Eigen::VectorXd(), frames, nullptr, forwardBatch(model, in)),
+    EXPECT_LT(maxErrorVsForward(model, Eigen::VectorXd(), frames, nullptr, batchIntoNan(model, in)),
               1e-6)
         << batch::kernelsName(kernels);
   }
