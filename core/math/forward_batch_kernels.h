@@ -43,11 +43,17 @@
 // Cost per frame for the 6890-vertex, 207-feature, 24-joint SMPL layout with
 // dense weights: the corrective product is 3N*P = 4.28 M multiply-adds, the
 // blend 12 per non-zero weight = N*K*12 = 1.98 M, the final transform 12 per
-// vertex = 0.08 M; 6.35 M in all, 0.053 ms at this machine's measured
-// AVX-512 peak (~120 G/s on one core); the Avx512 kernels take 0.064-0.075
-// ms/frame (smpl-bench --compare). The rest (kinematic chain, pose
-// features) is O(K) per frame; packing posedirs (34 MB read, 17 MB written
-// for SMPL) is once per call or once for many (BatchInput::posedirs).
+// vertex = 0.08 M; 6.35 M in all: 0.053 ms at this machine's measured
+// single-core AVX-512 peak of ~120 G multiply-adds/s (0.057 ms at the ~112
+// G/s it measures while the other core is busy). The Avx512 kernels take
+// 0.070-0.081 ms/frame in smpl-bench --compare runs with other builds on the
+// machine (1.34-1.43x the limit), 0.065-0.071 in quieter moments; 97% of
+// that time is the two kernels (GEMM ~63%, skinning ~34%; perf), each at
+// ~75-85% of the FMA peak (the GEMM loop alone, data in cache: ~85%; plus
+// posedirs streaming from memory). The rest (kinematic chain, pose
+// features, packing the weights) is ~2% per frame; packing posedirs (34 MB
+// read, 17 MB written for SMPL) is once per call or once for many
+// (BatchInput::posedirs).
 #pragma once
 
 #include <cstddef>
