@@ -46,8 +46,8 @@
 // vertex = 0.08 M; 6.35 M in all: 0.053 ms at this machine's measured
 // single-core AVX-512 peak of ~120 G multiply-adds/s (0.057 ms at the ~112
 // G/s it measures while the other core is busy). The Avx512 kernels take
-// 0.070-0.081 ms/frame in smpl-bench --compare runs with other builds on the
-// machine (1.34-1.43x the limit), 0.065-0.071 in quieter moments; 97% of
+// 0.070-0.083 ms/frame in smpl-bench --compare runs with other builds on the
+// machine (1.35-1.43x the limit), 0.065-0.071 in quieter moments; 97% of
 // that time is the two kernels (GEMM ~63%, skinning ~34%; perf), each at
 // ~75-85% of the FMA peak (the GEMM loop alone, data in cache: ~85%; plus
 // posedirs streaming from memory). The rest (kinematic chain, pose
