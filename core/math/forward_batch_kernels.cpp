@@ -540,7 +540,7 @@ PackedSkin packSkin(const double* weights, int vertices, int joints) {
 void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const PackedSkin*>& skins,
                    const PackedRest& rest, const FrameBlock& block, double* const* out, size_t ld,
                    Kernels kernels) {
-  const KernelSet ks = kernelSet(kernels);
+  const KernelSet ks = kernelSet(resolveKernels(kernels));  // never one the CPU lacks
   const int depth = posedirs.depth, frames = block.frames, n = posedirs.vertices;
   const int width = ks.tile_cols > 0 ? ks.tile_cols : frames;
   const int tiles = (frames + width - 1) / width, cols = tiles * width;

@@ -161,7 +161,7 @@ struct FrameBlock {
 // For every skin s and frame t: out[s] + t * ld receives frame t's 3N
 // vertex coordinates (x0 y0 z0 x1 ...) in double, metres:
 // out_i = (sum_k w_ik T_k) [v_shaped_i + c_i; 1], c = posedirs * f.
-// rest: packRest(v_shaped). kernels: a resolved set the CPU runs.
+// rest: packRest(v_shaped). kernels: as for forwardBatch (resolveKernels).
 void evaluateBlock(const PackedPosedirs& posedirs, const std::vector<const PackedSkin*>& skins,
                    const PackedRest& rest, const FrameBlock& block, double* const* out, size_t ld,
                    Kernels kernels);
