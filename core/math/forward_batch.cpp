@@ -4,91 +4,138 @@
 #include <thread>
 #include <utility>
 
-#include "core/math/forward_batch_kernels.h"
-
 namespace smpl {
 namespace {
 
-// Top 3x4 rows of A_k = G_k [I | -J_k], one row of 12 per joint.
-Eigen::Matrix<double, Eigen::Dynamic, 12> restRelative(const BodyModel& model, const Rotations& rot,
-                                                       const Eigen::MatrixXd& joints) {
-  const int k = model.numJoints();
-  std::vector<Eigen::Matrix<double, 3, 4>> world(k);
-  Eigen::Matrix<double, Eigen::Dynamic, 12> a(k, 12);
-  for (int j = 0; j < k; ++j) {
-    const int p = model.parents[j];
-    Eigen::Vector3d offset =
-        joints.row(j).transpose() -
-        (p >= 0 ? Eigen::Vector3d(joints.row(p).transpose()) : Eigen::Vector3d::Zero());
-    if (p < 0) {
-      world[j] << rot[j], offset;
-    } else {
-      world[j].leftCols<3>() = world[p].leftCols<3>() * rot[j];
-      world[j].col(3) = world[p].leftCols<3>() * offset + world[p].col(3);
-    }
-    Eigen::Matrix<double, 3, 4> aj;
-    aj << world[j].leftCols<3>(),
-        world[j].col(3) - world[j].leftCols<3>() * joints.row(j).transpose();
+// Pose features and the top 3x4 rows of A_k = G_k [I | -J_k] of one frame,
+// in double, written as float: f (P values, row-major vec(R_k - I) for
+// k = 1..K-1, zero past 9(K-1)) and a (K x 12, joint by joint, row by row).
+// world: 12 K doubles of scratch (each joint's world rotation and origin).
+void frameInputs(const std::vector<int>& parents, const Rotations& rot, const double* joints, int p,
+                 double* world, float* f, float* a) {
+  const int k = static_cast<int>(parents.size());
+  for (int i = 0; i < p; ++i) f[i] = 0.0f;
+  for (int j = 1; j < k; ++j)
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) a(j, 4 * r + c) = aj(r, c);
+      for (int c = 0; c < 3; ++c) {
+        const int i = 9 * (j - 1) + 3 * r + c;
+        if (i < p) f[i] = static_cast<float>(rot[j](r, c) - (r == c ? 1.0 : 0.0));
+      }
+  auto joint = [&](int j, int c) { return joints[static_cast<size_t>(c) * k + j]; };  // K x 3
+  for (int j = 0; j < k; ++j) {
+    const int par = parents[j];
+    double* w = world + 12 * j;  // R (row-major 3x3) then origin
+    const Eigen::Matrix3d& r = rot[j];
+    if (par < 0) {
+      for (int x = 0; x < 3; ++x)
+        for (int y = 0; y < 3; ++y) w[3 * x + y] = r(x, y);
+      for (int x = 0; x < 3; ++x) w[9 + x] = joint(j, x);
+    } else {
+      const double* pw = world + 12 * par;
+      double offset[3];
+      for (int x = 0; x < 3; ++x) offset[x] = joint(j, x) - joint(par, x);
+      for (int x = 0; x < 3; ++x) {
+        for (int y = 0; y < 3; ++y)
+          w[3 * x + y] = pw[3 * x] * r(0, y) + pw[3 * x + 1] * r(1, y) + pw[3 * x + 2] * r(2, y);
+        w[9 + x] = pw[3 * x] * offset[0] + pw[3 * x + 1] * offset[1] + pw[3 * x + 2] * offset[2] +
+                   pw[9 + x];
+      }
+    }
+    float* aj = a + 12 * j;
+    for (int x = 0; x < 3; ++x) {
+      for (int y = 0; y < 3; ++y) aj[4 * x + y] = static_cast<float>(w[3 * x + y]);
+      aj[4 * x + 3] = static_cast<float>(w[9 + x] - w[3 * x] * joint(j, 0) -
+                                         w[3 * x + 1] * joint(j, 1) - w[3 * x + 2] * joint(j, 2));
+    }
   }
-  return a;
 }
 
-using Transforms = Eigen::Matrix<float, Eigen::Dynamic, 12, Eigen::RowMajor>;
-
-// One block of frames: the corrective GEMM once, then the skinning of every
-// frame with each weight set into its output.
-void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs, const BatchInput& in,
-              const std::vector<Eigen::MatrixXf>& weights, bool simd, int first, int count,
-              std::vector<Eigen::MatrixXd>* out) {
-  const int n = static_cast<int>(model.numVertices()), p = model.numPoseFeatures();
-  Eigen::MatrixXf features(p, count);
+// One block of frames: each frame's features and transforms, then the
+// kernels (the corrective GEMM once, the skinning with each weight set).
+void runBlock(const BodyModel& model, const batch::PackedPosedirs& posedirs,
+              const std::vector<const batch::PackedSkin*>& skins, const batch::PackedRest& rest,
+              const BatchInput& in, Kernels kernels, int first, int count,
+              const std::vector<Eigen::MatrixXd*>& out) {
+  const int k = model.numJoints(), p = posedirs.depth;
+  std::vector<float> features(static_cast<size_t>(p) * count), transforms(12 * k * count);
+  std::vector<double> world(12 * k);
   for (int t = 0; t < count; ++t)
-    features.col(t) = poseFeatures((*in.frames)[first + t]).cast<float>();
-  Eigen::MatrixXf v_posed(posedirs.rows_padded, count);  // the correctives, one column per frame
-  batch::correctiveProduct(posedirs, features.data(), count, v_posed.data(), simd);
-  for (int t = 0; t < count; ++t) {
-    const Transforms a =
-        restRelative(model, (*in.frames)[first + t], in.body->joints).cast<float>();
-    for (size_t s = 0; s < weights.size(); ++s)
-      batch::skinFrame(weights[s].data(), n, model.numJoints(), a.data(), in.body->v_shaped.data(),
-                       v_posed.col(t).data(), (*out)[s].col(first + t).data(), simd);
-  }
+    frameInputs(model.parents, (*in.frames)[first + t], in.body->joints.data(), p, world.data(),
+                features.data() + static_cast<size_t>(t) * p, transforms.data() + 12 * k * t);
+  std::vector<double*> dst;
+  for (Eigen::MatrixXd* o : out) dst.push_back(o->col(first).data());
+  batch::FrameBlock block;
+  block.features = features.data();
+  block.transforms = transforms.data();
+  block.frames = count;
+  block.joints = k;
+  batch::evaluateBlock(posedirs, skins, rest, block, dst.data(),
+                       3 * static_cast<size_t>(model.numVertices()), kernels);
 }
 
-}  // namespace
-
-std::vector<Eigen::MatrixXd> forwardBatchSkins(const BodyModel& model, const BatchInput& in,
-                                               const std::vector<const Eigen::MatrixXd*>& skins) {
-  const int frames = static_cast<int>(in.frames->size());
-  std::vector<Eigen::MatrixXf> weights;
-  std::vector<Eigen::MatrixXd> out;
-  for (const Eigen::MatrixXd* w : skins) {
-    weights.push_back((w ? *w : model.weights).cast<float>());
-    out.emplace_back(3 * model.numVertices(), frames);
-  }
-  const batch::PackedPosedirs posedirs =
-      batch::packPosedirs(model.posedirs.data(), static_cast<int>(model.posedirs.rows()),
-                          static_cast<int>(model.posedirs.cols()));
-  const bool simd = in.simd && batch::haveAvx2Fma();
+void run(const BodyModel& model, const BatchInput& in,
+         const std::vector<const Eigen::MatrixXd*>& weights,
+         const std::vector<Eigen::MatrixXd*>& out) {
+  const int n = model.numVertices(), frames = static_cast<int>(in.frames->size());
+  for (Eigen::MatrixXd* o : out)
+    if (o->rows() != 3 * n || o->cols() != frames) {
+      o->resize(3 * n, frames);  // not touched yet: Eigen does not initialise
+      batch::adviseHugePages(o->data(), static_cast<size_t>(o->size()) * sizeof(double));
+    }
+  if (frames == 0 || n == 0) return;
+  std::vector<batch::PackedSkin> packed;
+  packed.reserve(weights.size());
+  for (const Eigen::MatrixXd* w : weights)
+    packed.push_back(batch::packSkin((w ? *w : model.weights).data(), n, model.numJoints()));
+  std::vector<const batch::PackedSkin*> skins;
+  for (const batch::PackedSkin& s : packed) skins.push_back(&s);
+  const int depth = static_cast<int>(model.posedirs.cols());
+  const bool reuse = in.posedirs && in.posedirs->vertices == n && in.posedirs->depth == depth &&
+                     in.posedirs->steps == (n + batch::kStepVertices - 1) / batch::kStepVertices &&
+                     in.posedirs->data.size() ==
+                         static_cast<size_t>(in.posedirs->steps) * batch::kStepRows * depth;
+  const batch::PackedPosedirs own = reuse ? batch::PackedPosedirs() : packPosedirs(model);
+  const batch::PackedPosedirs& posedirs = reuse ? *in.posedirs : own;
+  const batch::PackedRest rest = batch::packRest(in.body->v_shaped.data(), n);
+  const Kernels kernels = batch::resolveKernels(in.kernels);
   const int block = std::max(1, in.block);
   const int blocks = (frames + block - 1) / block;
   auto work = [&](int worker, int workers) {
     for (int b = worker; b < blocks; b += workers)
-      runBlock(model, posedirs, in, weights, simd, b * block, std::min(block, frames - b * block),
-               &out);
+      runBlock(model, posedirs, skins, rest, in, kernels, b * block,
+               std::min(block, frames - b * block), out);
   };
   const int workers = std::max(1, std::min(in.threads, blocks));
   std::vector<std::thread> pool;
   for (int w = 1; w < workers; ++w) pool.emplace_back(work, w, workers);
   work(0, workers);
   for (std::thread& t : pool) t.join();
+}
+
+}  // namespace
+
+batch::PackedPosedirs packPosedirs(const BodyModel& model) {
+  return batch::packPosedirs(model.posedirs.data(), model.numVertices(),
+                             static_cast<int>(model.posedirs.cols()));
+}
+
+std::vector<Eigen::MatrixXd> forwardBatchSkins(const BodyModel& model, const BatchInput& in,
+                                               const std::vector<const Eigen::MatrixXd*>& skins) {
+  std::vector<Eigen::MatrixXd> out(skins.size());
+  std::vector<Eigen::MatrixXd*> dst;
+  for (Eigen::MatrixXd& o : out) dst.push_back(&o);
+  run(model, in, skins, dst);
   return out;
 }
 
+void forwardBatch(const BodyModel& model, const BatchInput& in, Eigen::MatrixXd* out) {
+  run(model, in, {in.weights}, {out});
+}
+
 Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& in) {
-  return std::move(forwardBatchSkins(model, in, {in.weights}).front());
+  Eigen::MatrixXd out;
+  forwardBatch(model, in, &out);
+  return out;
 }
 
 }  // namespace smpl
