@@ -8,7 +8,7 @@
 #include <limits>
 #include <utility>
 
-#include "core/io/huge_pages.h"
+#include "core/huge_pages.h"
 #include "core/io/printable.h"
 #include "core/io/utf8.h"
 

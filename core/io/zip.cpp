@@ -16,7 +16,7 @@
 #include <memory>
 #include <utility>
 
-#include "core/io/huge_pages.h"
+#include "core/huge_pages.h"
 #include "core/io/printable.h"
 
 namespace smpl {

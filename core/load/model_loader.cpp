@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/huge_pages.h"
 #include "core/io/file_io.h"
-#include "core/io/huge_pages.h"
 #include "core/io/mapped_file.h"
 #include "core/io/pickle/pickle.h"
 #include "core/joint_names.h"

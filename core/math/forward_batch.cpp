@@ -4,6 +4,8 @@
 #include <thread>
 #include <utility>
 
+#include "core/huge_pages.h"
+
 namespace smpl {
 namespace {
 
@@ -80,7 +82,7 @@ void run(const BodyModel& model, const BatchInput& in,
   for (Eigen::MatrixXd* o : out)
     if (o->rows() != 3 * n || o->cols() != frames) {
       o->resize(3 * n, frames);  // not touched yet: Eigen does not initialise
-      batch::adviseHugePages(o->data(), static_cast<size_t>(o->size()) * sizeof(double));
+      adviseHugePages(o->data(), static_cast<size_t>(o->size()) * sizeof(double));
     }
   if (frames == 0 || n == 0) return;
   std::vector<batch::PackedSkin> packed;

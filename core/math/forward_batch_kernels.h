@@ -107,11 +107,8 @@ using AlignedVector = std::vector<T, Aligned64<T>>;
 
 // Large fresh buffers (a 169 MB result for 1024 SMPL frames, packed
 // posedirs) are first touched one 4 KiB page at a time: a page fault each,
-// about as much time as the arithmetic. This asks Linux for transparent
-// huge pages on the buffer's 2 MiB-aligned interior (as core/io/huge_pages.h
-// does for decoded model arrays; core/math may not include core/io), so it
-// faults 512 times less often. Only advice; call it before the first write.
-void adviseHugePages(void* data, size_t bytes);
+// about as much time as the arithmetic; they ask for transparent huge pages
+// (core/huge_pages.h) before the first write.
 
 constexpr int kBlockVertices = 16;                 // vertices per panel
 constexpr int kStepVertices = 2 * kBlockVertices;  // vertices per step

@@ -4,7 +4,7 @@
 // or deeply nested graphs end in "not array-like" instead of a stack overflow.
 #include <cmath>
 
-#include "core/io/huge_pages.h"
+#include "core/huge_pages.h"
 #include "core/io/pickle/pickle_internal.h"
 #include "core/io/printable.h"
 

@@ -1,4 +1,4 @@
-#include "core/io/huge_pages.h"
+#include "core/huge_pages.h"
 
 #include <cstdint>
 
