@@ -7,13 +7,16 @@
 // catches what escapes anywhere else as a last resort, never an abort.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <new>
 #include <string>
+#include <thread>
 
 #include "cli/batch.h"
 #include "cli/batch_plan.h"
@@ -24,6 +27,7 @@
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 #include "exporter/request/run_request.h"
+#include "exporter/skin_cache.h"
 
 using namespace smpl;
 
@@ -64,6 +68,10 @@ int runBatchMode(const Settings& s, ModelSource* models, Stage* stage) {
   if (!plan) return report(plan.message(), exitCodeFor(plan.kind()));
   Result<RunInputs> inputs = loadRunInputs(s.request, models);
   if (!inputs) return report(inputs.message(), exitCodeFor(inputs.kind()));
+  // The motions of one subject fit once: one subject per worker in flight, and the next.
+  const unsigned workers =
+      s.request.threads ? unsigned(*s.request.threads) : std::thread::hardware_concurrency();
+  inputs->skins = std::make_shared<SkinCache>(std::max(2u, workers + 1));
   if (!inputs->betas_note.empty() && !s.quiet)
     std::fprintf(stderr, "note: %s\n", inputs->betas_note.c_str());
   stage->set("exporting", s.request.motion_dir, kExitExport);

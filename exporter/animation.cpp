@@ -108,7 +108,7 @@ std::vector<int> correctiveTargets(const Asset& asset) {
 // Weight of each morph target per frame: correctives get scale * f + offset,
 // basis targets scale_k (C f)_k + offset_k; others stay 0.
 void fillMorphWeights(const Asset& asset, const std::vector<int>& targets,
-                      const Rotations& rotations, Eigen::MatrixXf* weights, int frame) {
+                      const Rotations& rotations, MorphWeightTrack* weights, int frame) {
   const Eigen::VectorXd f = poseFeatures(rotations);
   const auto& correctives = asset.metadata.correctives;
   for (size_t i = 0; i < correctives.size(); ++i) {
@@ -231,7 +231,7 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   clip.dropped_joints = mapping->dropped;
   clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));
   clip.morph_weights =
-      Eigen::MatrixXf::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
+      MorphWeightTrack::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
   const std::vector<int> targets = correctiveTargets(asset);
   Rotations local(k);
   Eigen::Matrix3d source_root = Eigen::Matrix3d::Identity();  // R_0 before the world turn

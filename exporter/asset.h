@@ -108,13 +108,17 @@ struct ClipSource {
   std::string world = "y";  // "y", "z" (turned -90 degrees about x) or "-y" (a half turn about x)
 };
 
+// T x (#morph targets) weights, row-major: frame t's weights are contiguous,
+// as glTF's "weights" output stores them (the writer uses them without a copy).
+using MorphWeightTrack = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 struct AnimationClip {
   std::string name;
   double fps = 30.0;
   std::vector<double> times;                               // T seconds
   std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
   std::vector<Eigen::Vector3d> root_translation;           // T root node translations (model axes)
-  Eigen::MatrixXf morph_weights;                           // T x (#morph targets), in target order
+  MorphWeightTrack morph_weights;                          // T x (#morph targets), in target order
   // [joint][frame] local translations (--dmpl-joints regressed: every joint;
   // --root-bone: the pelvis); empty = rest_local for every joint, and an empty
   // track of one joint = its rest_local (no track written). Joint 0's track,

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <exception>
 #include <new>
-#include <thread>
 
 #include "core/io/file_io.h"
 #include "core/io/printable.h"
@@ -253,9 +252,6 @@ Result<RunInputs> loadRunInputs(const ExportRequest& r, ModelSource* models) {
   Stage stage;
   return guarded<RunInputs>(&stage, [&]() -> Result<RunInputs> {
     RunInputs inputs;
-    // One subject per worker in flight, and the next one (the batch's threads).
-    const unsigned workers = r.threads ? unsigned(*r.threads) : std::thread::hardware_concurrency();
-    inputs.skins = std::make_shared<SkinCache>(std::max(2u, workers + 1));
     inputs.betas = r.betas;
     inputs.betas_given = !r.betas.empty() || !r.betas_file.empty();
     if (!r.betas_file.empty()) {

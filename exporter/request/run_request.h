@@ -40,7 +40,8 @@ struct RunInputs {
   bool betas_given = false;   // --betas or --betas-file: the motions' betas are not used
   std::string betas_note;     // "<file>: <per-frame rows averaged ...>" or ""
   // The fitted skins of the run's subjects: a batch's motions of one subject
-  // (same model, betas, skin options) fit once (exporter/skin_cache.h).
+  // (same model, betas, skin options) fit once (exporter/skin_cache.h). Set
+  // by batch mode; null for one export (a cache would only copy its fit).
   std::shared_ptr<SkinCache> skins;
 };
 

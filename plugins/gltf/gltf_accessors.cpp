@@ -32,14 +32,14 @@ int componentCount(int type) {
 }  // namespace
 
 // Float accessor; bounds (per-component min/max) where glTF requires them.
-int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int target, bool bounds) {
+int addFloats(GltfBuild& b, const float* values, size_t size, int type, int target, bool bounds) {
   const int n = componentCount(type);
-  const size_t count = values.size() / size_t(n);
-  const int view = addView(b, values.data(), values.size() * sizeof(float), target);
+  const size_t count = size / size_t(n);
+  const int view = addView(b, values, size * sizeof(float), target);
   markMeshopt(b, view, MeshoptMode::Attributes, 4 * n);
   const int accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
   tinygltf::Accessor& a = b.model.accessors[size_t(accessor)];
-  if (bounds && count > 0) floatBounds(values.data(), count, n, &a.minValues, &a.maxValues);
+  if (bounds && count > 0) floatBounds(values, count, n, &a.minValues, &a.maxValues);
   return accessor;
 }
 

@@ -55,21 +55,24 @@ int addRotations(GltfBuild& b, const std::vector<float>& xyzw, bool quantize) {
 // UNSIGNED_SHORT (round(65535 w)) when every weight of the clip is in [0, 1]
 // (split, unit, DMPL and animated-expression weights), SHORT (round(32767 w))
 // when in [-1, 1]; otherwise (signed diagonal weights reach -2) float.
-int addMorphWeights(GltfBuild& b, const std::vector<float>& w, bool quantize) {
+int addMorphWeights(GltfBuild& b, const MorphWeightTrack& track, bool quantize) {
+  const float* w = track.data();  // row-major: frame by frame, as glTF stores them
+  const size_t size = size_t(track.size());
   float lo = 0.f, hi = 0.f;
-  for (float v : w) lo = std::min(lo, v), hi = std::max(hi, v);
-  if (!quantize || lo < -1.f || hi > 1.f) return addFloats(b, w, TINYGLTF_TYPE_SCALAR, 0, false);
+  for (size_t i = 0; i < size; ++i) lo = std::min(lo, w[i]), hi = std::max(hi, w[i]);
+  if (!quantize || lo < -1.f || hi > 1.f)
+    return addFloats(b, w, size, TINYGLTF_TYPE_SCALAR, 0, false);
   const bool positive = lo >= 0.f;
   // meshopt takes 4-byte elements: an odd count gets one zero of padding.
-  std::vector<uint16_t> q(b.meshopt ? (w.size() + 1) / 2 * 2 : w.size(), 0);
-  for (size_t i = 0; i < w.size(); ++i)
+  std::vector<uint16_t> q(b.meshopt ? (size + 1) / 2 * 2 : size, 0);
+  for (size_t i = 0; i < size; ++i)
     q[i] = positive ? uint16_t(std::nearbyint(double(w[i]) * 65535.0))
                     : uint16_t(int16_t(std::nearbyint(double(w[i]) * 32767.0)));
   const int view = addView(b, q.data(), q.size() * sizeof(uint16_t), 0);
   markMeshopt(b, view, MeshoptMode::Attributes, 4);
   return addAccessor(
       b, view, positive ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_SHORT,
-      TINYGLTF_TYPE_SCALAR, w.size(), true);
+      TINYGLTF_TYPE_SCALAR, size, true);
 }
 
 }  // namespace
@@ -105,8 +108,7 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool
     addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), int(k), "translation");
   }
   if (clip.morph_weights.size() > 0) {  // T x 0 without morph targets: no channel
-    const std::vector<float> w = rowMajor(clip.morph_weights);
-    addChannel(anim, input, addMorphWeights(b, w, quantize), mesh_node, "weights");
+    addChannel(anim, input, addMorphWeights(b, clip.morph_weights, quantize), mesh_node, "weights");
   }
   b.model.animations.push_back(anim);
   return Status::success();

@@ -36,7 +36,11 @@ inline constexpr char kBufferPlaceholder[] = "\"smpl-export:buffer:7c1e5a90\"";
 // --- gltf_accessors.cpp ---
 // A FLOAT accessor of `type` (TINYGLTF_TYPE_*) over a new view of `values`
 // (view target `target`, 0: none); per-component min/max when `bounds`.
-int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int target, bool bounds);
+int addFloats(GltfBuild& b, const float* values, size_t size, int type, int target, bool bounds);
+inline int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int target,
+                     bool bounds) {
+  return addFloats(b, values.data(), values.size(), type, target, bounds);
+}
 // An integer accessor of `component_type` over a new view of `values`
 // (uint8_t, uint16_t or uint32_t); meshopt-marked where the codec takes it.
 template <class T>
