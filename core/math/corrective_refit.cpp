@@ -126,8 +126,32 @@ struct Context {
 
 // Vertices with one feature set S, fitted together: D_i (3 x |S|) of each,
 // or an empty matrix where the guard keeps the model's deltas.
-struct Block {
+// What every vertex with the feature set S shares: the ridge-regularised
+// Gram matrix (F_S F_S' + lambda I), factored once, and F_S of both pose sets.
+struct FeatureSet {
   std::vector<Eigen::Index> features;  // S
+  Eigen::LDLT<Eigen::MatrixXd> gram;
+  Eigen::MatrixXd train;     // |S| x T
+  Eigen::MatrixXd validate;  // |S| x Tv
+};
+
+FeatureSet featureSet(const Context& c, std::vector<Eigen::Index> s) {
+  const Eigen::Index n = Eigen::Index(s.size());
+  Eigen::MatrixXd h(n, n);
+  for (Eigen::Index a = 0; a < n; ++a)
+    for (Eigen::Index col = 0; col < n; ++col) h(a, col) = c.gram(s[size_t(a)], s[size_t(col)]);
+  const double lambda = c.options.ridge * std::max(h.diagonal().mean(), 1e-12);
+  h.diagonal().array() += lambda;
+  FeatureSet f;
+  f.gram = h.ldlt();
+  f.train = selectRows(c.train.features, s);
+  f.validate = selectRows(c.validate.features, s);
+  f.features = std::move(s);
+  return f;
+}
+
+struct Block {
+  size_t set = 0;                      // its FeatureSet
   std::vector<Eigen::Index> vertices;  // at most kBlock
   std::vector<size_t> slots;           // where each vertex's D goes
 };
@@ -146,57 +170,54 @@ bool passesGuard(const BlockPoses& v, const Eigen::MatrixXd& correction, Eigen::
   return after_sum <= before_sum && after_max <= before_max;
 }
 
-// The ridge regression of every vertex of the block (header): one Gram
-// matrix (F_S F_S' + lambda I) for all of them, shared by its Cholesky factor.
-void fitBlock(const Context& c, const Block& block, std::vector<Eigen::MatrixXd>* deltas) {
+// The ridge regression of every vertex of the block (header), on its feature
+// set's factored Gram matrix.
+void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
+              std::vector<Eigen::MatrixXd>* deltas) {
   const BlockPoses v = blockPoses(c.model, c.body, c.skin, c.train, block.vertices);
   const Eigen::Index b_count = Eigen::Index(block.vertices.size()), t_count = v.error.cols();
   Eigen::MatrixXd z(3 * b_count, t_count);  // rest-frame targets R_p^{-1} e_p
   for (Eigen::Index b = 0; b < b_count; ++b)
     for (Eigen::Index p = 0; p < t_count; ++p)
       z.block<3, 1>(3 * b, p) = v.rotation(b, p).inverse() * v.error.block<3, 1>(3 * b, p);
-  const std::vector<Eigen::Index>& s = block.features;
-  const Eigen::Index n = Eigen::Index(s.size());
-  Eigen::MatrixXd h(n, n);
-  for (Eigen::Index a = 0; a < n; ++a)
-    for (Eigen::Index col = 0; col < n; ++col) h(a, col) = c.gram(s[size_t(a)], s[size_t(col)]);
-  const double lambda = c.options.ridge * std::max(h.diagonal().mean(), 1e-12);
-  h.diagonal().array() += lambda;
-  const Eigen::MatrixXd fs = selectRows(c.train.features, s);  // |S| x T
   const Eigen::MatrixXd d =
-      h.ldlt().solve(fs * z.transpose()).transpose();  // 3B x |S|: D_i at rows 3b..3b+2
+      set.gram.solve(set.train * z.transpose()).transpose();  // 3B x |S|: D_i at rows 3b..3b+2
   Eigen::MatrixXd correction;
   BlockPoses check;
   if (c.options.guard) {
     check = blockPoses(c.model, c.body, c.skin, c.validate, block.vertices);
-    correction = d * selectRows(c.validate.features, s);  // 3B x Tv: D_i f_S(p)
+    correction = d * set.validate;  // 3B x Tv: D_i f_S(p)
   }
   for (Eigen::Index b = 0; b < b_count; ++b)
     if (!c.options.guard || passesGuard(check, correction, b))
       (*deltas)[block.slots[size_t(b)]] = d.middleRows<3>(3 * b);
 }
 
-// The cut vertices grouped by feature set, in blocks of at most kBlock (in
-// vertex order within a set, so the blocks do not depend on the thread count).
-std::vector<Block> blocksOf(const BodyModel& model, const std::vector<Eigen::Index>& cut,
-                            bool parents, std::vector<std::vector<Eigen::Index>>* features) {
+// The cut vertices grouped by feature set (each set prepared once, in
+// `sets`), in blocks of at most kBlock (in vertex order within a set, so the
+// blocks do not depend on the thread count).
+std::vector<Block> blocksOf(const Context& c, const std::vector<Eigen::Index>& cut,
+                            std::vector<std::vector<Eigen::Index>>* features,
+                            std::vector<FeatureSet>* sets) {
   std::map<std::vector<Eigen::Index>, std::vector<size_t>> groups;
   for (size_t j = 0; j < cut.size(); ++j) {
-    (*features)[j] = featuresOf(model, cut[j], parents);
+    (*features)[j] = featuresOf(c.model, cut[j], c.options.parents);
     if (!(*features)[j].empty())
       groups[(*features)[j]].push_back(j);  // root only: nothing to refit
   }
   std::vector<Block> blocks;
-  for (const auto& [set, members] : groups)
+  for (const auto& [set, members] : groups) {
+    sets->push_back(featureSet(c, set));
     for (size_t first = 0; first < members.size(); first += size_t(kBlock)) {
       Block b;
-      b.features = set;
+      b.set = sets->size() - 1;
       for (size_t j = first; j < std::min(members.size(), first + size_t(kBlock)); ++j) {
         b.vertices.push_back(cut[members[j]]);
         b.slots.push_back(members[j]);
       }
       blocks.push_back(std::move(b));
     }
+  }
   return blocks;
 }
 
@@ -244,14 +265,15 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
   c.validate = poseSet(model, body, check);
   c.gram = c.train.features * c.train.features.transpose();
   std::vector<std::vector<Eigen::Index>> features(cut.size());
-  const std::vector<Block> work = blocksOf(model, cut, o.parents, &features);
+  std::vector<FeatureSet> sets;
+  const std::vector<Block> work = blocksOf(c, cut, &features, &sets);
   std::vector<Eigen::MatrixXd> deltas(cut.size());
   const int workers = std::max(1, std::min<int>(o.threads, int(work.size())));
   std::atomic<size_t> next{0};  // blocks are independent: any order gives the same result
   std::vector<std::thread> pool;
   for (int w = 0; w < workers; ++w)
     pool.emplace_back([&] {
-      for (size_t j; (j = next++) < work.size();) fitBlock(c, work[j], &deltas);
+      for (size_t j; (j = next++) < work.size();) fitBlock(c, sets[work[j].set], work[j], &deltas);
     });
   for (std::thread& t : pool) t.join();
   refit.block.assign(size_t(n), -1);
