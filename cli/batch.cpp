@@ -1,7 +1,5 @@
 #include "cli/batch.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -17,6 +15,7 @@
 #include "cli/sha256.h"
 #include "core/load/motion.h"
 #include "core/load/motion_layout.h"
+#include "core/os/system.h"
 #include "exporter/request/error_line.h"
 
 namespace smpl {
@@ -107,7 +106,8 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   std::atomic<size_t> next{0};
   std::mutex print;
   const auto batch_start = std::chrono::steady_clock::now();
-  const bool eta = isatty(1) != 0;  // the time left, on a terminal only (output stays reproducible)
+  const bool eta =
+      os::isTerminal(1);  // the time left, on a terminal only (output stays reproducible)
   size_t finished = 0;
   BatchNotes notes(motions.size()), warnings(motions.size());
   // One line per finished file, "[k/N] what", under the print lock.

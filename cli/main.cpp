@@ -5,7 +5,6 @@
 // by --memory-limit); the request turns exceptions that still escape into one
 // error line with the exit code of the stage that failed, and this main
 // catches what escapes anywhere else as a last resort, never an abort.
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -26,6 +25,7 @@
 #include "cli/summary.h"
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
+#include "core/os/system.h"
 #include "exporter/request/run_request.h"
 #include "exporter/skin_cache.h"
 
@@ -89,7 +89,7 @@ int run(int argc, char** argv, Stage* stage) {
   ModelSource models(s.request.model);  // a file, builtin, or a folder (picked per motion)
   if (isBatch(s)) return runBatchMode(s, &models, stage);
   ExportRequest& request = s.request;
-  if (isatty(2) != 0 && !s.quiet) request.progress = drawProgress;
+  if (os::isTerminal(2) && !s.quiet) request.progress = drawProgress;
   if (!s.quiet) request.skin_error_poses = kSkinErrorPoses;
   stage->set("exporting", request.out, kExitExport);
   if (request.track.kind == TrackChoice::Kind::All) {  // one output per person
@@ -113,7 +113,9 @@ int run(int argc, char** argv, Stage* stage) {
 int main(int argc, char** argv) {
   Stage stage;
   try {
-    return finishStdout(run(argc, argv, &stage));
+    os::prepareStandardStreams();
+    os::Utf8Arguments args(argc, argv);
+    return finishStdout(run(args.argc(), args.argv(), &stage));
   } catch (const std::bad_alloc&) {
     return report("Error " + std::string(stage.verb) + " " + stage.path +
                       ": out of memory (the system refused an allocation below --memory-limit " +

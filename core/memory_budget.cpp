@@ -1,8 +1,6 @@
 // Process-wide memory budget: an atomic counter of charged bytes and a limit.
 #include "core/memory_budget.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cctype>
@@ -11,6 +9,7 @@
 #include <cstdlib>
 
 #include "core/number_text.h"
+#include "core/os/system.h"
 
 namespace smpl {
 namespace {
@@ -86,9 +85,8 @@ void setMemoryLimit(uint64_t bytes) { g_limit.store(bytes == 0 ? defaultMemoryLi
 uint64_t memoryCharged() { return g_charged.load(); }
 
 uint64_t defaultMemoryLimit() {
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || page <= 0) return 8 * kGiB;
-  const uint64_t physical = static_cast<uint64_t>(pages) * static_cast<uint64_t>(page);
+  const uint64_t physical = os::physicalMemoryBytes();
+  if (physical == 0) return 8 * kGiB;
   return std::min<uint64_t>(8 * kGiB, physical / 4 * 3);
 }
 

@@ -60,7 +60,7 @@ MUTANTS = [
     ("unit_base_mesh_not_shifted", "exporter/pipeline.cpp",
      "if (o.encoding == CorrectiveEncoding::Unit) shiftBaseMesh(shift, &mesh);", "",
      r"UnitEncoding\.|web\.three\..*_unit", ["unit_tests", "smpl-export"]),
-    ("temp_without_o_excl", "core/io/atomic_write.cpp",
+    ("temp_without_o_excl", "core/os/files_posix.cpp",
      "O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC",
      "O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC",
      r"FileIo\.", ["unit_tests"]),

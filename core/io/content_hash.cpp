@@ -3,13 +3,11 @@
 // order regardless of how the input is split into add() calls.
 #include "core/io/content_hash.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <vector>
+
+#include "core/os/files.h"
 
 namespace smpl {
 namespace {
@@ -67,22 +65,16 @@ std::string ContentHash::hex() const {
 }
 
 Result<uint64_t> hashFileContent(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return makeError(path + ": cannot open: " + std::strerror(errno));
+  os::InputFile file;
+  if (!file.open(path)) return makeError(path + ": cannot open: " + os::errorText());
   std::vector<uint8_t> chunk(1 << 20);
   ContentHash h;
   for (;;) {
-    const ssize_t n = ::read(fd, chunk.data(), chunk.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int err = errno;
-      ::close(fd);
-      return makeError(path + ": cannot read: " + std::strerror(err));
-    }
+    const int64_t n = file.read(chunk.data(), chunk.size());
+    if (n < 0) return makeError(path + ": cannot read: " + os::errorText());
     if (n == 0) break;
     h.add(chunk.data(), static_cast<size_t>(n));
   }
-  ::close(fd);
   return h.value();
 }
 

@@ -1,36 +1,29 @@
-// Whole-file reads on POSIX file descriptors, so that every failure can be
-// reported with strerror; the checks of an input's kind (sniff, size bound)
-// happen on the open descriptor before its bytes are read. Atomic writes are
-// in atomic_write.cpp.
+// Whole-file reads on the OS's open files (core/os/files.h), so that every
+// failure can be reported with its reason; the checks of an input's kind
+// (sniff, size bound) happen on the open file before its bytes are read.
+// Atomic writes are in atomic_write.cpp.
 #include "core/io/file_io.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
 
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
+#include "core/os/files.h"
 
 namespace smpl {
 namespace {
 
-Error ioError(const std::string& path, const char* what, int err) {
-  return makeError(path + ": " + what + ": " + std::strerror(err));
+Error ioError(const std::string& path, const char* what) {
+  return makeError(path + ": " + what + ": " + os::errorText());
 }
 
-// Closes the descriptor on every return path.
-struct Fd {
-  int fd = -1;
-  explicit Fd(int f) : fd(f) {}
-  ~Fd() {
-    if (fd >= 0) ::close(fd);
-  }
-  Fd(const Fd&) = delete;
-  Fd& operator=(const Fd&) = delete;
+// An open input with its type and size (bytes; 0 for a pipe).
+struct Input {
+  os::InputFile file;
+  os::FileType type = os::FileType::Other;
+  uint64_t size = 0;
+  bool regular() const { return type == os::FileType::Regular; }
 };
 
 // Reads until EOF into out[used..]; works for regular files, pipes and
@@ -39,7 +32,7 @@ struct Fd {
 // returns EOF. Every buffer size is checked against the memory budget first,
 // so an endless pipe ends with an error, not with all of memory; more than
 // `max_bytes` in all is refused with `too_large`'s message.
-Status readAll(int fd, const std::string& path, size_t hint, uint64_t max_bytes,
+Status readAll(os::InputFile& file, const std::string& path, size_t hint, uint64_t max_bytes,
                const std::string& too_large, std::vector<uint8_t>& out) {
   size_t used = out.size();
   const size_t first = std::max<size_t>(std::max<size_t>(hint + 1, 65536), used);
@@ -51,9 +44,8 @@ Status readAll(int fd, const std::string& path, size_t hint, uint64_t max_bytes,
       if (Status st = checkMemory(out.size() * 2, path, "reading the file"); !st) return st;
       out.resize(out.size() * 2);
     }
-    ssize_t n = ::read(fd, out.data() + used, out.size() - used);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return ioError(path, "cannot read", errno);
+    const int64_t n = file.read(out.data() + used, out.size() - used);
+    if (n < 0) return ioError(path, "cannot read");
     if (n == 0) break;
     used += static_cast<size_t>(n);
   }
@@ -62,28 +54,17 @@ Status readAll(int fd, const std::string& path, size_t hint, uint64_t max_bytes,
   return Status();
 }
 
-const char* fileKind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISSOCK(mode)) return "a socket";
-  if (S_ISFIFO(mode)) return "a pipe";
-  return "not a file";
-}
-
 // Opens `path` for reading and refuses what is not a regular file or a pipe
 // (devices never end, directories are no data); pipes also when the kind
 // allows none. `probe` (checkInputFile, which never reads a pipe): O_NONBLOCK,
 // so opening a FIFO nobody writes to does not hang; a reader waits for its
 // writer as open(2) does.
-Status openInput(const std::string& path, const InputKind* kind, bool probe, Fd* fd,
-                 struct stat* st) {
-  fd->fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | (probe ? O_NONBLOCK : 0));
-  if (fd->fd < 0) return ioError(path, "cannot open", errno);
-  if (::fstat(fd->fd, st) != 0) return ioError(path, "cannot stat", errno);
-  if (!S_ISREG(st->st_mode) && !S_ISFIFO(st->st_mode))
-    return makeError(path + ": not a regular file (" + fileKind(st->st_mode) + ")");
-  if (kind && S_ISFIFO(st->st_mode) && !kind->pipes)
+Status openInput(const std::string& path, const InputKind* kind, bool probe, Input* in) {
+  if (!in->file.open(path, probe)) return ioError(path, "cannot open");
+  if (!in->file.stat(&in->type, &in->size)) return ioError(path, "cannot stat");
+  if (!in->regular() && in->type != os::FileType::Pipe)
+    return makeError(path + ": not a regular file (" + os::describe(in->type) + ")");
+  if (kind && in->type == os::FileType::Pipe && !kind->pipes)
     return makeError(path + ": not a regular file (a pipe); a " + kind->what +
                      " must be a regular file");
   return Status();
@@ -92,14 +73,13 @@ Status openInput(const std::string& path, const InputKind* kind, bool probe, Fd*
 // The first bytes of an open file (up to kSniffBytes): pread for a regular
 // file (the offset stays 0), read for a pipe (those bytes are consumed and
 // stay in `head`).
-Status readHead(int fd, bool regular, const std::string& path, std::vector<uint8_t>* head) {
+Status readHead(Input& in, const std::string& path, std::vector<uint8_t>* head) {
   head->resize(kSniffBytes);
   size_t used = 0;
   while (used < head->size()) {
-    ssize_t n = regular ? ::pread(fd, head->data() + used, head->size() - used, used)
-                        : ::read(fd, head->data() + used, head->size() - used);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return ioError(path, "cannot read", errno);
+    const int64_t n = in.regular() ? in.file.readAt(head->data() + used, head->size() - used, used)
+                                   : in.file.read(head->data() + used, head->size() - used);
+    if (n < 0) return ioError(path, "cannot read");
     if (n == 0) break;
     used += static_cast<size_t>(n);
   }
@@ -143,58 +123,65 @@ Result<AcceptedFormat> matchKind(const std::string& path, const std::vector<uint
 }  // namespace
 
 Result<std::vector<uint8_t>> readFileBytes(const std::string& path) {
-  Fd fd(-1);
-  struct stat st {};
-  if (Status s = openInput(path, nullptr, false, &fd, &st); !s) return s.error();
+  Input in;
+  if (Status s = openInput(path, nullptr, false, &in); !s) return s.error();
   std::vector<uint8_t> bytes;
-  const size_t hint = S_ISREG(st.st_mode) && st.st_size > 0 ? static_cast<size_t>(st.st_size) : 0;
-  if (Status s = readAll(fd.fd, path, hint, ~0ull, "", bytes); !s) return s.error();
+  const size_t hint = in.regular() ? static_cast<size_t>(in.size) : 0;
+  if (Status s = readAll(in.file, path, hint, ~0ull, "", bytes); !s) return s.error();
   return bytes;
 }
 
 Result<std::vector<uint8_t>> readFileBytes(const std::string& path, const InputKind& kind) {
-  Fd fd(-1);
-  struct stat st {};
-  if (Status s = openInput(path, &kind, false, &fd, &st); !s) return s.error();
-  const bool regular = S_ISREG(st.st_mode);
+  Input in;
+  if (Status s = openInput(path, &kind, false, &in); !s) return s.error();
   std::vector<uint8_t> bytes;
-  if (Status s = readHead(fd.fd, regular, path, &bytes); !s) return s.error();
+  if (Status s = readHead(in, path, &bytes); !s) return s.error();
   Result<AcceptedFormat> a = matchKind(path, bytes, kind);
   if (!a) return a.error();
-  const uint64_t size = regular ? static_cast<uint64_t>(st.st_size) : 0;
+  const uint64_t size = in.size;
   if (size > a->max_bytes) return makeError(tooLarge(path, size, kind, *a));
-  if (regular) bytes.clear();  // pread left the offset at 0: read the file from its start
+  if (in.regular()) bytes.clear();  // readAt left the offset at 0: read the file from its start
   const std::string too_large = tooLarge(path, size, kind, *a);
-  if (Status s = readAll(fd.fd, path, static_cast<size_t>(size), a->max_bytes, too_large, bytes);
+  if (Status s = readAll(in.file, path, static_cast<size_t>(size), a->max_bytes, too_large, bytes);
       !s)
     return s.error();
   return bytes;
 }
 
 Result<FileFormat> checkInputFile(const std::string& path, const InputKind& kind) {
-  Fd fd(-1);
-  struct stat st {};
-  if (Status s = openInput(path, &kind, true, &fd, &st); !s) return s.error();
-  if (!S_ISREG(st.st_mode)) return FileFormat::Unknown;  // a pipe: sniffed by readFileBytes
+  Input in;
+  if (Status s = openInput(path, &kind, true, &in); !s) return s.error();
+  if (!in.regular()) return FileFormat::Unknown;  // a pipe: sniffed by readFileBytes
   std::vector<uint8_t> head;
-  if (Status s = readHead(fd.fd, true, path, &head); !s) return s.error();
+  if (Status s = readHead(in, path, &head); !s) return s.error();
   Result<AcceptedFormat> a = matchKind(path, head, kind);
   if (!a) return a.error();
-  const uint64_t size = static_cast<uint64_t>(st.st_size);
+  const uint64_t size = in.size;
   if (size > a->max_bytes) return makeError(tooLarge(path, size, kind, *a));
   return a->format;
 }
 
+// Path separators: '/' everywhere, and '\\' on Windows (drive letters and
+// backslashes: "C:\\out\\body.glb").
+#ifdef _WIN32
+constexpr const char* kSeparators = "/\\";
+#else
+constexpr const char* kSeparators = "/";
+#endif
+
 std::string dirName(const std::string& path) {
-  size_t slash = path.find_last_of('/');
+  size_t slash = path.find_last_of(kSeparators);
   if (slash == std::string::npos) return ".";
-  return slash == 0 ? "/" : path.substr(0, slash);
+#ifdef _WIN32
+  if (slash == 2 && path[1] == ':') return path.substr(0, 3);  // "C:\\x" -> "C:\\"
+#endif
+  return slash == 0 ? path.substr(0, 1) : path.substr(0, slash);
 }
 
 std::string baseName(const std::string& path) {
-  size_t end = path.find_last_not_of('/');
+  size_t end = path.find_last_not_of(kSeparators);
   if (end == std::string::npos) return path;  // "" or "/"
-  size_t slash = path.find_last_of('/', end);
+  size_t slash = path.find_last_of(kSeparators, end);
   size_t begin = slash == std::string::npos ? 0 : slash + 1;
   return path.substr(begin, end + 1 - begin);
 }

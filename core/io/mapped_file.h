@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/io/mapping_guard.h"
+#include "core/os/files.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -29,20 +30,19 @@ class MappedFile {
   MappedFile& operator=(const MappedFile&) = delete;
   ~MappedFile();
 
-  const uint8_t* data() const {
-    return mapping_ ? static_cast<const uint8_t*>(mapping_) : owned_.data();
-  }
-  size_t size() const { return mapping_ ? mapped_size_ : owned_.size(); }
+  const uint8_t* data() const { return mapping_.data() ? mapping_.data() : owned_.data(); }
+  size_t size() const { return mapping_.data() ? mapping_.size() : owned_.size(); }
 
   // Ok while every byte read so far is the file's; after the file shrank
   // under the mapping (zeros were read instead), mappingLostError(path).
   // Readers call it when done with the bytes, whatever their own result.
   Status intact() const;
+  // True once a read of the mapping faulted (intact() then fails).
+  bool lost() const { return guard_.lost(); }
 
  private:
   void unmap();
-  void* mapping_ = nullptr;
-  size_t mapped_size_ = 0;
+  os::FileMapping mapping_;
   MappingGuard guard_;
   std::string path_;
   std::vector<uint8_t> owned_;

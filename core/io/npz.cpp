@@ -1,5 +1,5 @@
 // .npz = zip of .npy members (np.savez / np.savez_compressed). The archive is
-// memory-mapped (POSIX; a mapping of a regular file costs address space, not
+// memory-mapped (MappedFile; a mapping of a regular file costs address space, not
 // memory, and its untouched pages are never read) or, where that fails, read
 // through readFileBytes (charged to the memory budget). Members are listed from
 // the central directory and inflated one at a time, only when asked for (each
@@ -7,37 +7,26 @@
 // released as soon as they are converted.
 #include "core/io/npz.h"
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <set>
 #include <utility>
 
 #include "core/io/file_io.h"
-#include "core/io/mapping_guard.h"
+#include "core/io/mapped_file.h"
 #include "core/io/numpy_dtype.h"
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 
 namespace smpl {
 
-// The archive's bytes: a read-only mapping of the file (watched: a file that
-// shrinks while it is read gives zeros and `guard.lost()`, mapping_guard.h),
-// or an owned copy.
+// The archive's bytes: a watched read-only mapping of the file or an owned
+// copy (MappedFile), or bytes given by the caller (owned).
 struct NpzArchive::Storage {
   const uint8_t* data = nullptr;
   size_t size = 0;
-  void* mapping = nullptr;
-  MappingGuard guard;
-  std::string path;
+  MappedFile file;
   std::vector<uint8_t> owned;
-  ~Storage() {
-    guard = MappingGuard();  // stop watching before the range is unmapped
-    if (mapping) munmap(mapping, size);
-  }
+  bool lost() const { return file.lost(); }
 };
 
 namespace {
@@ -47,31 +36,14 @@ std::string keyOf(const std::string& member) {
   return hasSuffix(member, ".npy") ? member.substr(0, member.size() - 4) : member;
 }
 
-// mmap the file read-only; an empty or unmappable file falls back to reading it.
+// The file mapped (or read, when it cannot be mapped).
 Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
   auto storage = std::make_shared<NpzArchive::Storage>();
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  struct stat st {};
-  if (fd >= 0 && ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-    void* m = ::mmap(nullptr, static_cast<size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
-    MappingGuard guard(m == MAP_FAILED ? nullptr : m, static_cast<size_t>(st.st_size));
-    if (guard.watching()) {
-      storage->mapping = m;
-      storage->data = static_cast<const uint8_t*>(m);
-      storage->size = static_cast<size_t>(st.st_size);
-      storage->guard = std::move(guard);
-      storage->path = path;
-    } else if (m != MAP_FAILED) {
-      ::munmap(m, static_cast<size_t>(st.st_size));  // every guard slot taken: read a copy
-    }
-  }
-  if (fd >= 0) ::close(fd);
-  if (storage->mapping) return storage;
-  Result<std::vector<uint8_t>> bytes = readFileBytes(path);
-  if (!bytes) return bytes.error();
-  storage->owned = std::move(*bytes);
-  storage->data = storage->owned.data();
-  storage->size = storage->owned.size();
+  Result<MappedFile> file = MappedFile::open(path);
+  if (!file) return file.error();
+  storage->file = std::move(*file);
+  storage->data = storage->file.data();
+  storage->size = storage->file.size();
   return storage;
 }
 
@@ -80,7 +52,7 @@ Result<std::shared_ptr<NpzArchive::Storage>> mapFile(const std::string& path) {
 Result<NpzArchive> NpzArchive::fromStorage(std::shared_ptr<const Storage> storage,
                                            const std::string& context) {
   Result<std::vector<ZipMember>> members = listZip(storage->data, storage->size, context);
-  if (storage->guard.lost()) return mappingLostError(storage->path);
+  if (storage->lost()) return storage->file.intact().error();
   if (!members) return members.error();
   NpzArchive a;
   a.storage_ = std::move(storage);
@@ -129,7 +101,7 @@ const ZipMember* NpzArchive::find(const std::string& key) const {
 }
 
 Status NpzArchive::intact() const {
-  if (storage_ && storage_->guard.lost()) return mappingLostError(storage_->path);
+  if (storage_ && storage_->lost()) return storage_->file.intact().error();
   return Status();
 }
 

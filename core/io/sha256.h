@@ -1,6 +1,6 @@
-// SHA-256 (FIPS 180-4, computed by OpenSSL) of bytes or of a file, as lowercase hex: the digest
-// the batch manifest records for each output and the sidecar records for every file of its
-// output (exporter/metadata_json.h), which batch mode verifies (`sha256sum` prints the same).
+// SHA-256 (FIPS 180-4, computed by OpenSSL or Windows CNG) of bytes or of a file, as lowercase hex:
+// the digest the batch manifest records for each output and the sidecar records for every file of
+// its output (exporter/metadata_json.h), which batch mode verifies (`sha256sum` prints the same).
 #pragma once
 
 #include <cstddef>

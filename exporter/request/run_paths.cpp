@@ -3,8 +3,6 @@
 // std::filesystem: an input that cannot be resolved is left to its loader.
 #include "exporter/request/run_paths.h"
 
-#include <sys/stat.h>
-
 #include <filesystem>
 #include <map>
 #include <utility>
@@ -12,25 +10,25 @@
 #include "core/io/file_io.h"
 #include "core/load/model_folder.h"
 #include "core/load/uv_npy.h"
+#include "core/os/files.h"
 #include "plugins/writer.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
+using FileKey = std::pair<uint64_t, uint64_t>;  // (device, inode)
+
 struct Identity {
-  dev_t dev;
-  ino_t ino;
-  mode_t mode;
+  os::FileIdentity file;
   std::string real;  // fs::canonical
 };
 
 bool identify(const std::string& path, Identity* id) {
-  struct stat st;
-  if (path.empty() || ::stat(path.c_str(), &st) != 0) return false;  // follows symlinks
+  if (!os::identify(path, &id->file)) return false;  // follows symlinks
   std::error_code ec;
   const fs::path real = fs::canonical(path, ec);
-  *id = Identity{st.st_dev, st.st_ino, st.st_mode, ec ? std::string() : real.string()};
+  id->real = ec ? std::string() : real.string();
   return true;
 }
 
@@ -59,22 +57,29 @@ void addUv(const std::string& uv, std::vector<std::string>* files) {
   if (pair) files->push_back(pair->first == uv ? pair->second : pair->first);
 }
 
-const char* kindOf(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a named pipe";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
+const char* kindOf(os::FileType type) {
+  switch (type) {
+    case os::FileType::Directory:
+      return "a directory";
+    case os::FileType::CharDevice:
+      return "a character device";
+    case os::FileType::BlockDevice:
+      return "a block device";
+    case os::FileType::Pipe:
+      return "a named pipe";
+    case os::FileType::Socket:
+      return "a socket";
+    default:
+      return "not a regular file";
+  }
 }
 
 // One output against the inputs' identities.
-Status checkOutput(const std::string& out,
-                   const std::map<std::pair<dev_t, ino_t>, std::string>& by_inode,
+Status checkOutput(const std::string& out, const std::map<FileKey, std::string>& by_inode,
                    const std::map<std::string, std::string>& by_path) {
   Identity id;
   if (!identify(out, &id)) return Status();  // not there yet: cannot clash
-  auto inode = by_inode.find({id.dev, id.ino});
+  auto inode = by_inode.find({id.file.device, id.file.inode});
   auto real = by_path.find(id.real);
   const std::string* input = inode != by_inode.end() ? &inode->second
                              : real != by_path.end() ? &real->second
@@ -83,10 +88,10 @@ Status checkOutput(const std::string& out,
     return makeError("output " + out + " would overwrite the input " + *input +
                          " (same file); choose another output path",
                      ErrorKind::Usage);
-  if (!S_ISREG(id.mode))
-    return makeError(
-        "output " + out + " is " + kindOf(id.mode) + ", not a file; choose another output path",
-        ErrorKind::Usage);
+  if (id.file.type != os::FileType::Regular)
+    return makeError("output " + out + " is " + kindOf(id.file.type) +
+                         ", not a file; choose another output path",
+                     ErrorKind::Usage);
   return Status();
 }
 
@@ -116,7 +121,8 @@ Status checkManifestFolder(const RunPaths& paths) {
   Identity folder, parent;
   if (!identify(paths.motion_dir, &folder) || !identify(dirName(paths.manifest), &parent))
     return Status();
-  if (folder.dev != parent.dev || folder.ino != parent.ino) return Status();
+  if (folder.file.device != parent.file.device || folder.file.inode != parent.file.inode)
+    return Status();
   return makeError("--manifest " + paths.manifest + " is in the --motion-dir folder " +
                        paths.motion_dir +
                        " (the next run would read it as a motion); choose another folder",
@@ -159,12 +165,12 @@ std::string gltfBufferPath(const ExportRequest& r, const std::string& out) {
 }
 
 Status checkRunPaths(const RunPaths& paths) {
-  std::map<std::pair<dev_t, ino_t>, std::string> by_inode;
+  std::map<FileKey, std::string> by_inode;
   std::map<std::string, std::string> by_path;
   for (const std::string& in : paths.inputs) {
     Identity id;
     if (!identify(in, &id)) continue;
-    by_inode.emplace(std::make_pair(id.dev, id.ino), in);
+    by_inode.emplace(std::make_pair(id.file.device, id.file.inode), in);
     if (!id.real.empty()) by_path.emplace(id.real, in);
   }
   for (const std::string& out : paths.outputs)

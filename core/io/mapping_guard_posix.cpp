@@ -1,8 +1,6 @@
 // The SIGBUS handler behind MappingGuard (see the header). Everything the
 // handler touches is lock-free atomics and system calls (mmap, sigaction,
 // raise), so it is async-signal-safe in practice on Linux.
-#include "core/io/mapping_guard.h"
-
 #include <signal.h>
 #include <sys/mman.h>
 #include <unistd.h>
@@ -10,6 +8,8 @@
 #include <atomic>
 #include <cstdint>
 #include <mutex>
+
+#include "core/io/mapping_guard.h"
 
 namespace smpl {
 namespace {

@@ -1,0 +1,30 @@
+// One SHA-256 computation (FIPS 180-4) by the platform's well-kept
+// implementation: OpenSSL's EVP API on POSIX builds (sha256_digest_posix.cpp,
+// Debian's libssl-dev), Windows' CNG (bcrypt) on Windows builds
+// (sha256_digest_win32.cpp). Used by sha256.cpp only.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+namespace smpl {
+
+class Sha256Digest {
+ public:
+  Sha256Digest();  // ok() is false when the implementation is not available
+  ~Sha256Digest();
+  Sha256Digest(const Sha256Digest&) = delete;
+  Sha256Digest& operator=(const Sha256Digest&) = delete;
+
+  bool ok() const { return state_ != nullptr; }
+  bool update(const void* data, size_t size);  // false on failure
+  // The 32-byte digest as 64 lowercase hex digits; empty on failure.
+  std::string finishHex();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace smpl

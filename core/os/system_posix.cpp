@@ -1,0 +1,30 @@
+// POSIX implementation of core/os/system.h.
+#include <sys/random.h>
+#include <unistd.h>
+
+#include "core/os/system.h"
+
+namespace smpl::os {
+
+uint64_t processId() { return static_cast<uint64_t>(::getpid()); }
+
+bool randomBytes(void* out, size_t size) {
+  return ::getrandom(out, size, GRND_NONBLOCK) == static_cast<ssize_t>(size);
+}
+
+uint64_t physicalMemoryBytes() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || page <= 0) return 0;
+  return static_cast<uint64_t>(pages) * static_cast<uint64_t>(page);
+}
+
+bool isTerminal(int fd) { return ::isatty(fd) != 0; }
+
+Utf8Arguments::Utf8Arguments(int argc, char** argv) : args_(argv, argv + argc) {
+  for (std::string& a : args_) pointers_.push_back(a.data());
+  pointers_.push_back(nullptr);
+}
+
+void prepareStandardStreams() {}
+
+}  // namespace smpl::os
