@@ -15,6 +15,7 @@
 #include "cli/sha256.h"
 #include "core/load/motion.h"
 #include "core/load/motion_layout.h"
+#include "core/os/path.h"
 #include "core/os/system.h"
 #include "exporter/request/error_line.h"
 
@@ -26,7 +27,7 @@ namespace {
 void describeOutput(const std::string& out, bool manifest, ManifestEntry* e) {
   e->output = out;
   std::error_code ec;
-  e->bytes = static_cast<size_t>(fs::file_size(out, ec));
+  e->bytes = static_cast<size_t>(fs::file_size(os::fsPath(out), ec));
   if (Result<std::string> digest = manifest ? sha256File(out) : Result<std::string>(std::string());
       digest)
     e->sha256 = *digest;
@@ -91,7 +92,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
                       const RunInputs& inputs) {
   BatchSummary summary;
   std::error_code ec;
-  fs::create_directories(s.out_dir, ec);
+  fs::create_directories(os::fsPath(s.out_dir), ec);
   printHeader(s, plan);
   summary.failed = static_cast<int>(plan.errors.size());
   const std::vector<PlannedOutput>& motions = plan.outputs;
@@ -162,7 +163,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         continue;
       }
       ++summary.converted;
-      const std::string name = fs::path(motions[i].motion).stem().string();
+      const std::string name = os::utf8(os::fsPath(motions[i].motion).stem());
       notes.set(i, name, r->notes);
       if (!r->model_note.empty()) warnings.set(i, name, {r->model_note});
       char line[160];

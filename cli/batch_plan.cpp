@@ -12,6 +12,7 @@
 #include "core/io/sha256.h"
 #include "core/io/utf8.h"
 #include "core/load/motion_layout.h"
+#include "core/os/path.h"
 #include "exporter/metadata_json.h"
 #include "exporter/request/error_line.h"
 #include "exporter/request/producer.h"
@@ -33,17 +34,17 @@ bool isMotionName(const std::string& name) {
 // The motions in `dir`; unreadable entries become errors/notes of `plan`.
 Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* plan) {
   std::error_code ec;
-  const fs::file_status st = fs::status(dir, ec);
+  const fs::file_status st = fs::status(os::fsPath(dir), ec);
   if (ec || !fs::is_directory(st))
     return makeError(errorLine("loading", dir,
                                fs::exists(st) ? "not a directory (--motion-dir)"
                                               : "no such directory (--motion-dir)"),
                      ErrorKind::Load);
   std::vector<std::string> motions;
-  auto it = fs::directory_iterator(dir, ec);
+  auto it = fs::directory_iterator(os::fsPath(dir), ec);
   for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
-    const std::string path = it->path().string();
-    if (!isMotionName(it->path().filename().string())) continue;
+    const std::string path = os::utf8(it->path());
+    if (!isMotionName(os::utf8(it->path().filename()))) continue;
     std::error_code entry_ec;
     const fs::file_status entry = it->status(entry_ec);  // follows symbolic links, once
     if (entry_ec)
@@ -60,7 +61,8 @@ Result<std::vector<std::string>> listMotions(const std::string& dir, BatchPlan* 
 
 bool olderThan(const std::string& a, const std::string& b) {
   std::error_code ec1, ec2;
-  const auto ta = fs::last_write_time(a, ec1), tb = fs::last_write_time(b, ec2);
+  const auto ta = fs::last_write_time(os::fsPath(a), ec1),
+             tb = fs::last_write_time(os::fsPath(b), ec2);
   return ec1 || ec2 || ta < tb;
 }
 
@@ -75,8 +77,8 @@ bool outputsAsRecorded(const std::vector<std::string>& outputs, const std::strin
     auto r = std::find_if(recorded.begin(), recorded.end(),
                           [&](const RecordedOutput& e) { return e.file == name; });
     std::error_code ec;
-    if (r == recorded.end() || !fs::is_regular_file(o, ec) || fs::file_size(o, ec) != r->bytes ||
-        ec)
+    if (r == recorded.end() || !fs::is_regular_file(os::fsPath(o), ec) ||
+        fs::file_size(os::fsPath(o), ec) != r->bytes || ec)
       return false;
     Result<std::string> digest = sha256File(o);
     if (!digest || *digest != r->sha256) return false;
@@ -87,9 +89,10 @@ bool outputsAsRecorded(const std::vector<std::string>& outputs, const std::strin
 bool upToDate(const Settings& s, const PlannedOutput& p) {
   const std::string sidecar = p.out + ".smpl.json";
   std::error_code ec;
-  if (!fs::is_regular_file(p.out, ec) || !fs::is_regular_file(sidecar, ec)) return false;
+  if (!fs::is_regular_file(os::fsPath(p.out), ec) || !fs::is_regular_file(os::fsPath(sidecar), ec))
+    return false;
   if (olderThan(p.out, p.motion) || olderThan(sidecar, p.motion)) return false;
-  if (fs::file_size(sidecar, ec) > (64u << 20) || ec) return false;
+  if (fs::file_size(os::fsPath(sidecar), ec) > (64u << 20) || ec) return false;
   Result<std::vector<uint8_t>> bytes = readFileBytes(sidecar);
   if (!bytes) return false;
   const std::string text(bytes->begin(), bytes->end());
@@ -138,8 +141,8 @@ Result<BatchPlan> planBatch(const Settings& s) {
   for (const std::string& m : *motions) {
     PlannedOutput p;
     p.motion = m;
-    p.out =
-        (fs::path(s.out_dir) / (fs::path(m).stem().string() + format->extensions.front())).string();
+    p.out = os::utf8(os::fsPath(s.out_dir) /
+                     os::fsPath(os::utf8(os::fsPath(m).stem()) + format->extensions.front()));
     plan.outputs.push_back(p);
   }
   if (Status st = checkCollisions(plan.outputs); !st) return usage(st.message());

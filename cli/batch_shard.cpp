@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/os/path.h"
+
 namespace smpl {
 namespace fs = std::filesystem;
 
 std::vector<std::string> shardMotions(std::vector<std::string> files, const std::string& root,
                                       int index, int count) {
   auto key = [&](const std::string& p) {
-    return fs::path(p).lexically_relative(root).generic_string();
+    return os::genericUtf8(os::fsPath(p).lexically_relative(os::fsPath(root)));
   };
   std::sort(files.begin(), files.end(),
             [&](const std::string& a, const std::string& b) { return key(a) < key(b); });

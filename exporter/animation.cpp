@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/joint_names.h"
+#include "core/math/rotation.h"
 #include "exporter/dmpl_targets.h"
 #include "exporter/expression_targets.h"
 
@@ -54,7 +55,7 @@ Eigen::Quaterniond rotationAt(const Motion& m, int source_joint, const Sample& s
   Eigen::Quaterniond a(m.frames[s.frame][source_joint]);
   if (s.t < 1e-12 || s.frame + 1 >= static_cast<int>(m.frames.size())) return a.normalized();
   Eigen::Quaterniond b(m.frames[s.frame + 1][source_joint]);
-  return a.normalized().slerp(s.t, b.normalized());
+  return slerp(a.normalized(), s.t, b.normalized());
 }
 
 Eigen::Vector3d translationAt(const Motion& m, const Sample& s) {
@@ -70,7 +71,7 @@ void frameChangeAt(const Motion& m, const Sample& s, Eigen::Matrix3d* a, Eigen::
   if (m.world_rotation.empty()) return;
   const int next = std::min(s.frame + 1, static_cast<int>(m.world_rotation.size()) - 1);
   const Eigen::Quaterniond q0(m.world_rotation[s.frame]), q1(m.world_rotation[next]);
-  *a = q0.normalized().slerp(s.t, q1.normalized()).toRotationMatrix();
+  *a = slerp(q0.normalized(), s.t, q1.normalized()).toRotationMatrix();
   *b = (1 - s.t) * m.world_translation[s.frame] + s.t * m.world_translation[next];
 }
 
@@ -173,7 +174,7 @@ Result<Eigen::Vector3d> anchorPoint(const BodyModel& model, const Asset& asset,
 
 Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world) {
   const std::string name = worldName(up, world);
-  if (name == "z") return Eigen::AngleAxisd(-M_PI / 2, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  if (name == "z") return axisAngleMatrix(-M_PI / 2, Eigen::Vector3d::UnitX());
   if (name == "-y") return Eigen::Vector3d(1, -1, -1).asDiagonal();
   return Eigen::Matrix3d::Identity();
 }

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/load/validate_inputs.h"
+#include "core/os/path.h"
 #include "exporter/joint_shift_cost.h"
 
 namespace smpl {
@@ -34,7 +35,7 @@ void addDmplTargets(const BodyModel& model, const DmplBasis& basis,
                     const std::vector<DmplLayout>& layout, bool animate_joints, Asset* asset) {
   SkinnedMesh& mesh = asset->mesh;
   DmplInfo& info = asset->metadata.dmpl;
-  info.basis = std::filesystem::path(basis.path).filename().string();
+  info.basis = os::utf8(os::fsPath(basis.path).filename());
   info.animate_joints = animate_joints;
   info.targets = layout;
   const int k = model.numJoints(), n = model.numVertices();

@@ -112,5 +112,8 @@ class ScopedWriterFormat {
 // False in builds without meshoptimizer (SMPL_STATIC: Debian ships no static
 // libmeshoptimizer); --meshopt is then refused by the request check.
 bool meshoptAvailable();
+// False in builds without Draco (the Windows build: Debian ships no Draco for
+// mingw-w64); --draco is then refused by the request check.
+bool dracoAvailable();
 
 }  // namespace smpl

@@ -8,21 +8,23 @@
 #   smpl_correctives-<version>-blender.zip   the Blender add-on (Install from Disk)
 #   smpl_maya-<version>.zip                  the Maya module (folder maya/)
 #   com.smpl-export.correctives-<version>.tgz the Unity package (UPM: add package from tarball)
+#   smpl-export-<version>-windows-x86_64.zip  bin/smpl-export.exe (scripts/build-windows.sh:
+#                                   mingw-w64, static, Windows' own DLLs only), LICENSE, README.md
 #   SHA256SUMS
 # The binary is a SMPL_STATIC=ON build in build-release/ (only smpl-export and
 # the installed files are built; ccache makes a rebuild nearly free).
-# Not built yet (issue 26): the Windows zip (mingw-w64) and the WebAssembly
-# npm tarball. They are listed as "not built"; asking for one explicitly
-# (--windows, --npm, or --all) makes the script exit 1 after building the rest.
+# Not built yet (issue 26): the WebAssembly npm tarball. It is listed as "not
+# built"; asking for it explicitly (--npm, or --all) makes the script exit 1
+# after building the rest. --windows is accepted (the zip is always built).
 #   scripts/release.sh [--windows] [--npm] [--all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-want_windows=0 want_npm=0
+want_npm=0
 for arg in "$@"; do
   case $arg in
-    --windows) want_windows=1 ;;
+    --windows) ;;  # always built
     --npm) want_npm=1 ;;
-    --all) want_windows=1 want_npm=1 ;;
+    --all) want_npm=1 ;;
     *) echo "release.sh: unknown option '$arg' (expected --windows, --npm or --all)" >&2; exit 1 ;;
   esac
 done
@@ -47,6 +49,26 @@ rm -rf "$dist" && mkdir -p "$dist"
 cp "build-release/cpack/$name.tar.gz" "build-release/cpack/smpl-export_${version}_amd64.deb" "$dist/"
 cp build-release/smpl_correctives.zip "$dist/smpl_correctives-$version-blender.zip"
 cp build-release/smpl_maya.zip "$dist/smpl_maya-$version.zip"
+# The Windows zip: smpl-export-<version>-windows-x86_64/bin/smpl-export.exe, LICENSE, README.md
+# (stored with fixed times and order, so the same build zips to the same bytes).
+mkdir -p build-windows-deps
+scripts/build-windows.sh >build-windows-deps/build.log 2>&1 || {
+  tail -20 build-windows-deps/build.log >&2
+  echo "release.sh: the Windows build failed (build-windows-deps/build.log)" >&2
+  exit 1
+}
+/usr/bin/python3 - "$dist/smpl-export-$version-windows-x86_64.zip" "smpl-export-$version-windows-x86_64" <<'PY'
+import sys, zipfile
+out, top = sys.argv[1], sys.argv[2]
+files = [("build-windows/cli/smpl-export.exe", "bin/smpl-export.exe"), ("LICENSE", "LICENSE"),
+         ("README.md", "README.md")]
+with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+    for src, name in files:
+        info = zipfile.ZipInfo(f"{top}/{name}", date_time=(2026, 1, 1, 0, 0, 0))
+        info.compress_type = zipfile.ZIP_DEFLATED
+        info.external_attr = (0o755 if name.endswith(".exe") else 0o644) << 16
+        z.writestr(info, open(src, "rb").read())
+PY
 # npm pack writes the UPM tarball layout (package/...); the Unity package has no scripts to run.
 (cd unity && npm pack --silent --pack-destination "$dist" >/dev/null)
 
@@ -55,7 +77,6 @@ not_built() {  # not_built WANTED WHAT
   echo "not built: $2"
   [[ $1 -eq 0 ]] || status=1
 }
-not_built $want_windows "smpl-export-$version-windows-x86_64.zip (the mingw-w64 cross build does not exist yet, issue 26 item 2)"
 not_built $want_npm "the WebAssembly npm tarball (the emscripten build does not exist yet, issue 26 item 3)"
 
 (cd "$dist" && sha256sum -- * >SHA256SUMS)

@@ -17,6 +17,7 @@
 #include <cmath>
 
 #include "core/demo/demo_body_internal.h"
+#include "core/math/libm.h"
 
 namespace smpl {
 namespace demo {
@@ -52,7 +53,7 @@ enum Joint {
 constexpr int kNumShapes = 10;
 
 double clamp1(double v) { return std::clamp(v, -1.0, 1.0); }
-double gauss(double v, double sigma) { return std::exp(-(v / sigma) * (v / sigma)); }
+double gauss(double v, double sigma) { return libm::exp(-(v / sigma) * (v / sigma)); }
 double smoothMin(double a, double b, double k) {
   const double h = std::max(k - std::abs(a - b), 0.0) / k;
   return std::min(a, b) - h * h * k * 0.25;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/demo/demo_body_internal.h"
+#include "core/math/libm.h"
 
 namespace smpl {
 namespace demo {
@@ -30,7 +31,7 @@ Eigen::MatrixXd skinWeights(const Rig& rig, const Eigen::MatrixXd& vertices) {
     for (int k = 0; k < kNumJoints; ++k)
       best = std::min(best, d[k] = partDistance(rig.parts[k], row(vertices, i)));
     double sum = 0;
-    for (int k = 0; k < kNumJoints; ++k) sum += w(i, k) = std::exp(-(d[k] - best) / kSkinFalloff);
+    for (int k = 0; k < kNumJoints; ++k) sum += w(i, k) = libm::exp(-(d[k] - best) / kSkinFalloff);
     for (int k = 0; k < kNumJoints; ++k) w(i, k) = w(i, k) / sum < kMinWeight ? 0.0 : w(i, k);
     w.row(i) /= w.row(i).sum();
   }
@@ -48,7 +49,7 @@ Eigen::VectorXd tiltToJoint(const std::vector<V3>& pts, const Eigen::VectorXd& p
   for (int it = 0; it < 30; ++it) {
     for (int i = 0; i < w.size(); ++i) {
       const V3 d = pts[i] - joint;
-      w[i] = prior[i] * std::exp(lambda.x() * d.x + lambda.y() * d.y + lambda.z() * d.z);
+      w[i] = prior[i] * libm::exp(lambda.x() * d.x + lambda.y() * d.y + lambda.z() * d.z);
     }
     w /= w.sum();
     Eigen::Vector3d mean = Eigen::Vector3d::Zero();
@@ -87,7 +88,7 @@ Eigen::SparseMatrix<double, Eigen::RowMajor> jointRegressor(const Rig& rig,
       if (r > cutoff) continue;
       pts.push_back(row(vertices, i));
       ids.push_back(i);
-      prior.push_back(std::exp(-0.5 * r * r / (sigma * sigma)));
+      prior.push_back(libm::exp(-0.5 * r * r / (sigma * sigma)));
     }
     const Eigen::VectorXd w =
         tiltToJoint(pts, Eigen::Map<Eigen::VectorXd>(prior.data(), prior.size()), joint);

@@ -6,6 +6,7 @@
 #include "core/load/model_folder.h"
 #include "core/load/npz_arrays.h"
 #include "core/load/validate_inputs.h"
+#include "core/os/path.h"
 
 namespace smpl {
 
@@ -48,7 +49,7 @@ Result<std::string> findDmplBasis(const std::string& dir, const std::string& gen
     for (const std::string& sub : {std::string("dmpls/"), std::string()}) {
       const std::string p = dir + "/" + sub + g + "/model.npz";
       std::error_code ec;
-      if (fs::is_regular_file(p, ec)) {
+      if (fs::is_regular_file(os::fsPath(p), ec)) {
         if (g != wanted && note) *note = "no " + wanted + " DMPL basis in " + dir + "; using " + p;
         return p;
       }

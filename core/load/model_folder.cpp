@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/io/printable.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace {
@@ -194,7 +195,7 @@ std::vector<std::string> listModelFolder(const std::string& dir) {
   // Links are followed (a cluster's shared models are usually links, to files
   // or to kind folders); the depth limit bounds a link loop. Paths are the
   // links' own, relative to `dir` by name: fs::relative would resolve them.
-  fs::recursive_directory_iterator it(dir,
+  fs::recursive_directory_iterator it(os::fsPath(dir),
                                       fs::directory_options::skip_permission_denied |
                                           fs::directory_options::follow_directory_symlink,
                                       ec),
@@ -205,7 +206,7 @@ std::vector<std::string> listModelFolder(const std::string& dir) {
     // A dangling link is listed too: picked, it fails to load with its reason.
     const bool dangling = it->is_symlink(fec) && !it->exists(fec);
     if (it->is_regular_file(fec) || dangling)
-      files.push_back(it->path().lexically_relative(dir).generic_string());
+      files.push_back(os::genericUtf8(it->path().lexically_relative(os::fsPath(dir))));
   }
   std::sort(files.begin(), files.end());
   return files;

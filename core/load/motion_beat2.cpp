@@ -17,7 +17,7 @@ bool matchesBeat2(const DataNode& root) {
 Status decodePoses(const Array& poses, const std::string& path, Motion* m) {
   const auto& s = poses.shape;
   const bool flat = s.size() == 2 && s[1] == 165, split = s.size() == 3 && s[1] == 55 && s[2] == 3;
-  if (!flat && !split || s[0] < 1)
+  if ((!flat && !split) || s[0] < 1)
     return makeError(path + ": 'poses' has shape " + shapeString(s) +
                      "; expected (T,165) SMPL-X axis-angle");
   if (Status st = motion_detail::checkNumbers(poses, path, "poses"); !st) return st;

@@ -12,6 +12,7 @@
 #include "core/load/betas_rows.h"
 #include "core/load/motion_layout.h"
 #include "core/load/motion_tracks.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
@@ -30,16 +31,16 @@ struct FrameFile {
 // The per-frame files of `dir`, by frame then person; `ignored` counts the rest.
 Result<std::vector<FrameFile>> listFrames(const std::string& dir, size_t* ignored) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec))
+  if (!fs::is_directory(os::fsPath(dir), ec))
     return makeError(dir + ": not a directory (--motion-sequence)", ErrorKind::Load);
   std::vector<FrameFile> files;
-  for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator();
+  for (auto it = fs::directory_iterator(os::fsPath(dir), ec); !ec && it != fs::directory_iterator();
        it.increment(ec)) {
     FrameFile f;
-    f.path = it->path().string();
+    f.path = os::utf8(it->path());
     std::error_code e2;
     if (!it->is_regular_file(e2) ||
-        !parseFrameName(it->path().filename().string(), &f.frame, &f.person)) {
+        !parseFrameName(os::utf8(it->path().filename()), &f.frame, &f.person)) {
       ++*ignored;
       continue;
     }
@@ -99,9 +100,9 @@ struct Person {
 
 // The folder's name: the clip name of its tracks.
 std::string folderName(const std::string& dir) {
-  fs::path p = fs::path(dir).lexically_normal();
+  fs::path p = os::fsPath(dir).lexically_normal();
   if (p.filename().empty()) p = p.parent_path();
-  return p.filename().string();
+  return os::utf8(p.filename());
 }
 
 // The betas of one person over the files: identical -> that row, else their

@@ -7,6 +7,7 @@
 #include "core/load/motion_internal.h"
 #include "core/load/motion_tracks.h"
 #include "core/load/motion_video_rows.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace {
@@ -19,7 +20,7 @@ bool matchesTram(const DataNode& root) {
 // <dir of the track>/../camera.npy (TRAM's seq folder: hps/hps_track_<k>.npy).
 std::string cameraPath(const std::string& track_path) {
   namespace fs = std::filesystem;
-  return (fs::path(track_path).parent_path().parent_path() / "camera.npy").string();
+  return os::utf8(os::fsPath(track_path).parent_path().parent_path() / "camera.npy");
 }
 
 // Camera-to-world per row from camera.npy's world_cam_R/T at the rows' frames.
@@ -72,7 +73,7 @@ Status decodeTram(const DataNode& d, const LayoutInput& in, MotionSet* out) {
   if (!frames) return frames.error();
   const std::string camera = cameraPath(in.path);
   std::error_code ec;
-  const bool beside = std::filesystem::is_regular_file(camera, ec);
+  const bool beside = std::filesystem::is_regular_file(os::fsPath(camera), ec);
   const SourceParams want = in.options.source_params;
   if (want == SourceParams::Global && !beside)
     return makeError(in.path + ": --source-params global: no camera.npy beside the track (" +

@@ -6,6 +6,7 @@
 #include "core/io/file_io.h"
 #include "core/io/npy.h"
 #include "core/load/validate_inputs.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace {
@@ -13,7 +14,7 @@ namespace {
 // Without opening it: a FIFO must not block here (readNpyFile refuses special files).
 bool exists(const std::string& path) {
   std::error_code ec;
-  return std::filesystem::exists(path, ec);
+  return std::filesystem::exists(os::fsPath(path), ec);
 }
 
 Result<Eigen::MatrixXd> readMatrix(const std::string& path, int64_t rows, int64_t cols,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "core/math/rotation.h"
+
 namespace smpl {
 
 Eigen::Matrix3d rodrigues(const Eigen::Vector3d& axis_angle) {
@@ -15,7 +17,7 @@ Eigen::Matrix3d rodrigues(const Eigen::Vector3d& axis_angle) {
         axis_angle.x(), 0;
     return Eigen::Matrix3d::Identity() + k;
   }
-  return Eigen::AngleAxisd(angle, axis_angle / angle).toRotationMatrix();
+  return axisAngleMatrix(angle, axis_angle / angle);
 }
 
 Rotations rotationsFromAxisAngle(const Eigen::VectorXd& axis_angle) {

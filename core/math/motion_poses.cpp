@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/joint_names.h"
+#include "core/math/libm.h"
 #include "core/math/pose_sampler.h"
 
 namespace smpl {
@@ -115,7 +116,7 @@ Activities drawActivities(uint64_t* state) {
 
 // The shared part of joint `c`'s rotation for activities `a` (radians, x y z).
 Eigen::Vector3d shared(const JointClass& c, const Activities& a) {
-  const double s = std::sin(a.stride_phase) * c.side;  // left and right in opposite phase
+  const double s = libm::sin(a.stride_phase) * c.side;  // left and right in opposite phase
   const int hand = c.side > 0 ? 0 : 1;
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   const std::string& k = c.kind;
@@ -130,7 +131,7 @@ Eigen::Vector3d shared(const JointClass& c, const Activities& a) {
   if (k == "finger") v.z() = -c.side * 1.1 * a.grip[hand] * (c.digit == 1 ? 0.8 : 1.0);
   if (k.rfind("spine", 0) == 0 || k == "neck") {
     v.x() = 0.12 * a.lean_x + 0.07 * a.sit;
-    v.y() = 0.12 * a.lean_y + 0.05 * a.stride * std::sin(a.stride_phase);
+    v.y() = 0.12 * a.lean_y + 0.05 * a.stride * libm::sin(a.stride_phase);
     v.z() = 0.08 * a.lean_z;
   }
   return v;

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/load/dmpl.h"
+#include "core/os/path.h"
 #include "exporter/dmpl_targets.h"
 #include "exporter/request/check_request.h"
 #include "exporter/request/error_line.h"
@@ -19,7 +20,7 @@ Error failWith(const std::string& path, const std::string& message) {
 Result<std::string> dmplPath(const ExportRequest& s, const std::vector<Motion>& motions,
                              ExportReport* report) {
   std::error_code ec;
-  if (!std::filesystem::is_directory(s.dmpl, ec)) return s.dmpl;
+  if (!std::filesystem::is_directory(os::fsPath(s.dmpl), ec)) return s.dmpl;
   std::string note;
   Result<std::string> found =
       findDmplBasis(s.dmpl, motions.empty() ? "" : motions[0].gender, &note);

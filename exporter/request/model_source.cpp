@@ -5,6 +5,7 @@
 #include "core/demo/demo_body.h"
 #include "core/load/model_folder.h"
 #include "core/load/model_loader.h"
+#include "core/os/path.h"
 
 namespace smpl {
 
@@ -18,7 +19,7 @@ uint64_t modelBytes(const BodyModel& m) {
 
 bool ModelSource::isFolder() const {
   std::error_code ec;
-  return option_ != "builtin" && std::filesystem::is_directory(option_, ec);
+  return option_ != "builtin" && std::filesystem::is_directory(os::fsPath(option_), ec);
 }
 
 Result<ModelPick> ModelSource::load(const std::string& path, const std::string& name) {
@@ -59,7 +60,7 @@ Result<ModelPick> ModelSource::forMotion(const Motion* motion) {
   Result<ModelFileChoice> choice = chooseModelFile(listing_, kind, gender, option_);
   if (!choice) return choice.error();
   Result<ModelPick> pick =
-      load((std::filesystem::path(option_) / choice->path).string(), choice->path);
+      load(os::utf8(os::fsPath(option_) / os::fsPath(choice->path)), choice->path);
   if (pick) pick->note = choice->note;
   return pick;
 }

@@ -7,6 +7,7 @@
 
 #include "core/io/file_io.h"
 #include "core/load/model_folder.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
@@ -17,7 +18,7 @@ namespace {
 void addFolder(const std::string& dir, ContentHash* h) {
   for (const std::string& rel : listModelFolder(dir)) {
     std::error_code ec;
-    const fs::path path = fs::path(dir) / rel;
+    const fs::path path = os::fsPath(dir) / os::fsPath(rel);
     const auto size = fs::file_size(path, ec);
     const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
     h->add(rel + "/" + std::to_string(size) + "/" + std::to_string(time));
@@ -31,7 +32,7 @@ Status addInput(const std::string& tag, const std::string& path, ContentHash* h)
   h->add(tag);
   h->add(baseName(path));
   std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
+  const fs::file_status st = fs::status(os::fsPath(path), ec);
   if (path.empty() || ec || (tag == "model" && path == "builtin")) return Status();
   if (fs::is_directory(st)) {
     addFolder(path, h);
@@ -47,11 +48,11 @@ Status addInput(const std::string& tag, const std::string& path, ContentHash* h)
 // --dmpl DIR: every basis it can pick (core/load/dmpl.h findDmplBasis), by content.
 Status addDmplFolder(const std::string& dir, ContentHash* h) {
   std::error_code ec;
-  if (dir.empty() || !fs::is_directory(dir, ec)) return Status();
+  if (dir.empty() || !fs::is_directory(os::fsPath(dir), ec)) return Status();
   for (const char* sub : {"dmpls/", ""})
     for (const char* gender : {"female", "male", "neutral"}) {
       const std::string path = dir + "/" + sub + gender + "/model.npz";
-      if (!fs::is_regular_file(path, ec)) continue;
+      if (!fs::is_regular_file(os::fsPath(path), ec)) continue;
       if (Status st = addInput(std::string("dmpl ") + sub + gender, path, h); !st) return st;
     }
   return Status();
@@ -77,20 +78,20 @@ Result<ContentHash> producerBase(const ExportRequest& s) {
 std::string producerHash(ContentHash base, const std::vector<std::string>& motions) {
   for (const std::string& m : motions) {
     std::error_code ec;
-    if (fs::is_directory(m, ec)) {  // --motion-sequence DIR: each file's name and size
+    if (fs::is_directory(os::fsPath(m), ec)) {  // --motion-sequence DIR: each file's name and size
       std::vector<std::string> files;
-      for (auto it = fs::directory_iterator(m, ec); !ec && it != fs::directory_iterator();
-           it.increment(ec)) {
+      for (auto it = fs::directory_iterator(os::fsPath(m), ec);
+           !ec && it != fs::directory_iterator(); it.increment(ec)) {
         std::error_code e2;
         const auto size = it->is_regular_file(e2) ? it->file_size(e2) : 0;
-        files.push_back(it->path().filename().string() + " " + std::to_string(size));
+        files.push_back(os::utf8(it->path().filename()) + " " + std::to_string(size));
       }
       std::sort(files.begin(), files.end());
       base.add("sequence " + baseName(m));
       for (const std::string& f : files) base.add(f);
       continue;
     }
-    const auto size = fs::file_size(m, ec);
+    const auto size = fs::file_size(os::fsPath(m), ec);
     base.add("motion " + baseName(m) + " " + (ec ? std::string("?") : std::to_string(size)));
   }
   return base.hex();

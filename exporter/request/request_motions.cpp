@@ -5,6 +5,7 @@
 
 #include "core/load/motion_fit.h"
 #include "core/load/motion_sequence.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace {
@@ -26,7 +27,7 @@ Result<MotionSet> decodeMotionSet(const std::string& path, const ExportRequest& 
   if (!r.motion_sequence.empty() && path == r.motion_sequence)
     return loadMotionSequence(path, motionOptionsOf(r));
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
+  if (std::filesystem::is_directory(os::fsPath(path), ec))
     return makeError(path +
                      ": a folder: give --motion-sequence DIR for per-frame files of one motion, or "
                      "--motion-dir DIR --out-dir OUT to convert every motion in it");
@@ -49,7 +50,7 @@ Status resolveMotionHands(const BodyModel& model, const ExportRequest& request,
 }
 
 std::string trackOutput(const std::string& out, const std::string& id) {
-  const std::string name = std::filesystem::path(out).filename().string();
+  const std::string name = os::utf8(os::fsPath(out).filename());
   const size_t dot = name.rfind('.');
   const size_t cut = out.size() - name.size() + (dot == std::string::npos ? name.size() : dot);
   return out.substr(0, cut) + ".track" + id + out.substr(cut);

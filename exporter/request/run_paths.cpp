@@ -11,6 +11,7 @@
 #include "core/load/model_folder.h"
 #include "core/load/uv_npy.h"
 #include "core/os/files.h"
+#include "core/os/path.h"
 #include "plugins/writer.h"
 
 namespace smpl {
@@ -27,20 +28,20 @@ struct Identity {
 bool identify(const std::string& path, Identity* id) {
   if (!os::identify(path, &id->file)) return false;  // follows symlinks
   std::error_code ec;
-  const fs::path real = fs::canonical(path, ec);
-  id->real = ec ? std::string() : real.string();
+  const fs::path real = fs::canonical(os::fsPath(path), ec);
+  id->real = ec ? std::string() : os::utf8(real);
   return true;
 }
 
 bool isDirectory(const std::string& path) {
   std::error_code ec;
-  return !path.empty() && fs::is_directory(path, ec);
+  return !path.empty() && fs::is_directory(os::fsPath(path), ec);
 }
 
 // Each file of a model folder a pick may choose (core/load/model_folder.h).
 void addModelFolder(const std::string& dir, std::vector<std::string>* files) {
   for (const std::string& rel : listModelFolder(dir))
-    files->push_back((fs::path(dir) / rel).string());
+    files->push_back(os::utf8(os::fsPath(dir) / os::fsPath(rel)));
 }
 
 // Each basis findDmplBasis (core/load/dmpl.h) may pick from a --dmpl folder.
@@ -99,8 +100,8 @@ Status checkOutput(const std::string& out, const std::map<FileKey, std::string>&
 // existing part resolved (the same key whether the file exists yet or not).
 std::string outputKey(const std::string& path) {
   std::error_code ec;
-  const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  return ec ? path : p.string();
+  const fs::path p = fs::weakly_canonical(fs::absolute(os::fsPath(path), ec), ec);
+  return ec ? path : os::utf8(p);
 }
 
 Status checkOutputsDistinct(const RunPaths& paths) {

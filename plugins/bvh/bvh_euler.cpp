@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math/libm.h"
+#include "core/math/rotation.h"
+
 namespace smpl {
 namespace {
 
@@ -28,14 +31,14 @@ EulerZxy principal(const Eigen::Quaterniond& q, bool* locked) {
   const Eigen::Matrix3d r = q.normalized().toRotationMatrix();
   const double s = std::clamp(r(2, 1), -1.0, 1.0);
   EulerZxy e;
-  e.x = std::asin(s);
-  const double c = std::hypot(r(2, 0), r(2, 2));  // |cos x|
+  e.x = libm::asin(s);
+  const double c = libm::hypot(r(2, 0), r(2, 2));  // |cos x|
   *locked = !(c > 1e-7);  // below, the lock formula errs by at most c radians
   if (!*locked) {
-    e.z = std::atan2(-r(0, 1), r(1, 1));
-    e.y = std::atan2(-r(2, 0), r(2, 2));
+    e.z = libm::atan2(-r(0, 1), r(1, 1));
+    e.y = libm::atan2(-r(2, 0), r(2, 2));
   } else {
-    e.z = std::atan2(r(1, 0), r(0, 0));
+    e.z = libm::atan2(r(1, 0), r(0, 0));
     e.y = 0.0;
   }
   return e;
@@ -75,9 +78,9 @@ EulerZxy eulerZxyNear(const Eigen::Quaterniond& q, const EulerZxy& previous) {
 }
 
 Eigen::Quaterniond quaternionOfZxy(const EulerZxy& e) {
-  return Eigen::AngleAxisd(e.z, Eigen::Vector3d::UnitZ()) *
-         Eigen::AngleAxisd(e.x, Eigen::Vector3d::UnitX()) *
-         Eigen::AngleAxisd(e.y, Eigen::Vector3d::UnitY());
+  return axisAngleQuaternion(e.z, Eigen::Vector3d::UnitZ()) *
+         axisAngleQuaternion(e.x, Eigen::Vector3d::UnitX()) *
+         axisAngleQuaternion(e.y, Eigen::Vector3d::UnitY());
 }
 
 }  // namespace smpl

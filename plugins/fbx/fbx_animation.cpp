@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/math/libm.h"
 #include "plugins/fbx/fbx_scene_internal.h"
 
 namespace smpl {
@@ -18,10 +19,10 @@ constexpr double kPi = 3.14159265358979323846;
 // One solution of R = Rz(z) * Ry(y) * Rx(x); in gimbal lock x is kept at
 // `x_hint` and z absorbs the rest.
 Eigen::Vector3d eulerXYZ(const Eigen::Matrix3d& r, double x_hint) {
-  double y = std::asin(std::max(-1.0, std::min(1.0, -r(2, 0))));
-  if (std::abs(std::cos(y)) > 1e-9)
-    return {std::atan2(r(2, 1), r(2, 2)), y, std::atan2(r(1, 0), r(0, 0))};
-  double combined = std::atan2(-r(0, 1), r(1, 1));  // z - x at y=+90, z + x at y=-90
+  double y = libm::asin(std::max(-1.0, std::min(1.0, -r(2, 0))));
+  if (std::abs(libm::cos(y)) > 1e-9)
+    return {libm::atan2(r(2, 1), r(2, 2)), y, libm::atan2(r(1, 0), r(0, 0))};
+  double combined = libm::atan2(-r(0, 1), r(1, 1));  // z - x at y=+90, z + x at y=-90
   return {x_hint, y, y > 0 ? combined + x_hint : combined - x_hint};
 }
 

@@ -1,5 +1,26 @@
 #include "plugins/gltf/gltf_draco.h"
 
+#include "plugins/writer.h"
+
+#ifdef SMPL_NO_DRACO
+// Builds without Draco (the Windows build: Debian ships no Draco for
+// mingw-w64): --draco is refused by the request check (dracoAvailable()).
+namespace smpl {
+
+const char kNoDraco[] =
+    "--draco: this smpl-export was built without Draco (the Windows build: Debian ships no "
+    "Draco for mingw-w64); use --meshopt, or a Linux build";
+
+bool dracoAvailable() { return false; }
+
+Result<DracoBlob> encodeDraco(const MeshStreams&) { return makeError(kNoDraco); }
+
+Result<MeshStreams> decodeDraco(const std::string&, const std::map<std::string, int>&, size_t) {
+  return makeError(kNoDraco);
+}
+
+}  // namespace smpl
+#else
 #include <draco/compression/decode.h>
 #include <draco/compression/encode.h>
 #include <draco/mesh/mesh.h>
@@ -7,6 +28,9 @@
 #include <memory>
 
 namespace smpl {
+
+bool dracoAvailable() { return true; }
+
 namespace {
 
 // Adds one attribute with identity point mapping (point i = value i).
@@ -106,3 +130,4 @@ Result<MeshStreams> decodeDraco(const std::string& bytes,
 }
 
 }  // namespace smpl
+#endif  // SMPL_NO_DRACO

@@ -33,6 +33,8 @@ struct DracoBlob {
   std::map<std::string, int> attributes;  // glTF semantic -> Draco unique id
 };
 
+// Without Draco (SMPL_NO_DRACO, dracoAvailable() in writer.h) both fail with
+// the one-line reason.
 Result<DracoBlob> encodeDraco(const MeshStreams& mesh);
 
 // Decodes `bytes`; `attributes` as in the glTF extension. Fills positions,

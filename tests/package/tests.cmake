@@ -18,3 +18,10 @@ add_test(NAME package.cpack
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/cpack_test.sh ${SMPL_STATIC_BUILD_DIR} $<TARGET_FILE:smpl-export>
           ${PROJECT_VERSION} ${CMAKE_CURRENT_BINARY_DIR}/package_cpack)
 set_tests_properties(package.static_chroot package.cpack PROPERTIES LABELS package)
+# The Windows build (scripts/build-windows.sh) under wine against this build.
+set(SMPL_WINDOWS_BUILD_DIR "" CACHE PATH "A Windows (mingw-w64) build whose smpl-export.exe the wine test runs")
+add_test(NAME package.windows_wine
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/windows_wine_test.sh ${SMPL_WINDOWS_BUILD_DIR}/cli/smpl-export.exe
+          $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/package_windows_wine
+          ${CMAKE_BINARY_DIR}/wineprefix)
+set_tests_properties(package.windows_wine PROPERTIES LABELS package)

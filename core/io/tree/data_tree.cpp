@@ -5,6 +5,7 @@
 #include "core/io/tree/data_tree.h"
 
 #include <cstring>
+#include <string_view>
 
 #include "core/io/file_io.h"
 #include "core/io/mapped_file.h"
@@ -88,7 +89,8 @@ Result<Container> sniffContainer(const uint8_t* data, size_t size, const std::st
   if (i < size && (data[i] == '{' || data[i] == '[')) return Container::Json;
   if (size > 0 && (data[0] == 0x80 || pickleStart(data[0]))) {
     static const char kWrapper[] = "joblib.numpy_pickle";
-    const bool joblib = memmem(data, size, kWrapper, sizeof kWrapper - 1) != nullptr;
+    const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+    const bool joblib = bytes.find(kWrapper) != std::string_view::npos;
     return joblib ? Container::Joblib : Container::Pickle;
   }
   return Container::Unknown;
