@@ -17,6 +17,7 @@
 #include "core/load/motion_layout.h"
 #include "core/os/path.h"
 #include "core/os/system.h"
+#include "core/parallel.h"
 #include "exporter/request/error_line.h"
 
 namespace smpl {
@@ -98,8 +99,8 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   const std::vector<PlannedOutput>& motions = plan.outputs;
   std::vector<ManifestEntry> manifest(motions.size());
   const bool record = !s.request.manifest.empty();
-  const unsigned threads = s.request.threads ? static_cast<unsigned>(*s.request.threads)
-                                             : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads =
+      s.request.threads ? static_cast<unsigned>(*s.request.threads) : hardwareThreads();
   const size_t workers = std::min<size_t>(threads, std::max<size_t>(1, motions.size()));
   // Files in parallel, or one file's FBX arrays in parallel, never both:
   // `workers` jobs each compressing on `threads` cores would run threads^2.
@@ -172,9 +173,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
       progress(out + line + r->model_path);
     }
   };
-  std::vector<std::thread> pool;
-  for (size_t t = 0; t < workers; ++t) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
+  runWorkers(int(workers), [&](int, int) { worker(); });
   printFolded(notes, warnings, s.quiet);
   if (inputs.skins && inputs.skins->reused() > 0 && !s.quiet) {
     const int computed = inputs.skins->computed(), reused = inputs.skins->reused();

@@ -26,6 +26,7 @@
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 #include "core/os/system.h"
+#include "core/parallel.h"
 #include "exporter/request/run_request.h"
 #include "exporter/skin_cache.h"
 
@@ -69,8 +70,7 @@ int runBatchMode(const Settings& s, ModelSource* models, Stage* stage) {
   Result<RunInputs> inputs = loadRunInputs(s.request, models);
   if (!inputs) return report(inputs.message(), exitCodeFor(inputs.kind()));
   // The motions of one subject fit once: one subject per worker in flight, and the next.
-  const unsigned workers =
-      s.request.threads ? unsigned(*s.request.threads) : std::thread::hardware_concurrency();
+  const unsigned workers = s.request.threads ? unsigned(*s.request.threads) : hardwareThreads();
   inputs->skins = std::make_shared<SkinCache>(std::max(2u, workers + 1));
   if (!inputs->betas_note.empty() && !s.quiet)
     std::fprintf(stderr, "note: %s\n", inputs->betas_note.c_str());

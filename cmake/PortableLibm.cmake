@@ -3,14 +3,15 @@
 # bit for bit (scripts/portable-libm.sh says why and how).
 #   Linux: made at configure time from Debian's musl-dev (no download) into
 #          <build>/libm.
-#   Windows: made by scripts/windows-deps.sh from Debian's musl source package
+#   Windows, WebAssembly: made by scripts/windows-deps.sh / wasm-deps.sh from Debian's musl source package
 #          into SMPL_WIN_DEPS_PREFIX (found through the toolchain's root path).
-if(WIN32)
+if(WIN32 OR EMSCRIPTEN)
   find_library(SMPL_LIBM_LIBRARY smpl_m)
   find_path(SMPL_LIBM_INCLUDE_DIR smpl_m.h)
   if(NOT SMPL_LIBM_LIBRARY OR NOT SMPL_LIBM_INCLUDE_DIR)
-    message(FATAL_ERROR "libsmpl_m.a not found: run scripts/windows-deps.sh PREFIX and configure "
-                        "with -DSMPL_WIN_DEPS_PREFIX=PREFIX (scripts/build-windows.sh does both)")
+    message(FATAL_ERROR "libsmpl_m.a not found: run scripts/windows-deps.sh (or wasm-deps.sh) "
+                        "PREFIX and configure with its prefix (scripts/build-windows.sh, "
+                        "build-wasm.sh do both)")
   endif()
 else()
   set(_smpl_libm ${CMAKE_BINARY_DIR}/libm)

@@ -9,6 +9,7 @@
 #include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
+#include "core/parallel.h"
 #include "exporter/export_skin.h"
 
 namespace smpl {
@@ -53,7 +54,7 @@ Result<std::vector<SkinError>> measureSkinErrors(const BodyModel& model,
   in.body = &*body;
   in.frames = &frames;
   in.block = 16;  // two blocks for the default 32 poses: both cores
-  in.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  in.threads = static_cast<int>(hardwareThreads());
   std::vector<Eigen::MatrixXd> posed = forwardBatchSkins(model, in, skins);
   std::vector<SkinError> errs(cases.size());
   const Eigen::Index n = model.numVertices();

@@ -36,7 +36,10 @@ done
 case "$TARGET" in
   linux) CC=gcc; AR=ar; NM=nm; OBJCOPY=objcopy; LD=ld ;;
   mingw) T=x86_64-w64-mingw32; CC=$T-gcc-posix; AR=$T-ar; NM=$T-nm; OBJCOPY=$T-objcopy ;;
-  *) echo "portable-libm: --target linux or mingw" >&2; exit 2 ;;
+  # WebAssembly objects cannot be renamed by objcopy: the names are defined
+  # to their smpl_m_ forms and the sources compiled again (-include).
+  wasm) CC=emcc; AR=emar; NM=llvm-nm-14; OBJCOPY=true; export NODE_PATH=${NODE_PATH:-/usr/share/nodejs} ;;
+  *) echo "portable-libm: --target linux, mingw or wasm" >&2; exit 2 ;;
 esac
 mkdir -p "$PREFIX"; PREFIX="$(cd "$PREFIX" && pwd)"
 WORK="$PREFIX/.src"; STAMP="$PREFIX/share/smpl-win-deps/musl-libm.version"
@@ -113,13 +116,35 @@ FLAGS=(-std=c99 -nostdinc -ffreestanding -fno-builtin -fexcess-precision=standar
        -ffp-contract=off -O2 -fno-stack-protector -w -D_XOPEN_SOURCE=700 -I"$D/gen" -I"$M/arch/x86_64"
        -I"$M/arch/generic" -I"$M/src/include" -I"$M/src/internal" -I"$M/include")
 n=0
+skipped=""
 for c in "$M"/src/math/*.c; do  # generic C only (no src/math/x86_64 asm)
-  "$CC" "${FLAGS[@]}" -c "$c" -o "$D/obj/$(basename "$c" .c).o" || die "compiling $c failed"
+  if [ "$TARGET" = wasm ] && ! "$CC" "${FLAGS[@]}" -c "$c" -o "$D/obj/$(basename "$c" .c).o" 2>/dev/null; then
+    # x86 inline asm in musl's arch headers (fma, long-double helpers): not
+    # needed by the functions core/math/libm.h calls, checked below.
+    skipped="$skipped $(basename "$c")"
+    continue
+  fi
+  [ "$TARGET" = wasm ] || "$CC" "${FLAGS[@]}" -c "$c" -o "$D/obj/$(basename "$c" .c).o" || die "compiling $c failed"
   n=$((n + 1))
 done
+[ -z "$skipped" ] || step "musl $VER: skipped for $TARGET (x86 asm):$skipped"
 step "musl $VER: compiled $n files of src/math with $CC"
 "$NM" --defined-only -g "$D"/obj/*.o | awk 'NF==3 {print $3" smpl_m_"$3}' | sort -u >"$D/redefine.txt"
-for o in "$D"/obj/*.o; do "$OBJCOPY" --redefine-syms="$D/redefine.txt" "$o"; done
+if [ "$TARGET" = wasm ]; then
+  awk '{print "#define "$1" "$2}' "$D/redefine.txt" >"$D/rename.h"
+  for o in "$D"/obj/*.o; do
+    c="$M/src/math/$(basename "$o" .o).c"
+    "$CC" "${FLAGS[@]}" -include "$D/rename.h" -c "$c" -o "$o" 2>/dev/null || rm -f "$o"  # aliases
+  done
+  "$NM" --defined-only -g "$D"/obj/*.o >"$D/defined.txt"
+  for f in "${FUNCS1[@]}" "${FUNCS2[@]}"; do
+    grep -q " smpl_m_$f\$" "$D/defined.txt" || die "musl's $f was not built for $TARGET"
+  done
+  left=$("$NM" --defined-only -g "$D"/obj/*.o | awk 'NF==3 && $3 !~ /^smpl_m_/ {print $3}' | sort -u | tr '\n' ' ')
+  [ -z "$left" ] || die "symbols not renamed: $left"
+else
+  for o in "$D"/obj/*.o; do "$OBJCOPY" --redefine-syms="$D/redefine.txt" "$o"; done
+fi
 mkdir -p "$PREFIX/lib" "$PREFIX/include"
 rm -f "$PREFIX/lib/libsmpl_m.a"; "$AR" rcs "$PREFIX/lib/libsmpl_m.a" "$D"/obj/*.o
 write_header "$VER"

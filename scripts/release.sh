@@ -13,18 +13,15 @@
 #   SHA256SUMS
 # The binary is a SMPL_STATIC=ON build in build-release/ (only smpl-export and
 # the installed files are built; ccache makes a rebuild nearly free).
-# Not built yet (issue 26): the WebAssembly npm tarball. It is listed as "not
-# built"; asking for it explicitly (--npm, or --all) makes the script exit 1
-# after building the rest. --windows is accepted (the zip is always built).
+#   smpl-export-wasm-<version>.tgz           the WebAssembly npm package (scripts/build-wasm.sh;
+#                                   node CLI `smpl-export`, one thread, no Draco)
+# --windows, --npm and --all are accepted (every artifact is always built).
 #   scripts/release.sh [--windows] [--npm] [--all]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-want_npm=0
 for arg in "$@"; do
   case $arg in
-    --windows) ;;  # always built
-    --npm) want_npm=1 ;;
-    --all) want_npm=1 ;;
+    --windows | --npm | --all) ;;  # every artifact is always built
     *) echo "release.sh: unknown option '$arg' (expected --windows, --npm or --all)" >&2; exit 1 ;;
   esac
 done
@@ -69,17 +66,16 @@ with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
         info.external_attr = (0o755 if name.endswith(".exe") else 0o644) << 16
         z.writestr(info, open(src, "rb").read())
 PY
+# The WebAssembly npm package (build-wasm/npm: web/smpl-export-wasm/ and the built files).
+scripts/build-wasm.sh >build-windows-deps/wasm-build.log 2>&1 || {
+  tail -20 build-windows-deps/wasm-build.log >&2
+  echo "release.sh: the WebAssembly build failed (build-windows-deps/wasm-build.log)" >&2
+  exit 1
+}
+(cd build-wasm/npm && npm pack --silent --pack-destination "$dist" >/dev/null)
 # npm pack writes the UPM tarball layout (package/...); the Unity package has no scripts to run.
 (cd unity && npm pack --silent --pack-destination "$dist" >/dev/null)
-
-status=0
-not_built() {  # not_built WANTED WHAT
-  echo "not built: $2"
-  [[ $1 -eq 0 ]] || status=1
-}
-not_built $want_npm "the WebAssembly npm tarball (the emscripten build does not exist yet, issue 26 item 3)"
 
 (cd "$dist" && sha256sum -- * >SHA256SUMS)
 echo "dist/:"
 (cd "$dist" && ls -l | tail -n +2)
-exit $status

@@ -3,20 +3,22 @@
 # only calls apt-get when something is missing. Run as root (or with sudo).
 #   scripts/setup-deps.sh          build + test dependencies (Blender included)
 #   scripts/setup-deps.sh --build  only what building smpl-export needs
-#   scripts/setup-deps.sh --windows  that, and the Windows cross build's
-#                                  (mingw-w64, dpkg-dev for Debian's source
-#                                  packages, wine to run it: scripts/build-windows.sh)
+#   scripts/setup-deps.sh --windows  that, and the Windows and WebAssembly
+#                                  cross builds' (mingw-w64, emscripten, dpkg-dev
+#                                  for Debian's source packages, wine to run
+#                                  the .exe: scripts/build-windows.sh, build-wasm.sh)
+#   scripts/setup-deps.sh --wasm   the same as --windows
 set -euo pipefail
 
 build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev libmeshoptimizer-dev
             libssl-dev libdeflate-dev pkg-config python3 musl-dev)
 test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy python3-torch python3-joblib blender
            libassimp-dev mono-mcs ccache chromium clang-format zsh fish groff-base)
-windows_pkgs=(mingw-w64 libz-mingw-w64-dev dpkg-dev wine wine64)
+windows_pkgs=(mingw-w64 libz-mingw-w64-dev dpkg-dev wine wine64 emscripten)
 
 pkgs=("${build_pkgs[@]}")
 [[ "${1:-}" == "--build" ]] || pkgs+=("${windows_pkgs[@]}")
-if [[ "${1:-}" != "--build" && "${1:-}" != "--windows" ]]; then
+if [[ "${1:-}" != "--build" && "${1:-}" != "--windows" && "${1:-}" != "--wasm" ]]; then
   pkgs+=("${test_pkgs[@]}")
   # The glTF validator runs on Node.js: use the machine's node/npm when present
   # (any install), else Debian's.

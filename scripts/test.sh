@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh Debian machine: install dependencies,
-# build four times (Release for the integration tests; the static release
-# binary, from the same objects; the Windows executable, mingw-w64; clang
+# build five times (Release for the integration tests; the static release
+# binary, from the same objects; the Windows executable, mingw-w64; the
+# WebAssembly build, emscripten; clang
 # ASan + UBSan for the unit tests and the fuzzers), run each libFuzzer target briefly, then every
 # CTest test (unit tests sanitized; CLI, reliability, headless-Blender round
 # trips, glTF validator, web, runtimes, C# on the Release binaries); ctest's
@@ -37,12 +38,14 @@ phase "web (npm ci)" bash -c 'cd web && npm ci --no-audit --no-fund --loglevel=e
 # ccache (a test dependency) makes rebuilds of an unchanged tree nearly free.
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-# Four builds, each source file compiled once per build:
+# Five builds, each source file compiled once per build:
 #  build-test  Release (the quick start's flags): smpl-export, the tools and the
 #              integration tests (CLI, reliability, Blender, validator, web,
 #              runtimes, C#, package), which so run the binaries users run.
 #  build-windows smpl-export.exe, cross-compiled (scripts/build-windows.sh);
 #              the package tests run it under wine against build-test's binary.
+#  build-wasm  smpl-export.js + .wasm (scripts/build-wasm.sh), run in node by
+#              the package tests.
 #  build-static  the release binary (SMPL_STATIC=ON: no shared library, no
 #              loader) and its installed files only; compiled with
 #              build-test's flags, so its objects come from ccache. The
@@ -57,7 +60,7 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 # Options given explicitly: a build-test left by an older test.sh (sanitized) is reconfigured.
 cmake -S . -B build-test -DCMAKE_BUILD_TYPE=Release -DSMPL_SANITIZE=OFF -DSMPL_FUZZ=OFF \
   -DSMPL_RELIABILITY_EXE= -DSMPL_TEST_SET=integration -DSMPL_STATIC_BUILD_DIR="$PWD/build-static" \
-  -DSMPL_WINDOWS_BUILD_DIR="$PWD/build-windows" \
+  -DSMPL_WINDOWS_BUILD_DIR="$PWD/build-windows" -DSMPL_WASM_BUILD_DIR="$PWD/build-wasm" \
   "${launcher[@]}" >/dev/null
 phase "release build (integration)" cmake --build build-test -j"$jobs"
 cmake -S . -B build-static -DCMAKE_BUILD_TYPE=Release -DSMPL_STATIC=ON -DSMPL_BUILD_TESTS=OFF \
@@ -66,6 +69,9 @@ phase "static build (release binary)" cmake --build build-static -j"$jobs"
 # smpl-export.exe (mingw-w64; libdeflate, meshoptimizer and musl's libm from
 # Debian's source packages): package.windows_wine runs it under wine.
 phase "windows build (mingw-w64)" scripts/build-windows.sh
+# smpl-export.js + .wasm (emscripten; zlib, libdeflate, libmd, meshoptimizer,
+# musl's libm from Debian's source packages): package.wasm_node runs it in node.
+phase "wasm build (emscripten)" scripts/build-wasm.sh
 CC=clang CXX=clang++ cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSMPL_FUZZ=ON -DSMPL_TEST_SET=unit \
   -DSMPL_FIXTURE_DIR="$PWD/build-test/fixtures" "${launcher[@]}" >/dev/null

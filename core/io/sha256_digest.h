@@ -1,7 +1,8 @@
 // One SHA-256 computation (FIPS 180-4) by the platform's well-kept
 // implementation: OpenSSL's EVP API on POSIX builds (sha256_digest_posix.cpp,
 // Debian's libssl-dev), Windows' CNG (bcrypt) on Windows builds
-// (sha256_digest_win32.cpp). Used by sha256.cpp only.
+// (sha256_digest_win32.cpp), libmd on WebAssembly (sha256_digest_wasm.cpp).
+// Used by sha256.cpp only.
 #pragma once
 
 #include <cstddef>

@@ -11,6 +11,7 @@
 #include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skinning_transforms.h"
+#include "core/parallel.h"
 
 namespace smpl {
 namespace {
@@ -270,12 +271,9 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
   std::vector<Eigen::MatrixXd> deltas(cut.size());
   const int workers = std::max(1, std::min<int>(o.threads, int(work.size())));
   std::atomic<size_t> next{0};  // blocks are independent: any order gives the same result
-  std::vector<std::thread> pool;
-  for (int w = 0; w < workers; ++w)
-    pool.emplace_back([&] {
-      for (size_t j; (j = next++) < work.size();) fitBlock(c, sets[work[j].set], work[j], &deltas);
-    });
-  for (std::thread& t : pool) t.join();
+  runWorkers(workers, [&](int, int) {
+    for (size_t j; (j = next++) < work.size();) fitBlock(c, sets[work[j].set], work[j], &deltas);
+  });
   refit.block.assign(size_t(n), -1);
   int blocks = 0;
   for (const Eigen::MatrixXd& d : deltas) blocks += d.size() > 0 ? 1 : 0;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/huge_pages.h"
+#include "core/parallel.h"
 
 namespace smpl {
 namespace {
@@ -108,10 +109,7 @@ void run(const BodyModel& model, const BatchInput& in,
                std::min(block, frames - b * block), out);
   };
   const int workers = std::max(1, std::min(in.threads, blocks));
-  std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w) pool.emplace_back(work, w, workers);
-  work(0, workers);
-  for (std::thread& t : pool) t.join();
+  runWorkers(workers, work);
 }
 
 }  // namespace

@@ -9,7 +9,14 @@
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
+// The AVX2 and AVX-512 kernels exist on x86-64 only (GCC and clang's target
+// attributes); elsewhere (WebAssembly) the portable kernels are the only set.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define SMPL_X86_KERNELS 1
 #include <immintrin.h>
+#else
+#define SMPL_X86_KERNELS 0
+#endif
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -25,9 +32,9 @@ namespace {
 constexpr int kL = kBlockVertices;  // 16
 
 // Plain functions, not std::min/max templates, inside the target functions.
-inline int imin(int a, int b) { return a < b ? a : b; }
+[[maybe_unused]] inline int imin(int a, int b) { return a < b ? a : b; }
 inline int clampLanes(int count) { return count < 0 ? 0 : count > 8 ? 8 : count; }
-inline unsigned char laneMask(int lanes) {  // the low `lanes` (0..8) bits
+[[maybe_unused]] inline unsigned char laneMask(int lanes) {  // the low `lanes` (0..8) bits
   return static_cast<unsigned char>((1u << clampLanes(lanes)) - 1);
 }
 
@@ -50,6 +57,16 @@ struct SkinStep {
   size_t ld;
 };
 
+// out = m [x y z 1] for one vertex, m the blended 3x4 transform (float,
+// entry e at m[e * stride]), the position and the result in double.
+inline void transformVertex(const float* m, size_t stride, double x, double y, double z,
+                            double* dst) {
+  for (int r = 0; r < 3; ++r)
+    dst[r] = m[4 * r * stride] * x + m[(4 * r + 1) * stride] * y + m[(4 * r + 2) * stride] * z +
+             m[(4 * r + 3) * stride];
+}
+
+#if SMPL_X86_KERNELS
 // ---------------------------------------------------------------- AVX-512
 
 // One 48 x 8 tile: corr rows [0, 48) of 8 frames (stride kStepRows) =
@@ -288,15 +305,6 @@ __attribute__((target("avx2,fma"))) void gemmAvx2(const float* a, int depth, con
   }
 }
 
-// out = m [x y z 1] for one vertex, m the blended 3x4 transform (float,
-// entry e at m[e * stride]), the position and the result in double.
-inline void transformVertex(const float* m, size_t stride, double x, double y, double z,
-                            double* dst) {
-  for (int r = 0; r < 3; ++r)
-    dst[r] = m[4 * r * stride] * x + m[(4 * r + 1) * stride] * y + m[(4 * r + 2) * stride] * z +
-             m[(4 * r + 3) * stride];
-}
-
 // 8 vertices per step of the loop, 12 blended entries in 12 named
 // registers; the transform one vertex at a time.
 __attribute__((target("avx2,fma"))) void skinAvx2(const SkinStep& a) {
@@ -343,6 +351,8 @@ __attribute__((target("avx2,fma"))) void skinAvx2(const SkinStep& a) {
     }
   }
 }
+
+#endif  // SMPL_X86_KERNELS
 
 // ---------------------------------------------------------------- portable
 
@@ -398,23 +408,33 @@ struct KernelSet {
 
 KernelSet kernelSet(Kernels kernels) {
   switch (kernels) {
+#if SMPL_X86_KERNELS
     case Kernels::Avx512:
       return {&gemmAvx512, &skinAvx512, 8};
     case Kernels::Avx2:
       return {&gemmAvx2, &skinAvx2, 6};
+#endif
     default:
       return {&gemmPortable, &skinPortable, 0};
   }
 }
 
 bool haveAvx2Fma() {
+#if SMPL_X86_KERNELS
   static const bool have = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return have;
+#else
+  return false;
+#endif
 }
 
 bool haveAvx512() {  // libgcc checks that the OS saves the zmm and mask state
+#if SMPL_X86_KERNELS
   static const bool have = haveAvx2Fma() && __builtin_cpu_supports("avx512f");
   return have;
+#else
+  return false;
+#endif
 }
 
 }  // namespace

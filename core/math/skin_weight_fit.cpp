@@ -11,6 +11,7 @@
 #include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skinning_transforms.h"
+#include "core/parallel.h"
 
 namespace smpl {
 namespace {
@@ -301,12 +302,9 @@ SparseSkin fitSkinWeights(const BodyModel& model, const ShapedBody& body, const 
   skin.weights = Eigen::MatrixXd::Zero(n, m);
   const TrainingSet ts = trainingSet(model, body, o);
   const int workers = std::max(1, std::min<int>(o.threads, int(n / 256) + 1));
-  std::vector<std::thread> pool;
-  for (int w = 0; w < workers; ++w)
-    pool.emplace_back([&, w] {
-      for (Eigen::Index i = w; i < n; i += workers) fitVertex(model, ts, o, i, m, &skin);
-    });
-  for (std::thread& t : pool) t.join();
+  runWorkers(workers, [&](int w, int count) {
+    for (Eigen::Index i = w; i < n; i += count) fitVertex(model, ts, o, i, m, &skin);
+  });
   return skin;
 }
 

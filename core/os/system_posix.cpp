@@ -1,6 +1,10 @@
-// POSIX implementation of core/os/system.h.
-#include <sys/random.h>
+// POSIX implementation of core/os/system.h (Linux; also the WebAssembly
+// build, whose emscripten libc has getentropy, not getrandom).
 #include <unistd.h>
+
+#include <cstddef>
+// <cstddef> first: emscripten's sys/random.h uses size_t.
+#include <sys/random.h>
 
 #include "core/os/system.h"
 
@@ -9,7 +13,11 @@ namespace smpl::os {
 uint64_t processId() { return static_cast<uint64_t>(::getpid()); }
 
 bool randomBytes(void* out, size_t size) {
+#ifdef __EMSCRIPTEN__
+  return size <= 256 && ::getentropy(out, size) == 0;
+#else
   return ::getrandom(out, size, GRND_NONBLOCK) == static_cast<ssize_t>(size);
+#endif
 }
 
 uint64_t physicalMemoryBytes() {

@@ -145,8 +145,8 @@ Status checkRequest(const ExportRequest& r) {
     return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
   if (r.draco && !dracoAvailable())
     return usage(
-        "--draco: this smpl-export was built without Draco (the Windows build: Debian ships no "
-        "Draco for mingw-w64); use --meshopt, or a Linux build");
+        "--draco: this smpl-export was built without Draco (the Windows and WebAssembly builds: "
+        "Debian ships no Draco for them); use --meshopt, or a Linux build");
   if (r.meshopt && !meshoptAvailable())
     return usage(
         "--meshopt: this smpl-export was built without meshoptimizer (the static build: "

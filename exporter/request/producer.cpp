@@ -19,8 +19,10 @@ void addFolder(const std::string& dir, ContentHash* h) {
   for (const std::string& rel : listModelFolder(dir)) {
     std::error_code ec;
     const fs::path path = os::fsPath(dir) / os::fsPath(rel);
-    const auto size = fs::file_size(path, ec);
-    const auto time = fs::last_write_time(path, ec).time_since_epoch().count();
+    const auto size = static_cast<unsigned long long>(fs::file_size(path, ec));
+    // long long: the count may be wider (emscripten's libc++: __int128)
+    const auto time =
+        static_cast<long long>(fs::last_write_time(path, ec).time_since_epoch().count());
     h->add(rel + "/" + std::to_string(size) + "/" + std::to_string(time));
   }
 }

@@ -10,6 +10,8 @@
 #include <thread>
 #include <unordered_map>
 
+#include "core/parallel.h"
+
 namespace smpl {
 namespace {
 
@@ -136,13 +138,9 @@ std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector
       done[distinct[j]] = deflatePayload(compressor, pending[distinct[j]]->payload);
     if (compressor) libdeflate_free_compressor(compressor);
   };
-  const size_t wanted = options.threads > 0 ? size_t(options.threads)
-                                            : std::max(1u, std::thread::hardware_concurrency());
+  const size_t wanted = options.threads > 0 ? size_t(options.threads) : size_t(hardwareThreads());
   const size_t threads = std::min<size_t>(wanted, distinct.size());
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+  runWorkers(int(threads), [&](int, int) { work(); });
   std::unordered_map<const FbxProperty*, std::string> out;
   for (size_t i = pending.size(); i-- > 0;)  // copies (after their first) before it moves
     out.emplace(pending[i], first[i] == i ? std::move(done[i]) : done[first[i]]);

@@ -8,8 +8,8 @@
 namespace smpl {
 
 const char kNoDraco[] =
-    "--draco: this smpl-export was built without Draco (the Windows build: Debian ships no "
-    "Draco for mingw-w64); use --meshopt, or a Linux build";
+    "--draco: this smpl-export was built without Draco (the Windows and WebAssembly builds: "
+    "Debian ships no Draco for them); use --meshopt, or a Linux build";
 
 bool dracoAvailable() { return false; }
 

@@ -25,3 +25,9 @@ add_test(NAME package.windows_wine
           $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/package_windows_wine
           ${CMAKE_BINARY_DIR}/wineprefix)
 set_tests_properties(package.windows_wine PROPERTIES LABELS package)
+# The WebAssembly build (scripts/build-wasm.sh) with node against this build.
+set(SMPL_WASM_BUILD_DIR "" CACHE PATH "A WebAssembly (emscripten) build whose smpl-export.js the node test runs")
+add_test(NAME package.wasm_node
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/wasm_node_test.sh ${SMPL_WASM_BUILD_DIR}/npm/bin/smpl-export.js
+          $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/package_wasm_node)
+set_tests_properties(package.wasm_node PROPERTIES LABELS package)

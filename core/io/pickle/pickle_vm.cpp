@@ -2,8 +2,10 @@
 // object graph in a Heap. Globals are resolved against the allow-list in
 // pickle_objects.cpp; nothing named in the data is ever imported or called.
 #include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <unordered_map>
 
@@ -310,8 +312,19 @@ Status Vm::textFloat(const std::string& line) {
   std::string s = trimmed(line);
   if (!s.empty() && s[0] == '+') s.erase(0, 1);
   double v = 0;
+#ifdef __EMSCRIPTEN__
+  // emscripten 3.1.6's libc++ has no floating-point from_chars: strtod (the
+  // "C" locale, correctly rounded as from_chars), without hex floats.
+  char* end = nullptr;
+  const bool hex = s.find_first_of("xX") != std::string::npos;
+  errno = 0;
+  if (!s.empty() && !hex) v = std::strtod(s.c_str(), &end);
+  const bool bad = s.empty() || hex || end != s.c_str() + s.size() || errno == ERANGE;
+#else
   auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size()) {
+  const bool bad = s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size();
+#endif
+  if (bad) {
     return fail("FLOAT opcode at byte " + std::to_string(op_pos_) + " has a bad value");
   }
   return pushFloat(v);
