@@ -14,8 +14,8 @@
 #                   mingw-w64), src/math/*.c compiled with
 #                   x86_64-w64-mingw32-gcc-posix (generic C, no asm; the
 #                   x86_64 asm files are long-double functions and sqrt, which
-#                   is exact either way). Same private-apt method as
-#                   scripts/windows-deps.sh (nothing in /etc/apt changes).
+#                   is exact either way). Debian sources through
+#                   scripts/debian-source.sh (nothing in /etc/apt changes).
 # Both are musl 1.2.3 in bookworm; that they agree bit for bit is what the
 # wine test checks (tests/package/windows_wine_test.sh: outputs byte-identical).
 #
@@ -85,24 +85,19 @@ for tool in "$CC" "$AR" "$NM" "$OBJCOPY" apt-get apt-cache dpkg-source; do
   command -v "$tool" >/dev/null || die "$tool not found"
 done
 
-APTDIR="$WORK/apt"
-mkdir -p "$APTDIR/lists/partial" "$APTDIR/cache/archives/partial" "$(dirname "$STAMP")"
-echo "deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] ${SMPL_WIN_DEPS_MIRROR:-http://deb.debian.org/debian} ${SMPL_WIN_DEPS_SUITE:-bookworm} main" >"$APTDIR/sources.list"
-APT_OPTS=(-o "Dir::Etc::SourceList=$APTDIR/sources.list" -o "Dir::Etc::SourceParts=/dev/null"
-          -o "Dir::State::Lists=$APTDIR/lists" -o "Dir::Cache=$APTDIR/cache" -o "APT::Sandbox::User=root" -qq)
-apt-get "${APT_OPTS[@]}" update >"$WORK/apt-update.log" 2>&1 && step "apt source index updated" ||
-  step "apt source index update failed; using the stored index, if any"
-VER="$(apt-cache "${APT_OPTS[@]}" showsrc musl 2>/dev/null | awk '/^Version:/ {print $2; exit}')"
+# shellcheck source=scripts/debian-source.sh
+source "$(dirname "$0")/debian-source.sh"
+mkdir -p "$(dirname "$STAMP")"
+debsrc_init "$WORK"
+VER="$(debsrc_version musl)"
 if [ -f "$PREFIX/lib/libsmpl_m.a" ] && [ -f "$STAMP" ] && { [ -z "$VER" ] || [ "$(cat "$STAMP")" = "$VER $TARGET" ]; }; then
   step "musl libm $(cat "$STAMP") already in $PREFIX/lib/libsmpl_m.a, skipped"; exit 0
 fi
 [ -n "$VER" ] || die "apt knows no source package musl"
-UP="${VER%-*}"; D="$WORK/musl"
-rm -rf "$D"; mkdir -p "$D"
+D="$WORK/musl"
 step "musl $VER: downloading the Debian source package"
-(cd "$D" && apt-get "${APT_OPTS[@]}" source --download-only "musl=$VER" >download.log 2>&1) || die "download failed ($D/download.log)"
-(cd "$D" && dpkg-source -x ./*.dsc "musl-$UP" >unpack.log 2>&1) || die "dpkg-source failed ($D/unpack.log)"
-M="$D/musl-$UP"; step "musl $VER: unpacked in $M"
+M="$(debsrc_fetch musl "$VER")" || die "cannot get the source of musl=$VER"
+step "musl $VER: unpacked in $M"
 
 # musl's x86_64 types, with 64-bit types spelled 'long long' and LONG_MAX
 # taken from the compiler, so that the same headers are right for LP64

@@ -53,38 +53,13 @@ for tool in "$CC" "$CXX" "$AR" apt-get apt-cache dpkg-source make; do
 done
 step "toolchain $("$CC" -dumpversion) ($CC), prefix $PREFIX"
 
-# --- private apt state: deb-src only, never touches /etc/apt or /var/lib/apt
-APTDIR="$WORK/apt"
-mkdir -p "$APTDIR/lists/partial" "$APTDIR/cache/archives/partial" "$STAMPS"
-echo "deb-src [signed-by=$KEYRING] $MIRROR $SUITE main" >"$APTDIR/sources.list"
-APT_OPTS=(-o "Dir::Etc::SourceList=$APTDIR/sources.list" -o "Dir::Etc::SourceParts=/dev/null"
-          -o "Dir::State::Lists=$APTDIR/lists" -o "Dir::Cache=$APTDIR/cache"
-          -o "APT::Sandbox::User=root" -qq)
-if apt-get "${APT_OPTS[@]}" update >"$WORK/apt-update.log" 2>&1; then
-  step "apt source index ($SUITE, deb-src) updated"
-else
-  step "apt source index update failed (see $WORK/apt-update.log); using the stored index, if any"
-fi
-
-# Debian source version that apt offers now ("" if unknown).
-src_version() {
-  apt-cache "${APT_OPTS[@]}" showsrc "$1" 2>/dev/null | awk '/^Version:/ {print $2; exit}'
-}
-
-# fetch_source PKG VERSION -> prints the unpacked source folder
-fetch_source() {
-  local pkg="$1" ver="$2" dir="$WORK/$1"
-  local upstream="${ver#*:}"; upstream="${upstream%-*}"
-  rm -rf "$dir"; mkdir -p "$dir"
-  (cd "$dir" && apt-get "${APT_OPTS[@]}" source --download-only "$pkg=$ver" >"$dir/download.log" 2>&1) ||
-    die "apt-get source $pkg=$ver failed (see $dir/download.log)"
-  local dsc; dsc="$(ls "$dir"/*.dsc)"
-  # dpkg-source checks the files' checksums against the .dsc (whose own
-  # checksum apt verified against the signed Release file).
-  (cd "$dir" && dpkg-source -x "$dsc" "$pkg-$upstream" >"$dir/unpack.log" 2>&1) ||
-    die "dpkg-source -x $dsc failed (see $dir/unpack.log)"
-  echo "$dir/$pkg-$upstream"
-}
+# --- Debian source packages through a private apt state (scripts/debian-source.sh)
+# shellcheck source=scripts/debian-source.sh
+source "$(dirname "$0")/debian-source.sh"
+SMPL_DEB_SUITE=$SUITE SMPL_DEB_MIRROR=$MIRROR SMPL_DEB_KEYRING=$KEYRING debsrc_init "$WORK"
+step "apt source index ($SUITE, deb-src) updated"
+src_version() { debsrc_version "$1"; }
+fetch_source() { debsrc_fetch "$1" "$2" || die "cannot get the source of $1=$2"; }
 
 # up_to_date NAME FILE VERSION: FILE exists and the stamp names VERSION
 up_to_date() {

@@ -9,13 +9,26 @@
 #include "core/os/files.h"
 
 namespace smpl {
+namespace {
+
+// The digest as 64 lowercase hex digits; empty on failure.
+std::string finishHex(Sha256Digest& digest) {
+  unsigned char bytes[Sha256Digest::kBytes];
+  if (!digest.finish(bytes)) return std::string();
+  static const char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (unsigned char b : bytes) out += std::string{kHex[b >> 4], kHex[b & 15]};
+  return out;
+}
+
+}  // namespace
 
 std::string sha256Hex(const void* data, size_t size) { return sha256Hex(data, size, nullptr, 0); }
 
 std::string sha256Hex(const void* data, size_t size, const void* tail, size_t tail_size) {
   Sha256Digest digest;
   if (!digest.update(data, size) || !digest.update(tail, tail_size)) return std::string();
-  return digest.finishHex();
+  return finishHex(digest);
 }
 
 std::string sha256Hex(const std::string& bytes) { return sha256Hex(bytes.data(), bytes.size()); }
@@ -33,7 +46,7 @@ Result<std::string> sha256File(const std::string& path) {
     if (!digest.update(chunk.data(), static_cast<size_t>(n)))
       return makeError(path + ": SHA-256 failed");
   }
-  std::string hex = digest.finishHex();
+  std::string hex = finishHex(digest);
   if (hex.empty()) return makeError(path + ": SHA-256 failed");
   return hex;
 }

@@ -7,7 +7,6 @@
 
 #include <cstddef>
 #include <memory>
-#include <string>
 
 namespace smpl {
 
@@ -20,8 +19,9 @@ class Sha256Digest {
 
   bool ok() const { return state_ != nullptr; }
   bool update(const void* data, size_t size);  // false on failure
-  // The 32-byte digest as 64 lowercase hex digits; empty on failure.
-  std::string finishHex();
+  static constexpr size_t kBytes = 32;
+  // The digest; false on failure. Once per object.
+  bool finish(unsigned char digest[kBytes]);
 
  private:
   struct State;

@@ -1,6 +1,8 @@
 // Sha256Digest on OpenSSL's EVP digest API (POSIX builds).
 #include <openssl/evp.h>
 
+#include <algorithm>
+
 #include "core/io/sha256_digest.h"
 
 namespace smpl {
@@ -21,15 +23,12 @@ bool Sha256Digest::update(const void* data, size_t size) {
   return state_ && (size == 0 || EVP_DigestUpdate(state_->ctx, data, size) == 1);
 }
 
-std::string Sha256Digest::finishHex() {
-  unsigned char digest[EVP_MAX_MD_SIZE];
+bool Sha256Digest::finish(unsigned char digest[kBytes]) {
+  unsigned char out[EVP_MAX_MD_SIZE];
   unsigned int size = 0;
-  if (!state_ || EVP_DigestFinal_ex(state_->ctx, digest, &size) != 1) return std::string();
-  static const char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (unsigned int i = 0; i < size; ++i)
-    out += std::string{kHex[digest[i] >> 4], kHex[digest[i] & 15]};
-  return out;
+  if (!state_ || EVP_DigestFinal_ex(state_->ctx, out, &size) != 1 || size != kBytes) return false;
+  std::copy(out, out + kBytes, digest);
+  return true;
 }
 
 }  // namespace smpl

@@ -20,14 +20,10 @@ bool Sha256Digest::update(const void* data, size_t size) {
   return true;
 }
 
-std::string Sha256Digest::finishHex() {
-  if (!state_) return std::string();
-  uint8_t digest[SHA256_DIGEST_LENGTH];
+bool Sha256Digest::finish(unsigned char digest[kBytes]) {
+  if (!state_) return false;
   SHA256Final(digest, &state_->ctx);
-  static const char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (uint8_t b : digest) out += std::string{kHex[b >> 4], kHex[b & 15]};
-  return out;
+  return true;
 }
 
 }  // namespace smpl

@@ -39,14 +39,8 @@ bool Sha256Digest::update(const void* data, size_t size) {
   return true;
 }
 
-std::string Sha256Digest::finishHex() {
-  UCHAR digest[32];
-  if (!state_ || BCryptFinishHash(state_->hash, digest, sizeof digest, 0) != 0)
-    return std::string();
-  static const char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (UCHAR b : digest) out += std::string{kHex[b >> 4], kHex[b & 15]};
-  return out;
+bool Sha256Digest::finish(unsigned char digest[kBytes]) {
+  return state_ && BCryptFinishHash(state_->hash, digest, kBytes, 0) == 0;
 }
 
 }  // namespace smpl
