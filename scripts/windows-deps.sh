@@ -44,6 +44,7 @@ KEYRING="${SMPL_WIN_DEPS_KEYRING:-/usr/share/keyrings/debian-archive-keyring.gpg
 JOBS="${SMPL_WIN_DEPS_JOBS:-2}"
 WORK="$PREFIX/.src"
 STAMPS="$PREFIX/share/smpl-win-deps"
+mkdir -p "$STAMPS"
 
 step() { echo "windows-deps: $*"; }
 die() { echo "windows-deps: error: $*" >&2; exit 1; }
