@@ -3,6 +3,8 @@
 # build-wasm/cli/smpl-export.js + smpl-export.wasm: run it with node
 # (`node build-wasm/cli/smpl-export.js --model builtin --out body.glb`); the
 # same options and the same output bytes as the native binary, one thread.
+# Also build-wasm/cli/smpl-export-web.mjs + .wasm: the in-memory module behind
+# the JS API exportAsset() (web/smpl-export-wasm/index.mjs), for browsers and node.
 # The libraries come from Debian's source packages (scripts/wasm-deps.sh,
 # into build-wasm-deps/; nothing of theirs is committed). ccache, when
 # present, caches the compiles.
@@ -18,8 +20,9 @@ cmake -S . -B build-wasm -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/wasm.cmake" -DSMPL_W
   echo "build-wasm.sh: configure failed ($deps/configure.log)" >&2
   exit 1
 }
-cmake --build build-wasm -j"$(nproc)" --target smpl-export
+cmake --build build-wasm -j"$(nproc)" --target smpl-export smpl-export-web
 # The npm package folder: web/smpl-export-wasm/ and the two built files.
 rm -rf build-wasm/npm && cp -r web/smpl-export-wasm build-wasm/npm
-cp build-wasm/cli/smpl-export.js build-wasm/cli/smpl-export.wasm build-wasm/npm/
+cp build-wasm/cli/smpl-export.js build-wasm/cli/smpl-export.wasm build-wasm/cli/smpl-export-web.mjs \
+  build-wasm/cli/smpl-export-web.wasm build-wasm/npm/
 echo "build-wasm.sh: $(stat -c %s build-wasm/cli/smpl-export.wasm) bytes, build-wasm/cli/smpl-export.js + .wasm; npm package folder build-wasm/npm"

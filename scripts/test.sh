@@ -44,8 +44,9 @@ command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 #              runtimes, C#, package), which so run the binaries users run.
 #  build-windows smpl-export.exe, cross-compiled (scripts/build-windows.sh);
 #              the package tests run it under wine against build-test's binary.
-#  build-wasm  smpl-export.js + .wasm (scripts/build-wasm.sh), run in node by
-#              the package tests.
+#  build-wasm  smpl-export.js + .wasm and smpl-export-web.mjs + .wasm
+#              (scripts/build-wasm.sh): the package tests run the CLI and the
+#              JS API in node and the viewer's convert panel in Chromium.
 #  build-static  the release binary (SMPL_STATIC=ON: no shared library, no
 #              loader) and its installed files only; compiled with
 #              build-test's flags, so its objects come from ccache. The
@@ -70,7 +71,8 @@ phase "static build (release binary)" cmake --build build-static -j"$jobs"
 # Debian's source packages): package.windows_wine runs it under wine.
 phase "windows build (mingw-w64)" scripts/build-windows.sh
 # smpl-export.js + .wasm (emscripten; zlib, libdeflate, libmd, meshoptimizer,
-# musl's libm from Debian's source packages): package.wasm_node runs it in node.
+# musl's libm from Debian's source packages): package.wasm_node, .wasm_api
+# (node) and .wasm_browser (Chromium) run it.
 phase "wasm build (emscripten)" scripts/build-wasm.sh
 CC=clang CXX=clang++ cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSMPL_FUZZ=ON -DSMPL_TEST_SET=unit \

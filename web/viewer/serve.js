@@ -1,5 +1,8 @@
 // Serve the viewer offline: web/ over HTTP on localhost (three.js from
 // web/node_modules, the driver from web/smpl-correctives; nothing from a CDN).
+// /smpl-export-wasm/ is the built npm package of the WebAssembly build, for
+// the viewer's "convert" panel: $SMPL_EXPORT_WASM_DIR, else build-wasm/npm of
+// this checkout (scripts/build-wasm.sh); without it the panel says so.
 //
 //   npm start                 (in web/, after npm ci)  -> http://localhost:8080/viewer/
 //   node viewer/serve.js [port]
@@ -15,12 +18,24 @@ const TYPES = {
   '.json': 'application/json', '.png': 'image/png', '.wasm': 'application/wasm',
 };
 
-/** Start the server; resolves to the http.Server (port 0: any free port). */
-export function startServer(port = 8080, host = '127.0.0.1') {
+const WASM_PREFIX = '/smpl-export-wasm/';
+const DEFAULT_WASM_DIR = path.join(ROOT, '..', 'build-wasm', 'npm');
+
+/**
+ * Start the server; resolves to the http.Server (port 0: any free port).
+ * wasmDir: the folder served at /smpl-export-wasm/ (the built npm package).
+ */
+export function startServer(port = 8080, host = '127.0.0.1',
+                            wasmDir = process.env.SMPL_EXPORT_WASM_DIR || DEFAULT_WASM_DIR) {
   const server = http.createServer((req, res) => {
     const url = new URL(req.url, 'http://localhost');
-    let file = path.normalize(path.join(ROOT, decodeURIComponent(url.pathname)));
-    if (file !== ROOT && !file.startsWith(ROOT + path.sep)) {
+    let base = ROOT, rel = decodeURIComponent(url.pathname);
+    if (rel.startsWith(WASM_PREFIX)) {
+      base = path.resolve(wasmDir);
+      rel = rel.slice(WASM_PREFIX.length - 1);
+    }
+    let file = path.normalize(path.join(base, rel));
+    if (file !== base && !file.startsWith(base + path.sep)) {
       res.writeHead(403).end('forbidden');
       return;
     }

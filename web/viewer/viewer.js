@@ -1,6 +1,7 @@
 // The smpl-export viewer: load a .glb / .fbx (+ sidecar), orbit, play the
 // baked animations, toggle the pose correctives, pose joints with sliders,
-// and show the counts and the per-frame corrective weights.
+// and show the counts and the per-frame corrective weights; convert a model
+// file (+ a motion) in the page with the WebAssembly build (convert.js).
 //
 // The floor grid is at the body's lowest point over its clip (the rest
 // pose's for a file without one), so a body exported with --origin floor or
@@ -15,6 +16,7 @@ import { FBXLoader } from 'three/addons/loaders/FBXLoader.js';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { applyFbxUnitScale, bindCorrectives, metadataFromGltf } from 'smpl-correctives';
+import { setupConvert } from './convert.js';
 
 const $ = (id) => document.getElementById(id);
 const MAX_BOUND_SAMPLES = 300;  // clip times skinned on the CPU for the animated bounds
@@ -371,4 +373,5 @@ window.smplViewer = {
   info: () => ({ ...state.info }),
   get correctives() { return state.correctives; },
 };
+setupConvert(load);
 document.body.dataset.ready = 'true';
