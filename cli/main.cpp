@@ -24,6 +24,7 @@
 #include "cli/settings.h"
 #include "cli/summary.h"
 #include "core/io/printable.h"
+#include "core/math/eigen_blocking.h"
 #include "core/memory_budget.h"
 #include "core/os/system.h"
 #include "core/parallel.h"
@@ -112,6 +113,7 @@ int run(int argc, char** argv, Stage* stage) {
 
 int main(int argc, char** argv) {
   Stage stage;
+  useFixedEigenBlocking();  // the same sums on every machine (core/math/eigen_blocking.h)
   try {
     os::prepareStandardStreams();
     os::Utf8Arguments args(argc, argv);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/math/eigen_blocking.h"
 #include "exporter/asset_names.h"
 #include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
@@ -55,6 +56,7 @@ Status placeAsset(const BodyModel& model, const ExportOptions& options,
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl,
                           SkinCache* skins) {
+  useFixedEigenBlocking();
   ExportOptions resolved = options;
   resolved.encoding =
       resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);

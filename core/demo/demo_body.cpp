@@ -3,6 +3,7 @@
 
 #include "core/demo/demo_body_internal.h"
 #include "core/joint_names.h"
+#include "core/math/eigen_blocking.h"
 
 namespace smpl {
 namespace demo {
@@ -18,6 +19,7 @@ constexpr uint64_t kFitSeed = 0x5EED0DE3017ull;
 }  // namespace
 
 BodyModel buildDemoBody() {
+  useFixedEigenBlocking();  // its fits are products too
   const Rig& r = rig();
   Mesh mesh = polygonise(r, kCell);
   BodyModel m;
