@@ -185,8 +185,8 @@ std::string metadataJson(const Asset& asset) { return dump(metadataObject(asset)
 std::vector<RecordedOutput> recordOutputs(const std::vector<FileContent>& outputs) {
   std::vector<RecordedOutput> records;
   for (const FileContent& f : outputs)
-    records.push_back(RecordedOutput{escapeInvalidUtf8(baseName(f.path)), f.size + f.tail_size,
-                                     sha256Hex(f.data, f.size, f.tail, f.tail_size)});
+    records.push_back(RecordedOutput{escapeInvalidUtf8(baseName(f.path)), f.totalSize(),
+                                     sha256Hex(f.data, f.size, f.tail)});
   return records;
 }
 

@@ -19,6 +19,39 @@ bool endsWithNoCase(const std::string& text, const std::string& suffix) {
   });
 }
 
+}  // namespace
+
+std::vector<ByteSpan> Writer::Files::tailParts() const {
+  std::vector<ByteSpan> parts;
+  size_t from = 0;
+  for (const Splice& s : splices) {
+    parts.push_back({tail.data() + from, s.at - from});
+    parts.push_back(s.bytes);
+    from = s.at;
+  }
+  parts.push_back({tail.data() + from, tail.size() - from});
+  return parts;
+}
+
+size_t Writer::Files::size() const {
+  size_t n = bytes.size() + tail.size();
+  for (const Splice& s : splices) n += s.bytes.size;
+  return n;
+}
+
+std::string withSplices(const std::string& bin, const std::vector<Writer::Splice>& splices) {
+  std::string out;
+  size_t from = 0;
+  for (const Writer::Splice& s : splices) {
+    out.append(bin, from, s.at - from);
+    out.append(static_cast<const char*>(s.bytes.data), s.bytes.size);
+    from = s.at;
+  }
+  return out.append(bin, from, std::string::npos);
+}
+
+namespace {
+
 std::deque<WriterFormat>& table() {
   static std::deque<WriterFormat> rows = [] {
     const std::vector<std::string> gltf_options = {"--corrective-epsilon", "--quantize-morphs",

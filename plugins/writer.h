@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/byte_span.h"
 #include "core/result.h"
 #include "exporter/asset.h"
 
@@ -42,18 +43,30 @@ struct Writer {
   virtual ~Writer() = default;
   virtual const char* name() const = 0;
   virtual Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const = 0;
+  // Bytes of the asset itself (valid while the asset is) that the output
+  // holds just before tail[at]: written from where they are, never copied
+  // (a GLB's morph weight keys, the largest array of a long clip).
+  struct Splice {
+    size_t at = 0;
+    ByteSpan bytes;
+  };
   // The output's bytes and, when options.buffer_uri is set (.gltf), the
   // external buffer's bytes (`buffer`, written beside the output under that
   // name). Formats with one file return serialize() and no buffer.
   struct Files {
     std::string bytes;
     std::string buffer;
-    std::string tail;  // the output file is bytes + tail (a GLB's BIN chunk, not copied)
+    // The output file is bytes + tail (a GLB's BIN chunk, not copied) with the
+    // splices (ascending `at`) inserted.
+    std::string tail = {};
+    std::vector<Splice> splices = {};
+    std::vector<ByteSpan> tailParts() const;  // tail and splices in file order
+    size_t size() const;                      // of the output file (bytes + tail + splices)
   };
   virtual Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const {
     Result<std::string> bytes = serialize(asset, options);
     if (!bytes) return bytes.error();
-    return Files{std::move(*bytes), std::string(), std::string()};
+    return Files{std::move(*bytes), std::string()};
   }
 };
 
@@ -88,6 +101,10 @@ const std::deque<WriterFormat>& writerFormats();
 
 // The row whose extension `path` ends with (any case), or null.
 const WriterFormat* writerFormatForPath(const std::string& path);
+
+// `bin` with the splices inserted: the whole tail as one string (a .gltf,
+// whose buffer is embedded or a file of its own, and serialize()).
+std::string withSplices(const std::string& bin, const std::vector<Writer::Splice>& splices);
 
 // The row named `name` (--format), or null.
 const WriterFormat* writerFormatByName(const std::string& name);

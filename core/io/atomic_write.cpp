@@ -108,8 +108,9 @@ Status createTemp(const std::string& path, Temp* t) {
 }
 
 Status writeTemp(Temp* t, const FileContent& f) {
-  if (!t->file.writeAll(f.data, f.size) || !t->file.writeAll(f.tail, f.tail_size))
-    return ioError(f.path, "cannot write", os::errorText());
+  bool written = t->file.writeAll(f.data, f.size);
+  for (const ByteSpan& part : f.tail) written = written && t->file.writeAll(part.data, part.size);
+  if (!written) return ioError(f.path, "cannot write", os::errorText());
   if (!t->file.sync()) return ioError(f.path, "cannot write (fsync)", os::errorText());
   return Status();
 }
@@ -196,6 +197,12 @@ void setCommitHookForTesting(void (*hook)(size_t)) { g_commit_hook.store(hook); 
 
 Status writeFileAtomic(const std::string& path, const void* data, size_t size) {
   return writeFilesTogether({FileContent{path, data, size}});
+}
+
+size_t FileContent::totalSize() const {
+  size_t n = size;
+  for (const ByteSpan& part : tail) n += part.size;
+  return n;
 }
 
 Status writeFilesTogether(const std::vector<FileContent>& files) {

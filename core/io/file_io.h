@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "core/byte_span.h"
 #include "core/io/input_kind.h"
 #include "core/result.h"
 
@@ -85,10 +86,11 @@ struct FileContent {
   std::string path;
   const void* data;  // not owned
   size_t size;
-  // Bytes the file holds after `data` (not owned): a GLB's BIN chunk, written
-  // from the writer's buffer rather than copied behind its header first.
-  const void* tail = nullptr;
-  size_t tail_size = 0;
+  // Bytes the file holds after `data`, in order (not owned): a GLB's BIN
+  // chunk, written from the writer's buffer and the asset's own arrays
+  // rather than copied behind its header first.
+  std::vector<ByteSpan> tail = {};
+  size_t totalSize() const;  // size + the tail's sizes
 };
 Status writeFilesTogether(const std::vector<FileContent>& files);
 

@@ -23,12 +23,13 @@ std::string finishHex(Sha256Digest& digest) {
 
 }  // namespace
 
-std::string sha256Hex(const void* data, size_t size) { return sha256Hex(data, size, nullptr, 0); }
+std::string sha256Hex(const void* data, size_t size) { return sha256Hex(data, size, {}); }
 
-std::string sha256Hex(const void* data, size_t size, const void* tail, size_t tail_size) {
+std::string sha256Hex(const void* data, size_t size, const std::vector<ByteSpan>& tail) {
   Sha256Digest digest;
-  if (!digest.update(data, size) || !digest.update(tail, tail_size)) return std::string();
-  return finishHex(digest);
+  bool ok = digest.update(data, size);
+  for (const ByteSpan& part : tail) ok = ok && digest.update(part.data, part.size);
+  return ok ? finishHex(digest) : std::string();
 }
 
 std::string sha256Hex(const std::string& bytes) { return sha256Hex(bytes.data(), bytes.size()); }

@@ -5,15 +5,17 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
+#include "core/byte_span.h"
 #include "core/result.h"
 
 namespace smpl {
 
 std::string sha256Hex(const std::string& bytes);
 std::string sha256Hex(const void* data, size_t size);
-// Of `data` followed by `tail` (a file written in two parts), without joining them.
-std::string sha256Hex(const void* data, size_t size, const void* tail, size_t tail_size);
+// Of `data` followed by the parts of `tail` (a file written in parts), without joining them.
+std::string sha256Hex(const void* data, size_t size, const std::vector<ByteSpan>& tail);
 
 // Errors name the file.
 Result<std::string> sha256File(const std::string& path);

@@ -183,8 +183,8 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
   const std::string buffer_path = gltfBufferPath(r, r.out);
   Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, buffer_path));
   if (!files) return exportFailure(r.out, files.error(), "");
-  std::vector<FileContent> contents = {FileContent{r.out, files->bytes.data(), files->bytes.size(),
-                                                   files->tail.data(), files->tail.size()}};
+  std::vector<FileContent> contents = {
+      FileContent{r.out, files->bytes.data(), files->bytes.size(), files->tailParts()}};
   if (!buffer_path.empty())
     contents.push_back(FileContent{buffer_path, files->buffer.data(), files->buffer.size()});
   // The sidecar records the size and SHA-256 of each file written with it
@@ -193,7 +193,7 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
   contents.push_back(FileContent{r.out + ".smpl.json", sidecar.data(), sidecar.size()});
   if (Status st = writeFilesTogether(contents); !st)
     return fail(ErrorKind::Write, "saving", r.out, st.message());
-  return files->bytes.size() + files->tail.size() + files->buffer.size();
+  return files->size() + files->buffer.size();
 }
 
 Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,

@@ -32,10 +32,12 @@ int componentCount(int type) {
 }  // namespace
 
 // Float accessor; bounds (per-component min/max) where glTF requires them.
-int addFloats(GltfBuild& b, const float* values, size_t size, int type, int target, bool bounds) {
+int addFloats(GltfBuild& b, const float* values, size_t size, int type, int target, bool bounds,
+              bool in_place) {
   const int n = componentCount(type);
   const size_t count = size / size_t(n);
-  const int view = addView(b, values, size * sizeof(float), target);
+  const int view = in_place ? addViewInPlace(b, values, size * sizeof(float), target)
+                            : addView(b, values, size * sizeof(float), target);
   markMeshopt(b, view, MeshoptMode::Attributes, 4 * n);
   const int accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, count);
   tinygltf::Accessor& a = b.model.accessors[size_t(accessor)];

@@ -60,8 +60,8 @@ int addMorphWeights(GltfBuild& b, const MorphWeightTrack& track, bool quantize) 
   const size_t size = size_t(track.size());
   float lo = 0.f, hi = 0.f;
   for (size_t i = 0; i < size; ++i) lo = std::min(lo, w[i]), hi = std::max(hi, w[i]);
-  if (!quantize || lo < -1.f || hi > 1.f)
-    return addFloats(b, w, size, TINYGLTF_TYPE_SCALAR, 0, false);
+  if (!quantize || lo < -1.f || hi > 1.f)  // the asset's track, written where it is
+    return addFloats(b, w, size, TINYGLTF_TYPE_SCALAR, 0, false, true);
   const bool positive = lo >= 0.f;
   // meshopt takes 4-byte elements: an odd count gets one zero of padding.
   std::vector<uint16_t> q(b.meshopt ? (size + 1) / 2 * 2 : size, 0);

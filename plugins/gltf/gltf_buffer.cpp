@@ -4,17 +4,35 @@
 
 namespace smpl {
 
-int addView(GltfBuild& b, const void* data, size_t size, int target, int stride) {
+namespace {
+
+// A new view of `size` bytes at the (aligned) end of buffer 0.
+int newView(GltfBuild& b, size_t size, int target, int stride) {
   b.bin.resize(align4(b.bin.size()), '\0');
   tinygltf::BufferView view;
   view.buffer = 0;
-  view.byteOffset = b.bin.size();
+  view.byteOffset = b.bufferSize();
   view.byteLength = size;
   view.byteStride = size_t(stride);
   view.target = target;
-  b.bin.append(static_cast<const char*>(data), size);
   b.model.bufferViews.push_back(view);
   return int(b.model.bufferViews.size()) - 1;
+}
+
+}  // namespace
+
+int addView(GltfBuild& b, const void* data, size_t size, int target, int stride) {
+  const int view = newView(b, size, target, stride);
+  b.bin.append(static_cast<const char*>(data), size);
+  return view;
+}
+
+int addViewInPlace(GltfBuild& b, const void* data, size_t size, int target) {
+  if (b.meshopt || size % 4 != 0) return addView(b, data, size, target);
+  const int view = newView(b, size, target, 0);
+  b.splices.push_back(Writer::Splice{b.bin.size(), ByteSpan{data, size}});
+  b.spliced += size;
+  return view;
 }
 
 int addAccessor(GltfBuild& b, int view, int component_type, int type, size_t count,

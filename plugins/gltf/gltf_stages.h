@@ -36,7 +36,10 @@ inline constexpr char kBufferPlaceholder[] = "\"smpl-export:buffer:7c1e5a90\"";
 // --- gltf_accessors.cpp ---
 // A FLOAT accessor of `type` (TINYGLTF_TYPE_*) over a new view of `values`
 // (view target `target`, 0: none); per-component min/max when `bounds`.
-int addFloats(GltfBuild& b, const float* values, size_t size, int type, int target, bool bounds);
+// in_place: `values` outlive the build (the asset's own array) and are written from
+// where they are (addViewInPlace), not copied.
+int addFloats(GltfBuild& b, const float* values, size_t size, int type, int target, bool bounds,
+              bool in_place = false);
 inline int addFloats(GltfBuild& b, const std::vector<float>& values, int type, int target,
                      bool bounds) {
   return addFloats(b, values.data(), values.size(), type, target, bounds);

@@ -36,15 +36,18 @@ using gltf::serializeJson;
 using gltf::splice;
 using gltf::spliceMetadata;
 
-// Upper bound of the buffer size, reserved once so appending never reallocates.
-size_t estimatedBufferBytes(const Asset& a) {
+// Upper bound of the bytes copied into the buffer, reserved once so appending
+// never reallocates. Float morph weight keys stay in the asset (a splice)
+// unless meshopt re-encodes them; quantised, they take 2 bytes each.
+size_t estimatedBufferBytes(const Asset& a, const WriterOptions& options) {
+  const size_t weight_bytes = options.meshopt ? 4 : options.quantize_animation ? 2 : 0;
   const size_t v = size_t(a.mesh.positions.rows());
   size_t n = v * (12 + 12 + 8 + size_t(a.mesh.joints.cols() + 3) / 4 * 24) +
              size_t(a.mesh.triangles.size()) * 4 + a.skeleton.names.size() * 64 + 64 +
              a.mesh.morph_targets.size() * (v * 16 + 8);
   for (const AnimationClip& c : a.animations)
     n += c.times.size() *
-         (4 + 16 * c.rotations.size() + 12 + 4 * size_t(c.morph_weights.cols()) + 16);
+         (4 + 16 * c.rotations.size() + 12 + weight_bytes * size_t(c.morph_weights.cols()) + 16);
   return n;
 }
 
@@ -56,7 +59,7 @@ Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b
   if (!st) return st;
 
   tinygltf::Model& model = b.model;
-  b.bin.reserve(estimatedBufferBytes(asset));
+  b.bin.reserve(estimatedBufferBytes(asset, options));
   b.meshopt = options.meshopt;
   model.asset.version = "2.0";
   const std::string version = asset.metadata.exporter_version.empty()
@@ -77,10 +80,10 @@ Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b
   if (!compressed) return compressed.error();
   *meshopt = std::move(*compressed);
   b.bin.resize(align4(b.bin.size()), '\0');
-  if (b.bin.size() > kMaxBufferBytes)
-    return makeError("glTF writer: buffer of " + std::to_string(b.bin.size()) +
+  if (b.bufferSize() > kMaxBufferBytes)
+    return makeError("glTF writer: buffer of " + std::to_string(b.bufferSize()) +
                      " bytes exceeds the GLB limit of 4 GiB");
-  // The bytes stay in b.bin; tinygltf writes this buffer's JSON with a length
+  // The bytes stay in b.bin and the splices; tinygltf writes this buffer's JSON with a length
   // of 0 and a placeholder name, replaced by the real length afterwards.
   model.buffers.resize(1);
   model.buffers[0].name = placeholderText(kBufferPlaceholder);
@@ -96,7 +99,7 @@ class GltfWriter : public Writer {
     embedded.buffer_uri.clear();
     Result<Files> files = serializeFiles(asset, embedded);
     if (!files) return files.error();
-    return std::move(files->bytes) + files->tail;
+    return std::move(files->bytes) + withSplices(files->tail, files->splices);
   }
 
   Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const override {
@@ -104,8 +107,13 @@ class GltfWriter : public Writer {
     MeshoptJson meshopt;
     Status st = buildModel(asset, options, b, &meshopt);
     if (!st) return st.error();
-    const std::string byte_length = "\"byteLength\":" + std::to_string(b.bin.size());
+    const size_t buffer_size = b.bufferSize();
+    const std::string byte_length = "\"byteLength\":" + std::to_string(buffer_size);
     const bool external = !options.binary && !options.buffer_uri.empty();
+    if (!options.binary) {  // a .gltf: the buffer in one piece
+      b.bin = withSplices(b.bin, b.splices);
+      b.splices.clear();
+    }
     if (!options.binary &&
         !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
       b.model.buffers[0].name.clear();
@@ -119,10 +127,12 @@ class GltfWriter : public Writer {
     if (st && options.binary)
       st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder),
                   byte_length);
-    if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, b.bin.size());
+    if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, buffer_size);
     if (!st) return st.error();
-    if (options.binary) return Files{glbHead(std::move(*json), b.bin.size()), "", std::move(b.bin)};
-    return Files{std::move(*json), external ? std::move(b.bin) : std::string(), ""};
+    if (options.binary)
+      return Files{glbHead(std::move(*json), buffer_size), "", std::move(b.bin),
+                   std::move(b.splices)};
+    return Files{std::move(*json), external ? std::move(b.bin) : std::string()};
   }
 };
 

@@ -120,11 +120,11 @@ TEST(MetadataJson, SidecarRecordsEveryOutputFile) {
   EXPECT_EQ(back[1].file, "walk\\xff.bin");
   EXPECT_EQ(back[1].bytes, 1000u);
   EXPECT_EQ(back[1].sha256, j["producer"]["outputs"][1]["sha256"]);
-  // A file written in two parts is recorded as the whole: "glTF " + "bytes".
+  // A file written in parts is recorded as the whole: "glTF " + "by" + "tes".
   const std::string head = "glTF ", tail = "bytes";
-  const std::vector<RecordedOutput> two = recordedOutputsOf(
-      sidecarJson(metadataAsset(), "0",
-                  {{"/out/walk.glb", head.data(), head.size(), tail.data(), tail.size()}}));
+  const std::vector<RecordedOutput> two = recordedOutputsOf(sidecarJson(
+      metadataAsset(), "0",
+      {{"/out/walk.glb", head.data(), head.size(), {{tail.data(), 2}, {tail.data() + 2, 3}}}}));
   ASSERT_EQ(two.size(), 1u);
   EXPECT_EQ(two[0].bytes, glb.size());
   EXPECT_EQ(two[0].sha256, "80dcc14bfc3491e609e212c9518577319eac1125b73b5a00d466a57de9787542");

@@ -65,16 +65,20 @@ TEST_F(FileIo, WriteThenReadRoundTripsBinaryData) {
   EXPECT_EQ(list(), std::vector<std::string>{"out.glb"});  // no temporary left behind
 }
 
-// A file given in two parts (a GLB's head and its BIN chunk) is written as
-// their concatenation.
-TEST_F(FileIo, AFileInTwoPartsIsWrittenAsTheirConcatenation) {
-  const std::string head = "glTF head|", tail(200000, 'b');
-  const std::string path = dir_ + "/two.glb";
-  ASSERT_TRUE(
-      writeFilesTogether({FileContent{path, head.data(), head.size(), tail.data(), tail.size()}})
-          .ok());
-  EXPECT_EQ(readText(path), head + tail);
-  EXPECT_EQ(list(), std::vector<std::string>{"two.glb"});
+// A file given in parts (a GLB's head, its BIN chunk, the asset's arrays
+// spliced in) is written as their concatenation, in order.
+TEST_F(FileIo, AFileInPartsIsWrittenAsTheirConcatenation) {
+  const std::string head = "glTF head|", a(200000, 'b'), b = "|spliced|", c(70000, 'c');
+  const std::string path = dir_ + "/parts.glb";
+  const FileContent f{
+      path,
+      head.data(),
+      head.size(),
+      {{a.data(), a.size()}, {b.data(), b.size()}, {nullptr, 0}, {c.data(), c.size()}}};
+  EXPECT_EQ(f.totalSize(), head.size() + a.size() + b.size() + c.size());
+  ASSERT_TRUE(writeFilesTogether({f}).ok());
+  EXPECT_EQ(readText(path), head + a + b + c);
+  EXPECT_EQ(list(), std::vector<std::string>{"parts.glb"});
 }
 
 TEST_F(FileIo, OverwritesAnExistingFile) {

@@ -307,20 +307,40 @@ TEST(GltfWriter, GlbFourInfluencesWithUvs) {
 }
 
 // serializeFiles hands a GLB over as its head (header, JSON chunk, BIN chunk
-// header) and the BIN data apart, so the CLI writes the buffer without
-// copying it behind the head; together they are serialize()'s bytes.
+// header), the BIN data apart, and the clip's morph weight keys as a splice
+// of the asset's own track (not copied), so the CLI writes the buffer without
+// copying it behind the head; in order they are serialize()'s bytes.
 TEST(GltfWriter, GlbHeadAndBufferAreTheWholeFile) {
-  const Asset a = makeAsset({});
+  AssetSpec spec;
+  spec.frames = 7;
+  const Asset a = makeAsset(spec);
   const Writer* w = writerForPath("x.glb");
   ASSERT_NE(w, nullptr);
   Result<Writer::Files> files = w->serializeFiles(a, WriterOptions());
   Result<std::string> whole = w->serialize(a, WriterOptions());
   ASSERT_TRUE(files && whole);
-  EXPECT_EQ(files->bytes + files->tail, *whole);
+  std::string joined = files->bytes;
+  for (const ByteSpan& part : files->tailParts())
+    joined.append(static_cast<const char*>(part.data), part.size);
+  EXPECT_EQ(joined, *whole);
+  EXPECT_EQ(files->size(), whole->size());
+  const MorphWeightTrack& track = a.animations[0].morph_weights;
+  ASSERT_GT(track.size(), 0);
+  ASSERT_EQ(files->splices.size(), 1u);
+  EXPECT_EQ(files->splices[0].bytes.data, static_cast<const void*>(track.data()));
+  EXPECT_EQ(files->splices[0].bytes.size, size_t(track.size()) * sizeof(float));
   ASSERT_GT(files->tail.size(), 0u);
   EXPECT_EQ(files->bytes.size() % 4, 0u);
   EXPECT_EQ(files->bytes.compare(files->bytes.size() - 4, 4, "BIN\0", 4), 0);
   EXPECT_TRUE(files->buffer.empty());
+  // meshopt re-encodes the views from the buffer: nothing is spliced there.
+  WriterOptions meshopt;
+  meshopt.meshopt = true;
+  if (meshoptAvailable()) {
+    Result<Writer::Files> packed = w->serializeFiles(a, meshopt);
+    ASSERT_TRUE(packed);
+    EXPECT_TRUE(packed->splices.empty());
+  }
 }
 
 TEST(GltfWriter, GlbEightInfluencesWithoutUvs) {
@@ -440,6 +460,10 @@ TEST(GltfWriter, AnimationChannels) {
     for (size_t n = 0; n < a.mesh.morph_targets.size(); ++n)
       EXPECT_EQ(w[t * a.mesh.morph_targets.size() + n],
                 clip.morph_weights(Eigen::Index(t), Eigen::Index(n)));
+  // A .gltf embeds the same buffer, the spliced weight keys joined in.
+  const Loaded text = writeAndLoad(a, false, "anim.gltf");
+  ASSERT_EQ(text.buffers.size(), 1u);
+  EXPECT_EQ(text.buffers[0].data, m.buffers[0].data);
 }
 
 TEST(GltfWriter, ByteDeterministic) {
