@@ -19,19 +19,22 @@ bool endsWithNoCase(const std::string& text, const std::string& suffix) {
   });
 }
 
-}  // namespace
-
-std::vector<ByteSpan> Writer::Files::tailParts() const {
+// `bin` and the splices in file order: one walk for both forms of a tail.
+std::vector<ByteSpan> partsOf(const std::string& bin, const std::vector<Writer::Splice>& splices) {
   std::vector<ByteSpan> parts;
   size_t from = 0;
-  for (const Splice& s : splices) {
-    parts.push_back({tail.data() + from, s.at - from});
+  for (const Writer::Splice& s : splices) {
+    parts.push_back({bin.data() + from, s.at - from});
     parts.push_back(s.bytes);
     from = s.at;
   }
-  parts.push_back({tail.data() + from, tail.size() - from});
+  parts.push_back({bin.data() + from, bin.size() - from});
   return parts;
 }
+
+}  // namespace
+
+std::vector<ByteSpan> Writer::Files::tailParts() const { return partsOf(tail, splices); }
 
 size_t Writer::Files::size() const {
   size_t n = bytes.size() + tail.size();
@@ -41,13 +44,10 @@ size_t Writer::Files::size() const {
 
 std::string withSplices(const std::string& bin, const std::vector<Writer::Splice>& splices) {
   std::string out;
-  size_t from = 0;
-  for (const Writer::Splice& s : splices) {
-    out.append(bin, from, s.at - from);
-    out.append(static_cast<const char*>(s.bytes.data), s.bytes.size);
-    from = s.at;
-  }
-  return out.append(bin, from, std::string::npos);
+  out.reserve(bin.size());
+  for (const ByteSpan& part : partsOf(bin, splices))
+    out.append(static_cast<const char*>(part.data), part.size);
+  return out;
 }
 
 namespace {
