@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "core/heap_trim.h"
 #include "core/joint_names.h"
 #include "core/math/rotation.h"
 #include "exporter/dmpl_targets.h"
@@ -75,10 +76,14 @@ void frameChangeAt(const Motion& m, const Sample& s, Eigen::Matrix3d* a, Eigen::
   *b = (1 - s.t) * m.world_translation[s.frame] + s.t * m.world_translation[next];
 }
 
-// Quaternion sign continuity keeps LINEAR interpolation in engines on the short path.
-void makeContinuous(std::vector<Eigen::Quaterniond>* track) {
-  for (size_t i = 1; i < track->size(); ++i)
-    if ((*track)[i].dot((*track)[i - 1]) < 0) (*track)[i].coeffs() *= -1.0;
+// The key stored for `q`: its sign flipped when that keeps it on the short
+// path from the previous key (LINEAR interpolation in engines), `previous`
+// updated, then normalised in double and rounded to float once.
+Eigen::Quaternionf trackKey(Eigen::Quaterniond q, Eigen::Quaterniond* previous, bool first) {
+  if (!first && q.dot(*previous) < 0) q.coeffs() *= -1.0;
+  *previous = q;
+  const double n = q.norm();
+  return Eigen::Quaternionf(float(q.w() / n), float(q.x() / n), float(q.y() / n), float(q.z() / n));
 }
 
 Status checkFrames(const Motion& motion, const AnimationOptions& o, const std::string& context,
@@ -170,6 +175,15 @@ Result<Eigen::Vector3d> anchorPoint(const BodyModel& model, const Asset& asset,
   return Eigen::Vector3d(p / static_cast<double>(motion.translation_anchor.size()));
 }
 
+// Frees the decoded frames [*freed, keep) of `m` (no later sample reads
+// them) and, every 4096 output frames, hands the freed pages back
+// (heap_trim.h), so that a long clip's frames and tracks are not whole in
+// memory together.
+void releasePassedFrames(int keep, int sample, int* freed, Motion* m) {
+  for (; *freed < keep; ++*freed) Rotations().swap(m->frames[size_t(*freed)]);
+  if (sample % 4096 == 4095) returnFreedHeap();
+}
+
 }  // namespace
 
 Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world) {
@@ -205,7 +219,10 @@ Result<MotionMapping> mapMotion(const BodyModel& model, const Motion& motion,
 
 Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
                                     const Motion& motion, const AnimationOptions& o,
-                                    const std::string& context, const Progress& progress) {
+                                    const std::string& context, const Progress& progress,
+                                    Motion* release) {
+  if (release && release != &motion)
+    return makeError(context + ": release is not the motion baked");
   int end = 0;
   if (Status s = checkFrames(motion, o, context, &end); !s) return s.error();
   Result<MotionMapping> mapping = mapMotion(model, motion, context);
@@ -230,9 +247,15 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   clip.source = ClipSource{motion.source_layout, motion.track, motion.first_frame + o.first_frame,
                            motion.first_frame + end, worldName(o.up, motion.world)};
   clip.dropped_joints = mapping->dropped;
-  clip.rotations.assign(k, std::vector<Eigen::Quaterniond>(t));
-  clip.morph_weights =
-      MorphWeightTrack::Zero(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
+  // The tracks are allocated untouched and filled frame by frame, so that
+  // with `release` their pages fill as the decoded frames' pages are freed.
+  clip.rotations.resize(k);
+  for (auto& track : clip.rotations) track.resize(t);  // Quaternionf(): no initialisation
+  std::vector<Eigen::Quaterniond> previous(k);         // each joint's last key, in double
+  clip.morph_weights.resize(t, static_cast<Eigen::Index>(asset.mesh.morph_targets.size()));
+  clip.times.reserve(t);
+  clip.root_translation.reserve(t);
+  int freed = o.first_frame;  // with `release`: frames below this one are freed
   const std::vector<int> targets = correctiveTargets(asset);
   Rotations local(k);
   Eigen::Matrix3d source_root = Eigen::Matrix3d::Identity();  // R_0 before the world turn
@@ -248,7 +271,7 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
           src < 0 ? Eigen::Quaterniond::Identity() : rotationAt(motion, src, samples[i]);
       if (j == 0) source_root = q.toRotationMatrix();
       if (j == 0) q = Eigen::Quaterniond(turn) * q;
-      clip.rotations[j][i] = q;
+      clip.rotations[j][i] = trackKey(q, &previous[j], i == 0);
       local[j] = q.toRotationMatrix();
     }
     // The root node sits at J_0 + trans in the capture world (an anchored
@@ -260,6 +283,7 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
     Eigen::Vector3d root = up * (change * node + shift);
     if (o.in_place) root = Eigen::Vector3d(j0.x(), root.y(), j0.z());
     clip.root_translation.push_back(root);
+    clip.morph_weights.row(i).setZero();
     fillMorphWeights(asset, targets, local, &clip.morph_weights, i);
     if (const int d = static_cast<int>(asset.metadata.dmpl.targets.size());
         d > 0)  // DMPL soft tissue (dmpl_targets.h)
@@ -273,8 +297,8 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
                                         model.numExpressions(), asset.metadata.expression),
                            local, turn, i, &clip);
     if (progress && (i % 256 == 0 || i + 1 == t)) progress(double(i + 1) / t);
+    if (release) releasePassedFrames(i + 1 < t ? samples[i + 1].frame : end, i, &freed, release);
   }
-  for (auto& track : clip.rotations) makeContinuous(&track);
   clipNotes(model, asset, motion, &clip);
   return clip;
 }

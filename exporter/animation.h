@@ -55,8 +55,13 @@ using Progress = std::function<void(double)>;
 
 // `asset` supplies the rest joints and the morph target order. The clip
 // records the joints the mapping dropped (AnimationClip::dropped_joints).
+// `release` (null, or &motion when the caller needs no frame of it again):
+// each decoded frame is freed once no later output frame reads it
+// (Motion::frames keeps its length; its entries become empty), so a long
+// clip peaks at about its tracks rather than its frames plus its tracks.
 Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
                                     const Motion& motion, const AnimationOptions& options,
-                                    const std::string& context, const Progress& progress = nullptr);
+                                    const std::string& context, const Progress& progress = nullptr,
+                                    Motion* release = nullptr);
 
 }  // namespace smpl

@@ -23,9 +23,13 @@ struct Skeleton {
   // matrix of joint k is translation(-J_k).
 };
 
+// V x 3 position deltas, row-major: a vertex's x, y, z contiguous, as
+// glTF's float POSITION targets store them (the writer uses them without a copy).
+using MorphDeltas = Eigen::Matrix<float, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
 struct MorphTarget {
   std::string name;          // pose_<joint>_<r><c>, shape_<i>, expr_<i>
-  Eigen::MatrixXf deltas;    // V x 3 position deltas (V = asset vertex count)
+  MorphDeltas deltas;        // V x 3 position deltas (V = asset vertex count)
   float rest_weight = 0.0f;  // weight at the rest pose (non-zero for the unit encoding)
   bool quantized = false;    // stored as normalised int16 (KHR_mesh_quantization): deltas
                              // already divided by their peak s_n, |delta| <= 1 (morph_scales.h)
@@ -108,6 +112,11 @@ struct ClipSource {
   std::string world = "y";  // "y", "z" (turned -90 degrees about x) or "-y" (a half turn about x)
 };
 
+// One joint's T local rotations as unit quaternions in float, (x, y, z, w)
+// contiguous: the bytes of glTF's rotation output (the writer uses them
+// without a copy). The bake normalises in double and rounds once.
+using RotationTrack = std::vector<Eigen::Quaternionf>;
+
 // T x (#morph targets) weights, row-major: frame t's weights are contiguous,
 // as glTF's "weights" output stores them (the writer uses them without a copy).
 using MorphWeightTrack = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -115,10 +124,10 @@ using MorphWeightTrack = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Ei
 struct AnimationClip {
   std::string name;
   double fps = 30.0;
-  std::vector<double> times;                               // T seconds
-  std::vector<std::vector<Eigen::Quaterniond>> rotations;  // [joint][frame] local rotations
-  std::vector<Eigen::Vector3d> root_translation;           // T root node translations (model axes)
-  MorphWeightTrack morph_weights;                          // T x (#morph targets), in target order
+  std::vector<double> times;                      // T seconds
+  std::vector<RotationTrack> rotations;           // [joint][frame] local rotations
+  std::vector<Eigen::Vector3d> root_translation;  // T root node translations (model axes)
+  MorphWeightTrack morph_weights;                 // T x (#morph targets), in target order
   // [joint][frame] local translations (--dmpl-joints regressed: every joint;
   // --root-bone: the pelvis); empty = rest_local for every joint, and an empty
   // track of one joint = its rest_local (no track written). Joint 0's track,

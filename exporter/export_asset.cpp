@@ -71,10 +71,13 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
     encodeExpressionTargets(
         model, expressionLayout(resolved.expression_keys, asset->metadata.expression, expressions),
         &*asset);
+  // lowestOfModel (placeAsset) bakes the motions again.
+  const bool baked_again =
+      asset->skeleton_only && (options.origin == Origin::Floor || options.root_bone);
   for (const MotionInput& m : motions) {
     if (!m.motion) return makeError(m.context + ": no motion given");
-    Result<AnimationClip> clip =
-        bakeAnimation(model, *asset, *m.motion, m.animation, m.context, m.progress);
+    Result<AnimationClip> clip = bakeAnimation(model, *asset, *m.motion, m.animation, m.context,
+                                               m.progress, baked_again ? nullptr : m.release);
     if (!clip) return clip.error();
     asset->animations.push_back(std::move(*clip));
   }

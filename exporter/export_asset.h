@@ -26,11 +26,16 @@ namespace smpl {
 // One motion to bake into the asset: the motion (not owned, outlives the
 // call), the path or name that errors name, how to bake it (fps, frame range,
 // up axis) and an optional progress callback (fraction in [0, 1]).
+// `release`: null, or the same motion when the caller needs none of its
+// frames after the call: the bake then frees them as it passes them
+// (bakeAnimation), unless the export bakes it a second time (a skeleton-only
+// export placed on the floor measures the full body's clip).
 struct MotionInput {
   const Motion* motion = nullptr;
   std::string context;
   AnimationOptions animation;
   Progress progress;
+  Motion* release = nullptr;
 };
 
 // CorrectiveEncoding::Auto resolved for an export with `motions` baked

@@ -27,7 +27,7 @@ std::vector<Affine> skinningTransforms(const Asset& a, const AnimationClip& c, s
   std::vector<Eigen::Vector3d> g(k_count);
   std::vector<Affine> out(k_count);
   for (size_t k = 0; k < k_count; ++k) {
-    const Eigen::Matrix3d local = c.rotations[k][t].normalized().toRotationMatrix();
+    const Eigen::Matrix3d local = c.rotations[k][t].cast<double>().normalized().toRotationMatrix();
     const Eigen::Vector3d tr = localTranslation(a, c, k, t);
     const int p = s.parents[k];
     r[k] = p < 0 ? local : Eigen::Matrix3d(r[size_t(p)] * local);
@@ -147,8 +147,7 @@ void addRootBone(Asset* asset) {
   if (asset->mesh.joints.size() > 0) asset->mesh.joints.array() += 1;
   for (AnimationClip& c : asset->animations) {
     const size_t t_count = c.times.size();
-    c.rotations.insert(c.rotations.begin(),
-                       std::vector<Eigen::Quaterniond>(t_count, Eigen::Quaterniond::Identity()));
+    c.rotations.insert(c.rotations.begin(), RotationTrack(t_count, Eigen::Quaternionf::Identity()));
     std::vector<Eigen::Vector3d> root(t_count), pelvis(t_count);
     for (size_t t = 0; t < t_count; ++t) {
       const Eigen::Vector3d p = c.root_translation.empty() ? j0 : c.root_translation[t];

@@ -124,7 +124,7 @@ Status checkClip(const AnimationClip& c, size_t joints, Eigen::Index targets) {
       return makeError(where + "joint " + std::to_string(k) + " has " +
                        std::to_string(c.rotations[k].size()) + " rotation keys; expected " +
                        std::to_string(t));
-    for (const Eigen::Quaterniond& q : c.rotations[k])
+    for (const Eigen::Quaternionf& q : c.rotations[k])
       if (!std::isfinite(q.squaredNorm()) || q.squaredNorm() < 1e-12)
         return makeError(where + "joint " + std::to_string(k) +
                          " has a zero or non-finite rotation");

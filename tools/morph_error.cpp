@@ -233,11 +233,12 @@ Eigen::MatrixXd weightsOverPoses(const std::vector<std::string>& names,
 }
 
 // 3V x T stack of the targets' deltas, in double.
-Eigen::MatrixXd stack(const std::vector<const Eigen::MatrixXf*>& deltas, Eigen::Index v) {
+template <class Deltas>
+Eigen::MatrixXd stack(const std::vector<const Deltas*>& deltas, Eigen::Index v) {
   Eigen::MatrixXd out(3 * v, Eigen::Index(deltas.size()));
   for (size_t n = 0; n < deltas.size(); ++n)
     for (int c = 0; c < 3; ++c)
-      out.col(Eigen::Index(n)).segment(c * v, v) = deltas[n]->col(c).cast<double>();
+      out.col(Eigen::Index(n)).segment(c * v, v) = deltas[n]->col(c).template cast<double>();
   return out;
 }
 
@@ -254,7 +255,8 @@ Result<double> morphError(const DecodedMorphs& file, const Asset& exact, int num
     features.push_back(poseFeatures(rotationsFromAxisAngle(pose)));
   std::vector<std::string> names;
   std::vector<double> rest;
-  std::vector<const Eigen::MatrixXf*> exact_d, file_d;
+  std::vector<const MorphDeltas*> exact_d;
+  std::vector<const Eigen::MatrixXf*> file_d;
   for (size_t n = 0; n < m.morph_targets.size(); ++n) {
     names.push_back(m.morph_targets[n].name);
     rest.push_back(m.morph_targets[n].rest_weight);

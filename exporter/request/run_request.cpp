@@ -8,6 +8,7 @@
 #include <exception>
 #include <new>
 
+#include "core/heap_trim.h"
 #include "core/io/file_io.h"
 #include "core/io/printable.h"
 #include "core/load/betas_file.h"
@@ -132,23 +133,27 @@ Status betasFromMotion(const BodyModel& model, const ExportRequest& r,
 
 // What exportAsset bakes: each motion with the request's frame range
 // (clamped per motion, the note kept in `frame_notes`) and progress.
-std::vector<MotionInput> motionInputs(const ExportRequest& r, const std::vector<Motion>& motions,
+// The job owns the motions and frees their frames once baked (runJob), so
+// the bake may free them as it goes (MotionInput::release).
+std::vector<MotionInput> motionInputs(const ExportRequest& r, std::vector<Motion>* motions,
                                       std::vector<std::string>* frame_notes) {
   std::vector<MotionInput> inputs;
   const AnimationOptions animation = animationOptionsOf(r);
-  for (size_t i = 0; i < motions.size(); ++i) {
+  for (size_t i = 0; i < motions->size(); ++i) {
+    Motion& motion = (*motions)[i];
     frame_notes->emplace_back();
-    MotionInput in{&motions[i], r.motions[i],
-                   framesFor(animation, motions[i], &frame_notes->back()), nullptr};
-    if (r.progress) in.progress = [&r, name = motions[i].name](double f) { r.progress(name, f); };
+    MotionInput in{&motion, r.motions[i], framesFor(animation, motion, &frame_notes->back()),
+                   nullptr, &motion};
+    if (r.progress) in.progress = [&r, name = motion.name](double f) { r.progress(name, f); };
     inputs.push_back(std::move(in));
   }
   return inputs;
 }
 
 // The finished asset and the notes that go with it.
-Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, const Loaded& loaded,
+Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, Loaded* job,
                        ExportReport* report) {
+  Loaded& loaded = *job;
   const BodyModel& model = *loaded.pick.model;
   ExportOptions options = exportOptionsOf(r, inputs.betas);
   if (!inputs.betas_given)
@@ -159,7 +164,7 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, const Lo
   std::vector<std::string> frame_notes;
   // A mirrored hand model belongs to this job: its skin is not kept for others.
   SkinCache* skins = loaded.side.mirrored ? nullptr : inputs.skins.get();
-  Result<Asset> asset = exportAsset(model, options, motionInputs(r, loaded.motions, &frame_notes),
+  Result<Asset> asset = exportAsset(model, options, motionInputs(r, &loaded.motions, &frame_notes),
                                     &dmpl->input, skins);
   if (!asset) return exportFailure(r.out, asset.error(), options.uv_obj);
   noteMotions(loaded.motions, frame_notes, inputs.betas_given, *asset, report);
@@ -211,25 +216,16 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   report.model_path = loaded->pick.path;
   report.model_note = loaded->pick.note;
   report.betas_note = inputs.betas_note;
-  Result<Asset> asset = buildJob(r, inputs, *loaded, &report);
+  Result<Asset> asset = buildJob(r, inputs, &*loaded, &report);
   if (!asset) return asset.error();
   // The baked clips hold all the writer needs: the decoded frames are freed
   // first, so a long clip peaks in the bake or in the write, not in both.
   for (Motion& m : loaded->motions) releaseFrames(&m);
-  Result<size_t> bytes = writeJob(r, *asset, *writer);
-  if (!bytes) return bytes.error();
   const BodyModel& model = *loaded->pick.model;
-  report.bytes = *bytes;
   report.skin_fitted = asset->mesh.joints.cols() > 0;  // no skin for a skeleton-only writer
   if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
   if (report.skin_fitted && asset->placement.root_bone)  // model joint k is file joint k + 1
     report.skin.joints = (report.skin.joints.array() - 1).cwiseMax(0).matrix();
-  report.placement = asset->placement;
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  report.vertices = static_cast<int>(asset->mesh.positions.rows());
-  report.joints = static_cast<int>(asset->skeleton.names.size());
-  report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
-  report.max_influences = asset->metadata.max_influences;
   if (r.skin_error_poses > 0 && report.skin_fitted) {
     Result<PruningError> err = measurePruningError(model, report.options, r.skin_error_poses,
                                                    &report.skin, &asset->corrective_refit);
@@ -237,6 +233,18 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
     report.skin_error = *err;
     report.skin_error_measured = true;
   }
+  // The refit is in the morph targets already; only the measurement reads it.
+  asset->corrective_refit = CorrectiveRefit();
+  returnFreedHeap();
+  Result<size_t> bytes = writeJob(r, *asset, *writer);
+  if (!bytes) return bytes.error();
+  report.bytes = *bytes;
+  report.placement = asset->placement;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.vertices = static_cast<int>(asset->mesh.positions.rows());
+  report.joints = static_cast<int>(asset->skeleton.names.size());
+  report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
+  report.max_influences = asset->metadata.max_influences;
   return report;
 }
 

@@ -121,7 +121,7 @@ std::string frameLine(const Asset& a, const Layout& l, const AnimationClip* clip
   for (int k : l.order) {
     if (l.position[size_t(k)]) line += triple(positionAt(a, l, clip, k, f), l) + " ";
     const Eigen::Quaterniond q =
-        clip ? clip->rotations[size_t(k)][f] : Eigen::Quaterniond::Identity();
+        clip ? clip->rotations[size_t(k)][f].cast<double>() : Eigen::Quaterniond::Identity();
     const EulerZxy e = eulerZxyNear(q, (*previous)[size_t(k)]);
     (*previous)[size_t(k)] = e;
     line += fixed(e.z * kRadiansToDegrees, 6) + " " + fixed(e.x * kRadiansToDegrees, 6) + " " +

@@ -136,12 +136,12 @@ void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const std::vector<Eigen::Quaterniond>& q) {
+std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const RotationTrack& q) {
   std::vector<Eigen::Vector3d> out;
   out.reserve(q.size());
   Eigen::Vector3d prev(0, 0, 0);
-  for (const Eigen::Quaterniond& rotation : q) {
-    Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
+  for (const Eigen::Quaternionf& rotation : q) {
+    Eigen::Matrix3d r = rotation.cast<double>().normalized().toRotationMatrix();
     Eigen::Vector3d a = wrapTowards(eulerXYZ(r, prev.x()), prev);
     // The other solution of the same rotation: (x + pi, pi - y, z + pi).
     Eigen::Vector3d b = wrapTowards(Eigen::Vector3d(a.x() + kPi, kPi - a.y(), a.z() + kPi), prev);

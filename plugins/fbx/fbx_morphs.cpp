@@ -11,7 +11,7 @@ namespace {
 // Sparse deltas: the vertices that move. Never empty (Unity crashes on empty
 // shapes): a target without a non-zero delta keeps its largest-magnitude
 // vertex, whose delta is then tiny or zero.
-void sparseDeltas(const Eigen::MatrixXf& deltas, double scale, std::vector<int32_t>& indexes,
+void sparseDeltas(const MorphDeltas& deltas, double scale, std::vector<int32_t>& indexes,
                   std::vector<double>& vertices) {
   indexes.clear();
   vertices.clear();

@@ -90,7 +90,7 @@ void buildAnimationObjects(SceneContext& ctx);
 // Quaternions -> Euler XYZ degrees (R = Rz * Ry * Rx, FBX eEulerXYZ), with
 // each frame's angles chosen closest to the previous frame's so curves do
 // not jump by 360 or flip between equivalent solutions.
-std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const std::vector<Eigen::Quaterniond>& q);
+std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const RotationTrack& q);
 
 }  // namespace fbx
 }  // namespace smpl

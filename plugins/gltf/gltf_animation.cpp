@@ -83,14 +83,27 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool
   const std::vector<float> times(clip.times.begin(), clip.times.end());
   const int input = addFloats(b, times, TINYGLTF_TYPE_SCALAR, 0, true);
   for (size_t k = 0; k < clip.rotations.size(); ++k) {
-    std::vector<float> xyzw;
-    for (const Eigen::Quaterniond& q : clip.rotations[k]) {
-      const double n = q.norm();
+    const RotationTrack& track = clip.rotations[k];
+    bool unit = true;  // as the bake stores them (asset.h): written where they are
+    for (const Eigen::Quaternionf& q : track) {
+      const double n = q.cast<double>().norm();
       if (!(n > 0) || !std::isfinite(n))
         return makeError("glTF writer: animation '" + clip.name + "': joint " + std::to_string(k) +
                          " has a zero or non-finite rotation");
-      xyzw.insert(xyzw.end(),
-                  {float(q.x() / n), float(q.y() / n), float(q.z() / n), float(q.w() / n)});
+      unit = unit && std::abs(n - 1.0) < 1e-6;
+    }
+    const float* keys = track.empty() ? nullptr : track.front().coeffs().data();
+    if (unit && !quantize) {
+      addChannel(anim, input,
+                 addFloats(b, keys, 4 * track.size(), TINYGLTF_TYPE_VEC4, 0, false, true), int(k),
+                 "rotation");
+      continue;
+    }
+    std::vector<float> xyzw;  // normalised (a hand-made clip) or to be quantised
+    for (const Eigen::Quaternionf& q : track) {
+      const Eigen::Vector4d c = q.coeffs().cast<double>();
+      const double n = c.norm();
+      for (int i = 0; i < 4; ++i) xyzw.push_back(unit ? q.coeffs()[i] : float(c[i] / n));
     }
     addChannel(anim, input, addRotations(b, xyzw, quantize), int(k), "rotation");
   }

@@ -32,7 +32,7 @@ void widenToZero(tinygltf::Accessor* a) {
   for (double& v : a->maxValues) v = std::max(v, 0.0);
 }
 
-int addDense(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
+int addDense(GltfBuild& b, const MorphDeltas& d, const MorphEncoding& e) {
   const size_t v_count = size_t(d.rows());
   int accessor;
   if (e.quantized) {
@@ -45,14 +45,12 @@ int addDense(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
         addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, v_count, true);
     shortBounds(q, 4, false, &b.model.accessors[size_t(accessor)]);
   } else {
-    std::vector<float> f(3 * v_count);
-    for (size_t v = 0; v < v_count; ++v)
-      for (int c = 0; c < 3; ++c) f[3 * v + size_t(c)] = d(Eigen::Index(v), c);
-    const int view = addView(b, f.data(), f.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
+    // The asset's deltas, written where they are (MorphDeltas is glTF's layout).
+    const int view = addViewInPlace(b, d.data(), 12 * v_count, TINYGLTF_TARGET_ARRAY_BUFFER);
     markMeshopt(b, view, MeshoptMode::Attributes, 12);
     accessor = addAccessor(b, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, v_count);
     tinygltf::Accessor& a = b.model.accessors[size_t(accessor)];
-    floatBounds(f.data(), v_count, 3, &a.minValues, &a.maxValues);
+    floatBounds(d.data(), v_count, 3, &a.minValues, &a.maxValues);
   }
   return accessor;
 }
@@ -63,7 +61,7 @@ int addSparseIndices(GltfBuild& b, const std::vector<uint32_t>& kept) {
   return addView(b, idx.data(), idx.size() * sizeof(Index), 0);
 }
 
-int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
+int addSparse(GltfBuild& b, const MorphDeltas& d, const MorphEncoding& e) {
   const size_t v_count = size_t(d.rows());
   std::vector<uint32_t> kept;
   for (size_t v = 0; v < v_count; ++v) {
@@ -117,7 +115,7 @@ int addSparse(GltfBuild& b, const Eigen::MatrixXf& d, const MorphEncoding& e) {
 
 }  // namespace
 
-int addMorphTarget(GltfBuild& b, const Eigen::MatrixXf& deltas, const MorphEncoding& encoding) {
+int addMorphTarget(GltfBuild& b, const MorphDeltas& deltas, const MorphEncoding& encoding) {
   const int sparse = encoding.epsilon > 0 ? addSparse(b, deltas, encoding) : -1;
   return sparse >= 0 ? sparse : addDense(b, deltas, encoding);
 }

@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "exporter/asset.h"
 #include "plugins/gltf/gltf_buffer.h"
 
 namespace smpl {
@@ -26,6 +27,6 @@ struct MorphEncoding {
                            // test compares |d| * peak with epsilon
 };
 
-int addMorphTarget(GltfBuild& b, const Eigen::MatrixXf& deltas, const MorphEncoding& encoding);
+int addMorphTarget(GltfBuild& b, const MorphDeltas& deltas, const MorphEncoding& encoding);
 
 }  // namespace smpl

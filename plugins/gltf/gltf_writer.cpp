@@ -37,17 +37,19 @@ using gltf::splice;
 using gltf::spliceMetadata;
 
 // Upper bound of the bytes copied into the buffer, reserved once so appending
-// never reallocates. Float morph weight keys stay in the asset (a splice)
-// unless meshopt re-encodes them; quantised, they take 2 bytes each.
+// never reallocates. Float morph weight and rotation keys stay in the asset
+// (splices) unless meshopt re-encodes them; quantised, they take 2 bytes a
+// component.
 size_t estimatedBufferBytes(const Asset& a, const WriterOptions& options) {
   const size_t weight_bytes = options.meshopt ? 4 : options.quantize_animation ? 2 : 0;
+  const size_t rotation_bytes = options.meshopt ? 16 : options.quantize_animation ? 8 : 16;
   const size_t v = size_t(a.mesh.positions.rows());
   size_t n = v * (12 + 12 + 8 + size_t(a.mesh.joints.cols() + 3) / 4 * 24) +
              size_t(a.mesh.triangles.size()) * 4 + a.skeleton.names.size() * 64 + 64 +
              a.mesh.morph_targets.size() * (v * 16 + 8);
   for (const AnimationClip& c : a.animations)
-    n += c.times.size() *
-         (4 + 16 * c.rotations.size() + 12 + weight_bytes * size_t(c.morph_weights.cols()) + 16);
+    n += c.times.size() * (4 + rotation_bytes * c.rotations.size() + 12 +
+                           weight_bytes * size_t(c.morph_weights.cols()) + 16);
   return n;
 }
 

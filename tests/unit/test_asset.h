@@ -86,7 +86,8 @@ inline void fillAnimation(Asset& a, std::mt19937& rng, int frames) {
   clip.rotations.resize(a.skeleton.names.size());
   for (auto& track : clip.rotations)
     for (int t = 0; t < frames; ++t)
-      track.push_back(Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized());
+      track.push_back(
+          Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().cast<float>());
   for (int t = 0; t < frames; ++t) clip.root_translation.emplace_back(n(rng), n(rng), n(rng));
   clip.morph_weights = randomMatrix(rng, frames, int(a.mesh.morph_targets.size()), -2.f, 1.f);
   a.animations.push_back(clip);
@@ -133,7 +134,8 @@ inline Eigen::MatrixXd enginePlayback(const Asset& a, const AnimationClip& clip,
     Eigen::Vector3d t = j == 0  ? clip.root_translation[f]
                         : track ? clip.joint_translations[j][f]
                                 : Eigen::Vector3d(s.rest_local.row(j).transpose());
-    Eigen::Affine3d local = Eigen::Translation3d(t) * clip.rotations[j][f];
+    Eigen::Affine3d local =
+        Eigen::Translation3d(t) * clip.rotations[j][f].cast<double>().normalized();
     world[j] = s.parents[j] < 0 ? local : world[s.parents[j]] * local;
   }
   Eigen::MatrixXd v = a.mesh.positions.cast<double>();

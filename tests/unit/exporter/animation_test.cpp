@@ -10,6 +10,10 @@
 namespace smpl {
 namespace {
 
+// Rotation keys are float (exporter/asset.h RotationTrack): a rotation matrix
+// entry rounds by at most a few float ulps of 1.
+constexpr double kKeyRounding = 5e-7;
+
 const std::string kFixtures = std::string(SMPL_FIXTURE_DIR);
 
 struct Loaded {
@@ -78,13 +82,65 @@ TEST(Animation, ResampleZUpAndWeights) {
   const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
   for (int i : {0, 17, 59}) {
     const Rotations& src = l.motion.frames[4 * i];
-    EXPECT_LT((clip->rotations[5][i].toRotationMatrix() - src[5]).cwiseAbs().maxCoeff(), 1e-12);
-    EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - up * src[0]).cwiseAbs().maxCoeff(),
-              1e-12);
+    EXPECT_LT(
+        (clip->rotations[5][i].cast<double>().toRotationMatrix() - src[5]).cwiseAbs().maxCoeff(),
+        kKeyRounding);
+    EXPECT_LT((clip->rotations[0][i].cast<double>().toRotationMatrix() - up * src[0])
+                  .cwiseAbs()
+                  .maxCoeff(),
+              kKeyRounding);
     EXPECT_LT((clip->root_translation[i] - up * (j0 + l.motion.translation[4 * i])).norm(), 1e-12);
     Eigen::VectorXd f = poseFeatures(src);
     for (int n : {0, 100, 450}) EXPECT_NEAR(clip->morph_weights(i, n), f[n], 1e-6);
   }
+}
+
+// With `release` the bake frees each decoded frame once no later output
+// frame reads it: the clip is the same bit for bit (resampled, cut to a
+// range), the frames it passed are empty, the others and the count stay.
+TEST(Animation, ReleaseFreesPassedFramesAndBakesTheSameClip) {
+  Loaded l = load("smplh_small.npz", "amass_smplh.npz");
+  for (double fps : {30.0, 50.0, 0.0}) {  // every 4th frame, slerped, every frame
+    AnimationOptions o;
+    o.fps = fps;
+    o.first_frame = 3;
+    o.end_frame = 90;
+    Result<AnimationClip> kept = bakeAnimation(l.model, l.asset, l.motion, o, "m");
+    Motion consumed = l.motion;
+    Result<AnimationClip> freed =
+        bakeAnimation(l.model, l.asset, consumed, o, "m", nullptr, &consumed);
+    ASSERT_TRUE(kept.ok() && freed.ok()) << kept.message() << freed.message();
+    ASSERT_EQ(consumed.frames.size(), l.motion.frames.size());
+    for (size_t f = 0; f < consumed.frames.size(); ++f)
+      EXPECT_EQ(consumed.frames[f].empty(), f >= 3 && f < 90) << fps << " frame " << f;
+    ASSERT_EQ(freed->rotations.size(), kept->rotations.size());
+    for (size_t j = 0; j < kept->rotations.size(); ++j)
+      for (size_t i = 0; i < kept->rotations[j].size(); ++i)
+        ASSERT_EQ(freed->rotations[j][i].coeffs(), kept->rotations[j][i].coeffs()) << j << " " << i;
+    EXPECT_EQ(freed->morph_weights, kept->morph_weights);
+    EXPECT_EQ(freed->root_translation, kept->root_translation);
+  }
+  Motion other = l.motion;
+  Result<AnimationClip> wrong =
+      bakeAnimation(l.model, l.asset, l.motion, AnimationOptions(), "m", nullptr, &other);
+  EXPECT_FALSE(wrong.ok());
+}
+
+// Rotation keys are stored as glTF writes them: unit in float, each key on
+// the short path from the previous one (q and -q are the same rotation).
+TEST(Animation, RotationKeysAreUnitAndContinuous) {
+  Loaded l = load("smplh_small.npz", "amass_smplh.npz");
+  for (size_t f = 0; f < l.motion.frames.size(); ++f)  // joint 1 spins: past pi, w changes sign
+    l.motion.frames[f][1] =
+        Eigen::AngleAxisd(0.3 * double(f), Eigen::Vector3d(0.2, 1, 0.1).normalized())
+            .toRotationMatrix();
+  Result<AnimationClip> clip = bakeAnimation(l.model, l.asset, l.motion, AnimationOptions(), "m");
+  ASSERT_TRUE(clip.ok()) << clip.message();
+  for (const RotationTrack& track : clip->rotations)
+    for (size_t i = 0; i < track.size(); ++i) {
+      EXPECT_NEAR(track[i].cast<double>().norm(), 1.0, 2e-7);
+      if (i > 0) EXPECT_GE(track[i].dot(track[i - 1]), 0.0f) << i;
+    }
 }
 
 TEST(Animation, SlerpBetweenFramesAndFrameRange) {
@@ -97,11 +153,12 @@ TEST(Animation, SlerpBetweenFramesAndFrameRange) {
   ASSERT_TRUE(clip.ok()) << clip.message();
   ASSERT_EQ(clip->times.size(), 19u);
   Eigen::Quaterniond a(l.motion.frames[12][3]), b(l.motion.frames[13][3]);
-  EXPECT_LT(clip->rotations[3][5].angularDistance(a.slerp(0.5, b)), 1e-12);
+  EXPECT_LT(clip->rotations[3][5].cast<double>().angularDistance(a.slerp(0.5, b)), kKeyRounding);
   EXPECT_EQ(l.motion.world, MotionWorld::Y);
-  EXPECT_LT(
-      (clip->rotations[0][0].toRotationMatrix() - l.motion.frames[10][0]).cwiseAbs().maxCoeff(),
-      1e-12);
+  EXPECT_LT((clip->rotations[0][0].cast<double>().toRotationMatrix() - l.motion.frames[10][0])
+                .cwiseAbs()
+                .maxCoeff(),
+            kKeyRounding);
   o.end_frame = 99;
   Result<AnimationClip> bad = bakeAnimation(l.model, l.asset, l.motion, o, "m.npz");
   ASSERT_FALSE(bad.ok());
@@ -139,8 +196,10 @@ TEST(Animation, CameraFrameTurnsUprightByAHalfTurnAboutX) {
     EXPECT_EQ(clip->source.world, up == UpAxis::Y ? "y" : "-y");
     for (int i : {0, 7, 29}) {
       const Rotations& src = l.motion.frames[i];
-      EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - turn * src[0]).cwiseAbs().maxCoeff(),
-                1e-12);
+      EXPECT_LT((clip->rotations[0][i].cast<double>().toRotationMatrix() - turn * src[0])
+                    .cwiseAbs()
+                    .maxCoeff(),
+                kKeyRounding);
       EXPECT_LT((clip->root_translation[i] - turn * (j0 + l.motion.translation[i])).norm(), 1e-12);
     }
   }
@@ -165,10 +224,10 @@ TEST(Animation, FrameChangeMovesTheBodyAboutTheOrigin) {
   const Eigen::Vector3d j0 = l.asset.skeleton.rest_world.row(0).transpose();
   for (int i : {0, 11, 29}) {
     const Eigen::Matrix3d& a = l.motion.world_rotation[i];
-    EXPECT_LT((clip->rotations[0][i].toRotationMatrix() - a * l.motion.frames[i][0])
+    EXPECT_LT((clip->rotations[0][i].cast<double>().toRotationMatrix() - a * l.motion.frames[i][0])
                   .cwiseAbs()
                   .maxCoeff(),
-              1e-12);
+              kKeyRounding);
     EXPECT_LT((clip->root_translation[i] -
                (a * (j0 + l.motion.translation[i]) + l.motion.world_translation[i]))
                   .norm(),

@@ -124,7 +124,7 @@ TEST(Placement, RootBoneKeepsEveryPosedVertex) {
     const Eigen::Vector3d p = a.root_translation[t];  // the pelvis' world position
     EXPECT_EQ(b.root_translation[t], Eigen::Vector3d(p.x(), 0, p.z())) << t;
     EXPECT_EQ(b.joint_translations[1][t], Eigen::Vector3d(0, p.y(), 0)) << t;
-    EXPECT_TRUE(b.rotations[0][t].isApprox(Eigen::Quaterniond::Identity()));
+    EXPECT_TRUE(b.rotations[0][t].isApprox(Eigen::Quaternionf::Identity()));
     EXPECT_TRUE(b.rotations[1][t].isApprox(a.rotations[0][t]));
     if (t % 7 != 0) continue;  // playback every 7th frame
     const Eigen::MatrixXd va = test::enginePlayback(*plain, a, int(t));

@@ -27,7 +27,7 @@ Asset buildGoodAsset() {
   clip.name = "walk";
   clip.times = {0.0, 1.0 / 30};
   const size_t joints = a->skeleton.names.size();
-  clip.rotations.assign(joints, std::vector<Eigen::Quaterniond>(2, Eigen::Quaterniond::Identity()));
+  clip.rotations.assign(joints, RotationTrack(2, Eigen::Quaternionf::Identity()));
   clip.root_translation = {Eigen::Vector3d(0, 0.9, 0), Eigen::Vector3d(0.1, 0.9, 0)};
   clip.morph_weights =
       Eigen::MatrixXf::Zero(2, static_cast<Eigen::Index>(a->mesh.morph_targets.size()));

@@ -96,7 +96,7 @@ const std::vector<Rule>& rules() {
       {"rotation keys", [](Asset& a) { a.animations[0].rotations[6].pop_back(); },
        "joint 6 has 3 rotation keys; expected 4"},
       {"zero rotation",
-       [](Asset& a) { a.animations[0].rotations[2][1] = Eigen::Quaterniond(0, 0, 0, 0); },
+       [](Asset& a) { a.animations[0].rotations[2][1] = Eigen::Quaternionf(0, 0, 0, 0); },
        "joint 2 has a zero or non-finite rotation"},
       {"root translations", [](Asset& a) { a.animations[0].root_translation.pop_back(); },
        "3 root translations; expected 4"},

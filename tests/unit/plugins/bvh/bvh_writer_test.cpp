@@ -46,7 +46,8 @@ Asset smallAsset(int frames, double fps = 120.0) {
   for (int t = 0; t < frames; ++t) {
     clip.times.push_back(t / fps);
     for (auto& track : clip.rotations)
-      track.push_back(Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized());
+      track.push_back(
+          Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().cast<float>());
     clip.root_translation.emplace_back(0.1 * t, 0.9 + 0.01 * t, -0.05 * t);
   }
   a.animations.push_back(clip);
@@ -253,7 +254,7 @@ std::vector<Eigen::Vector3d> assetWorld(const Asset& a, size_t frame) {
         p < 0 ? c.root_translation[frame]
               : (c.joint_translations.empty() ? Eigen::Vector3d(s.rest_local.row(Eigen::Index(k)))
                                               : c.joint_translations[k][frame]);
-    const Eigen::Matrix3d r = c.rotations[k][frame].toRotationMatrix();
+    const Eigen::Matrix3d r = c.rotations[k][frame].cast<double>().toRotationMatrix();
     pos[k] = p < 0 ? local : Eigen::Vector3d(pos[size_t(p)] + rot[size_t(p)] * local);
     rot[k] = p < 0 ? r : Eigen::Matrix3d(rot[size_t(p)] * r);
   }

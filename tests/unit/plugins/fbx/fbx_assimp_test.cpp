@@ -149,7 +149,7 @@ TEST(FbxAssimp, AnimationChannelsPerJoint) {
   const aiNodeAnim* head = channels["head"];
   ASSERT_NE(head, nullptr);
   ASSERT_EQ(head->mNumRotationKeys, a.animations[0].times.size());
-  const Eigen::Quaterniond& want = a.animations[0].rotations[2].back();
+  const Eigen::Quaterniond want = a.animations[0].rotations[2].back().cast<double>();
   const aiQuaternion& q = head->mRotationKeys[head->mNumRotationKeys - 1].mValue;
   EXPECT_NEAR(std::abs(q.w * want.w() + q.x * want.x() + q.y * want.y() + q.z * want.z()), 1.0,
               1e-5);

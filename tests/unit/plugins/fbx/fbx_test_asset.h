@@ -119,15 +119,14 @@ inline AnimationClip testClip(int targets) {
     double t = double(f) / (frames - 1);
     c.times.push_back(f / c.fps);
     // The pelvis turns 270 degrees about +Y: Euler curves must stay continuous.
-    c.rotations[0].push_back(
-        Eigen::Quaterniond(Eigen::AngleAxisd(1.5 * kPi * t, Eigen::Vector3d::UnitY())));
+    auto key = [](const Eigen::AngleAxisd& r) { return Eigen::Quaterniond(r).cast<float>(); };
+    c.rotations[0].push_back(key(Eigen::AngleAxisd(1.5 * kPi * t, Eigen::Vector3d::UnitY())));
     c.rotations[1].push_back(
-        Eigen::Quaterniond(Eigen::AngleAxisd(0.8 * t, Eigen::Vector3d(0.3, 0.2, 1).normalized())));
-    c.rotations[2].push_back(
-        Eigen::Quaterniond(Eigen::AngleAxisd(-0.6 * t, Eigen::Vector3d::UnitX())));
+        key(Eigen::AngleAxisd(0.8 * t, Eigen::Vector3d(0.3, 0.2, 1).normalized())));
+    c.rotations[2].push_back(key(Eigen::AngleAxisd(-0.6 * t, Eigen::Vector3d::UnitX())));
     c.rotations[3].push_back(
-        Eigen::Quaterniond(Eigen::AngleAxisd(0.5 * t, Eigen::Vector3d(1, 0, 0.4).normalized())));
-    c.rotations[4].push_back(Eigen::Quaterniond::Identity());
+        key(Eigen::AngleAxisd(0.5 * t, Eigen::Vector3d(1, 0, 0.4).normalized())));
+    c.rotations[4].push_back(Eigen::Quaternionf::Identity());
     c.root_translation.emplace_back(0.05 * t, 0.9 + 0.02 * t, 0.3 * t);
     for (int m = 0; m < targets; ++m)
       c.morph_weights(f, m) = float(0.5 + 0.5 * std::sin(3 * t + m));
@@ -156,7 +155,7 @@ inline std::vector<Eigen::Vector3d> worldJoints(const Asset& a, const AnimationC
   std::vector<Eigen::Vector3d> out;
   for (size_t k = 0; k < s.names.size(); ++k) {
     Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
-    local.linear() = c.rotations[k][f].toRotationMatrix();
+    local.linear() = c.rotations[k][f].cast<double>().toRotationMatrix();
     local.translation() =
         k == 0 ? c.root_translation[f] : Eigen::Vector3d(s.rest_local.row(k).transpose());
     g[k] = s.parents[k] < 0 ? local : g[s.parents[k]] * local;

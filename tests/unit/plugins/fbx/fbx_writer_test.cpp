@@ -414,7 +414,8 @@ TEST(FbxWriter, RotationCurvesReproduceTheClip) {
                            Eigen::AngleAxisd(y[i] * r, Eigen::Vector3d::UnitY()) *
                            Eigen::AngleAxisd(x[i] * r, Eigen::Vector3d::UnitX()))
                               .toRotationMatrix();
-      EXPECT_LT((m - clip.rotations[k][i].toRotationMatrix()).cwiseAbs().maxCoeff(), 1e-5)
+      EXPECT_LT((m - clip.rotations[k][i].cast<double>().toRotationMatrix()).cwiseAbs().maxCoeff(),
+                1e-5)
           << k << " " << i;
       if (i > 0) {  // 270 degrees in 9 steps of 30: continuous curves step < 60 degrees
         EXPECT_LT(std::abs(x[i] - x[i - 1]) + std::abs(y[i] - y[i - 1]) + std::abs(z[i] - z[i - 1]),
@@ -445,10 +446,14 @@ TEST(FbxWriter, EulerConversionSurvivesGimbalLockAndFlips) {
   }
   q.emplace_back(
       Eigen::AngleAxisd(3.14159265358979323846 / 2, Eigen::Vector3d::UnitY()));  // exact lock
-  std::vector<Eigen::Vector3d> e = fbx::continuousEulerXYZDegrees(q);
+  RotationTrack keys;  // as the bake stores them: float
+  for (const Eigen::Quaterniond& r : q) keys.push_back(r.cast<float>());
+  std::vector<Eigen::Vector3d> e = fbx::continuousEulerXYZDegrees(keys);
   ASSERT_EQ(e.size(), q.size());
   for (size_t i = 0; i < q.size(); ++i) {
-    EXPECT_LT((fromEulerDegrees(e[i]) - q[i].toRotationMatrix()).cwiseAbs().maxCoeff(), 1e-9) << i;
+    const Eigen::Matrix3d want = keys[i].cast<double>().normalized().toRotationMatrix();
+    // 1e-9 away from the lock; at it (the last key) asin keeps half the digits
+    EXPECT_LT((fromEulerDegrees(e[i]) - want).cwiseAbs().maxCoeff(), i == 41 ? 5e-8 : 1e-9) << i;
     if (i > 0 && i < 41) {  // input steps are 4.5 degrees; no 360 jumps or flips
       EXPECT_LT((e[i] - e[i - 1]).cwiseAbs().maxCoeff(), 30.0) << i;
     }
@@ -505,7 +510,7 @@ TEST(FbxWriter, RejectsInconsistentAssets) {
   bad.animations[0].rotations[1].pop_back();
   EXPECT_FALSE(fbxWriter().serialize(bad, {}).ok());
   bad = a;
-  bad.animations[0].rotations[3][2] = Eigen::Quaterniond(0, 0, 0, 0);
+  bad.animations[0].rotations[3][2] = Eigen::Quaternionf(0, 0, 0, 0);
   EXPECT_NE(fbxWriter().serialize(bad, {}).message().find("zero or non-finite rotation"),
             std::string::npos);
   bad = a;

@@ -131,7 +131,7 @@ double rotationError(const Glb& g, const AnimationClip& clip) {
     const std::vector<double> keys = normalisedKeys(g, acc);
     const auto& track = clip.rotations[size_t(ch["target"]["node"])];
     for (size_t f = 0; f < track.size(); ++f) {
-      const Eigen::Vector4d q = track[f].normalized().coeffs();  // x, y, z, w
+      const Eigen::Vector4d q = track[f].cast<double>().normalized().coeffs();  // x, y, z, w
       const Eigen::Vector4d d(keys[4 * f], keys[4 * f + 1], keys[4 * f + 2], keys[4 * f + 3]);
       worst =
           std::max(worst, std::min((d - q).cwiseAbs().maxCoeff(), (d + q).cwiseAbs().maxCoeff()));

@@ -307,9 +307,10 @@ TEST(GltfWriter, GlbFourInfluencesWithUvs) {
 }
 
 // serializeFiles hands a GLB over as its head (header, JSON chunk, BIN chunk
-// header), the BIN data apart, and the clip's morph weight keys as a splice
-// of the asset's own track (not copied), so the CLI writes the buffer without
-// copying it behind the head; in order they are serialize()'s bytes.
+// header), the BIN data apart, and the float morph targets' deltas, the
+// clip's rotation and morph weight keys as splices of the asset's own arrays
+// (not copied), so the CLI writes the buffer without copying it behind the
+// head; in order they are serialize()'s bytes.
 TEST(GltfWriter, GlbHeadAndBufferAreTheWholeFile) {
   AssetSpec spec;
   spec.frames = 7;
@@ -326,9 +327,23 @@ TEST(GltfWriter, GlbHeadAndBufferAreTheWholeFile) {
   EXPECT_EQ(files->size(), whole->size());
   const MorphWeightTrack& track = a.animations[0].morph_weights;
   ASSERT_GT(track.size(), 0);
-  ASSERT_EQ(files->splices.size(), 1u);
-  EXPECT_EQ(files->splices[0].bytes.data, static_cast<const void*>(track.data()));
-  EXPECT_EQ(files->splices[0].bytes.size, size_t(track.size()) * sizeof(float));
+  const std::vector<MorphTarget>& targets = a.mesh.morph_targets;
+  const std::vector<RotationTrack>& rotations = a.animations[0].rotations;
+  ASSERT_GT(targets.size(), 0u);
+  // In the order glTF's views have them: the targets, the rotations, the weights.
+  ASSERT_EQ(files->splices.size(), targets.size() + rotations.size() + 1);
+  for (size_t n = 0; n < targets.size(); ++n) {
+    EXPECT_EQ(files->splices[n].bytes.data, static_cast<const void*>(targets[n].deltas.data()))
+        << n;
+    EXPECT_EQ(files->splices[n].bytes.size, size_t(targets[n].deltas.size()) * sizeof(float)) << n;
+  }
+  for (size_t k = 0; k < rotations.size(); ++k) {
+    const Writer::Splice& s = files->splices[targets.size() + k];
+    EXPECT_EQ(s.bytes.data, static_cast<const void*>(rotations[k].data())) << k;
+    EXPECT_EQ(s.bytes.size, rotations[k].size() * 4 * sizeof(float)) << k;
+  }
+  EXPECT_EQ(files->splices.back().bytes.data, static_cast<const void*>(track.data()));
+  EXPECT_EQ(files->splices.back().bytes.size, size_t(track.size()) * sizeof(float));
   ASSERT_GT(files->tail.size(), 0u);
   EXPECT_EQ(files->bytes.size() % 4, 0u);
   EXPECT_EQ(files->bytes.compare(files->bytes.size() - 4, 4, "BIN\0", 4), 0);
@@ -443,7 +458,7 @@ TEST(GltfWriter, AnimationChannels) {
     std::vector<double> q = readAccessor(m, s.output);
     ASSERT_EQ(q.size(), 4 * clip.times.size());
     for (size_t t = 0; t < clip.times.size(); ++t) {
-      const Eigen::Quaterniond& want = clip.rotations[size_t(k)][t];
+      const Eigen::Quaternionf& want = clip.rotations[size_t(k)][t];
       EXPECT_NEAR(q[4 * t + 0], want.x(), 1e-6);
       EXPECT_NEAR(q[4 * t + 3], want.w(), 1e-6);
     }
