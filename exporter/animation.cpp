@@ -176,12 +176,12 @@ Result<Eigen::Vector3d> anchorPoint(const BodyModel& model, const Asset& asset,
 }
 
 // Frees the decoded frames [*freed, keep) of `m` (no later sample reads
-// them) and, every 4096 output frames, hands the freed pages back
+// them) and, every 1024 output frames, hands the freed pages back
 // (heap_trim.h), so that a long clip's frames and tracks are not whole in
 // memory together.
 void releasePassedFrames(int keep, int sample, int* freed, Motion* m) {
   for (; *freed < keep; ++*freed) Rotations().swap(m->frames[size_t(*freed)]);
-  if (sample % 4096 == 4095) returnFreedHeap();
+  if (sample % 1024 == 1023) returnFreedHeap();
 }
 
 }  // namespace

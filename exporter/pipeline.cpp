@@ -5,6 +5,7 @@
 #include <numeric>
 #include <optional>
 
+#include "core/heap_trim.h"
 #include "core/load/uv_source.h"
 #include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
@@ -233,18 +234,13 @@ Asset skeletonAsset(const BodyModel& model, const ExportOptions& o, const Eigen:
   return asset;
 }
 
-// The skin and, when the options refit, the refit of the subject `body`:
-// from `skins` when given (the same subject's earlier export), else computed.
-std::shared_ptr<const FittedSkin> fittedSkin(const BodyModel& model, const ShapedBody& body,
-                                             const ExportOptions& o, SkinCache* skins) {
-  auto fit = [&] {
-    FittedSkin f;
-    f.skin = exportSkin(model, body, o);
-    if (refitsCorrectives(o))
-      f.refit = refitCorrectives(model, body, f.skin, CorrectiveRefitOptions());
-    return f;
-  };
-  return skins ? skins->get(model, o, fit) : std::make_shared<const FittedSkin>(fit());
+// The skin and, when the options refit, the refit of the subject `body`.
+FittedSkin fitSkin(const BodyModel& model, const ShapedBody& body, const ExportOptions& o) {
+  FittedSkin f;
+  f.skin = exportSkin(model, body, o);
+  if (refitsCorrectives(o))
+    f.refit = refitCorrectives(model, body, f.skin, CorrectiveRefitOptions());
+  return f;
 }
 
 }  // namespace
@@ -276,13 +272,17 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o, SkinCac
   Asset asset;
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);
-  const std::shared_ptr<const FittedSkin> fitted = fittedSkin(model, *body, o, skins);
-  const SparseSkin& skin = fitted->skin;
+  // From `skins` (the same subject's earlier export) or fitted for this export alone.
+  const std::shared_ptr<const FittedSkin> cached =
+      skins ? skins->get(model, o, [&] { return fitSkin(model, *body, o); }) : nullptr;
+  FittedSkin own = skins ? FittedSkin() : fitSkin(model, *body, o);
+  returnFreedHeap();  // the fit's and the refit's temporaries (a long clip's frames are loaded)
+  const SparseSkin& skin = skins ? cached->skin : own.skin;
   const int m = static_cast<int>(skin.joints.cols());  // influencesFor(), or fewer with "all"
   buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
   fillMetadata(model, o, &asset.metadata);
   asset.metadata.max_influences = m;
-  asset.corrective_refit = fitted->refit;
+  asset.corrective_refit = skins ? cached->refit : std::move(own.refit);  // one copy in memory
   if (Status s = addMorphTargets(model, o, asset.corrective_refit, &asset); !s) return s.error();
   return asset;
 }
