@@ -34,6 +34,15 @@ Eigen::Vector3d wrapTowards(const Eigen::Vector3d& e, const Eigen::Vector3d& pre
   return {nearestWrap(e.x(), prev.x()), nearestWrap(e.y(), prev.y()), nearestWrap(e.z(), prev.z())};
 }
 
+// A clip's key times (FBX KTime) and their KeyTime array, encoded once for
+// all of its curves (one copy in memory, compressed once).
+struct KeyTimes {
+  std::vector<int64_t> ktime;
+  FbxProperty array;  // fbxSharedInt64Array(ktime)
+  size_t size() const { return ktime.size(); }
+  bool empty() const { return ktime.empty(); }
+};
+
 FbxNode& addCurveNode(SceneContext& ctx, int64_t id, const char* name, int64_t layer,
                       int64_t target, const char* property) {
   FbxNode& n = ctx.addObject("AnimationCurveNode", id, name, "AnimCurveNode", "");
@@ -43,11 +52,11 @@ FbxNode& addCurveNode(SceneContext& ctx, int64_t id, const char* name, int64_t l
 }
 
 void addCurve(SceneContext& ctx, int64_t id, int64_t curve_node, const char* channel,
-              const std::vector<int64_t>& times, const std::vector<float>& values) {
+              const KeyTimes& times, const std::vector<float>& values) {
   FbxNode& c = ctx.addObject("AnimationCurve", id, "", "AnimCurve", "");
   c.add("Default").addDouble(values.empty() ? 0.0 : values[0]);
   c.add("KeyVer").addInt32(4008);
-  c.add("KeyTime").addInt64Array(times);
+  c.add("KeyTime").addShared(times.array);
   c.add("KeyValueFloat").addFloatArray(values);
   // One attribute shared by all keys: linear interpolation (0x4) with the
   // usual auto-tangent bits; data = slopes 0, default tangent weights 1/3.
@@ -62,7 +71,7 @@ void addCurve(SceneContext& ctx, int64_t id, int64_t curve_node, const char* cha
 
 // A 3-channel curve node (d|X, d|Y, d|Z) with its three curves.
 void addVectorCurves(SceneContext& ctx, const std::string& key, const char* name, int64_t layer,
-                     int64_t target, const char* property, const std::vector<int64_t>& times,
+                     int64_t target, const char* property, const KeyTimes& times,
                      const std::vector<Eigen::Vector3d>& values) {
   int64_t node_id = ctx.ids.id(key);
   FbxNode& node = addCurveNode(ctx, node_id, name, layer, target, property);
@@ -79,7 +88,7 @@ void addVectorCurves(SceneContext& ctx, const std::string& key, const char* name
 }
 
 void addMorphCurves(SceneContext& ctx, const AnimationClip& clip, const std::string& prefix,
-                    int64_t layer, const std::vector<int64_t>& times) {
+                    int64_t layer, const KeyTimes& times) {
   for (Eigen::Index t = 0; t < clip.morph_weights.cols(); ++t) {
     std::string key = prefix + "/morph/" + std::to_string(t);
     int64_t node_id = ctx.ids.id(key);
@@ -97,9 +106,12 @@ void addMorphCurves(SceneContext& ctx, const AnimationClip& clip, const std::str
 
 void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
   const std::string prefix = "anim/" + std::to_string(index);
-  std::vector<int64_t> times(clip.times.size());
-  for (size_t i = 0; i < times.size(); ++i) times[i] = secondsToKTime(clip.times[i]);
-  int64_t start = times.empty() ? 0 : times.front(), stop = times.empty() ? 0 : times.back();
+  KeyTimes times;
+  times.ktime.resize(clip.times.size());
+  for (size_t i = 0; i < times.size(); ++i) times.ktime[i] = secondsToKTime(clip.times[i]);
+  times.array = fbxSharedInt64Array(times.ktime);
+  int64_t start = times.empty() ? 0 : times.ktime.front();
+  int64_t stop = times.empty() ? 0 : times.ktime.back();
 
   int64_t stack = ctx.ids.id(prefix + "/stack");
   FbxNode& s = ctx.addObject("AnimationStack", stack, clip.name, "AnimStack", "");

@@ -8,8 +8,10 @@
 #include <limits>
 #include <string_view>
 #include <thread>
+#include <type_traits>
 #include <unordered_map>
 
+#include "core/heap_trim.h"
 #include "core/parallel.h"
 
 namespace smpl {
@@ -44,7 +46,9 @@ void patchLE(std::string& out, size_t at, T value) {
     out[at + i] = static_cast<char>((uint64_t(value) >> (8 * i)) & 0xff);
 }
 
-FbxProperty scalar(char type, std::string payload) { return FbxProperty{type, std::move(payload)}; }
+FbxProperty scalar(char type, std::string payload) {
+  return FbxProperty{type, std::move(payload), false, nullptr};
+}
 
 template <class T>
 std::string encodeScalar(T v) {
@@ -70,7 +74,7 @@ FbxProperty encodeArray(char type, const std::vector<T>& values) {
   } else {
     for (const T& v : values) putLE(payload, v);
   }
-  return FbxProperty{type, std::move(payload), deflate};
+  return FbxProperty{type, std::move(payload), deflate, nullptr};
 }
 
 // count + raw -> count, encoding 1, compressed length, zlib stream (raw
@@ -99,58 +103,90 @@ std::string deflatePayload(libdeflate_compressor* compressor, const std::string&
   return out;
 }
 
-void collectDeflates(const FbxNode& n, std::vector<const FbxProperty*>* pending) {
-  for (const FbxProperty& p : n.properties)
-    if (p.deflate) pending->push_back(&p);
-  for (const FbxNode& child : n.children) collectDeflates(child, pending);
+// A deferred array's payload, and the same string when the encoder may free
+// it once compressed (a payload of nodes handed over, not shared).
+struct Pending {
+  const std::string* bytes;
+  std::string* owned;
+};
+
+// Node is FbxNode (nodes handed over: their own payloads may be freed) or
+// const FbxNode.
+template <class Node>
+void collectDeflates(Node& n, std::vector<Pending>* pending) {
+  for (auto& p : n.properties) {
+    if (!p.deflate) continue;
+    std::string* owned = nullptr;
+    if constexpr (!std::is_const_v<Node>)
+      if (!p.shared) owned = &p.payload;
+    pending->push_back({&p.bytes(), owned});
+  }
+  for (auto& child : n.children) collectDeflates(child, pending);
 }
 
-// Indexes into `pending` of the first array with the same bytes as each
-// (a shape's zero normal deltas, the Indexes of shapes that move every
-// vertex: identical payloads are common), so each distinct payload is
-// compressed once; the file is the same as with every array compressed.
-std::vector<size_t> firstCopies(const std::vector<const FbxProperty*>& pending) {
-  std::vector<size_t> first(pending.size());
+// The compressed arrays: one stream per distinct payload, the stream of each
+// deferred payload (by its address: a shared payload has one) and how many
+// properties still have to write each (a stream is freed after its last).
+struct Deflated {
+  std::vector<std::string> streams;
+  std::vector<size_t> uses;
+  std::unordered_map<const std::string*, size_t> stream_of;
+  const std::string& of(const std::string* payload) const { return streams[stream_of.at(payload)]; }
+};
+
+// Each deferred payload's stream: a shared payload (one address) and arrays
+// with the same bytes (a shape's zero normal deltas, the Indexes of shapes
+// that move every vertex) get one, so each distinct payload is compressed
+// once; the file is the same as with every array compressed. Returns the
+// first payload of each stream.
+std::vector<Pending> assignStreams(const std::vector<Pending>& pending, Deflated* d) {
+  std::vector<Pending> distinct;
   std::unordered_map<std::string_view, size_t> seen;
-  for (size_t i = 0; i < pending.size(); ++i)
-    first[i] = seen.emplace(std::string_view(pending[i]->payload), i).first->second;
-  return first;
+  for (const Pending& p : pending) {
+    if (auto known = d->stream_of.find(p.bytes); known != d->stream_of.end()) {
+      ++d->uses[known->second];  // a shared payload met before
+      continue;
+    }
+    const auto [it, added] = seen.emplace(std::string_view(*p.bytes), distinct.size());
+    if (added) distinct.push_back(p), d->uses.push_back(0);
+    d->stream_of.emplace(p.bytes, it->second);
+    ++d->uses[it->second];
+  }
+  return distinct;
 }
 
 // Compress every deferred array on `threads` workers (0: all cores); the
 // result is independent of the thread count (each array is compressed on
 // its own, by its own call). Level 0 stores them raw.
-std::unordered_map<const FbxProperty*, std::string> deflateAll(const std::vector<FbxNode>& top,
-                                                               const FbxEncodeOptions& options) {
-  std::vector<const FbxProperty*> pending;
-  if (options.compress_level > 0)  // level 0: the Encoder stores them raw, without a copy here
-    for (const FbxNode& n : top) collectDeflates(n, &pending);
-  const std::vector<size_t> first = firstCopies(pending);
-  std::vector<size_t> distinct;
-  for (size_t i = 0; i < pending.size(); ++i)
-    if (first[i] == i) distinct.push_back(i);
-  std::vector<std::string> done(pending.size());
+// With owned payloads (nodes handed over) each is freed once compressed.
+Deflated deflateAll(const std::vector<Pending>& pending, const FbxEncodeOptions& options) {
+  Deflated d;
+  const std::vector<Pending> distinct = assignStreams(pending, &d);
+  for (const Pending& p : pending)  // a copy of an earlier payload is not read again
+    if (p.owned && distinct[d.stream_of.at(p.bytes)].bytes != p.bytes) std::string().swap(*p.owned);
+  d.streams.resize(distinct.size());
   std::atomic<size_t> next{0};
   auto work = [&] {
     libdeflate_compressor* compressor =
         options.compress_level > 0 ? libdeflate_alloc_compressor(options.compress_level) : nullptr;
-    for (size_t j; (j = next++) < distinct.size();)
-      done[distinct[j]] = deflatePayload(compressor, pending[distinct[j]]->payload);
+    for (size_t j; (j = next++) < distinct.size();) {
+      d.streams[j] = deflatePayload(compressor, *distinct[j].bytes);
+      if (distinct[j].owned) std::string().swap(*distinct[j].owned);
+    }
     if (compressor) libdeflate_free_compressor(compressor);
   };
   const size_t wanted = options.threads > 0 ? size_t(options.threads) : size_t(hardwareThreads());
   const size_t threads = std::min<size_t>(wanted, distinct.size());
   runWorkers(int(threads), [&](int, int) { work(); });
-  std::unordered_map<const FbxProperty*, std::string> out;
-  for (size_t i = pending.size(); i-- > 0;)  // copies (after their first) before it moves
-    out.emplace(pending[i], first[i] == i ? std::move(done[i]) : done[first[i]]);
-  return out;
+  return d;
 }
 
 struct Encoder {
-  const std::unordered_map<const FbxProperty*, std::string>* deflated = nullptr;
-  bool stored = false;  // level 0: deferred arrays written raw (encoding 0)
-  bool wide = false;    // 64-bit record headers (7500+)
+  Deflated* deflated = nullptr;
+  bool release = false;  // free each stream after its last use
+  size_t freed = 0;      // bytes freed since the heap was last trimmed
+  bool stored = false;   // level 0: deferred arrays written raw (encoding 0)
+  bool wide = false;     // 64-bit record headers (7500+)
   std::string out;
   std::string error;
 
@@ -175,20 +211,33 @@ struct Encoder {
   // A deferred array's payload is count + raw bytes; stored, it gains the
   // encoding (0) and byte length after the count.
   size_t payloadSize(const FbxProperty& p) const {
-    if (!p.deflate) return p.payload.size();
-    return stored ? p.payload.size() + 8 : deflated->at(&p).size();
+    if (!p.deflate) return p.bytes().size();
+    return stored ? p.bytes().size() + 8 : deflated->of(&p.bytes()).size();
   }
   void putPayload(const FbxProperty& p) {
     if (!p.deflate) {
-      out += p.payload;
+      out += p.bytes();
     } else if (!stored) {
-      out += deflated->at(&p);
+      const size_t s = deflated->stream_of.at(&p.bytes());
+      out += deflated->streams[s];
+      if (release && --deflated->uses[s] == 0) releaseStream(&deflated->streams[s]);
     } else {
-      out.append(p.payload, 0, 4);
+      const std::string& raw = p.bytes();
+      out.append(raw, 0, 4);
       putLE(out, uint32_t(0));
-      putLE(out, static_cast<uint32_t>(p.payload.size() - 4));
-      out.append(p.payload, 4, std::string::npos);
+      putLE(out, static_cast<uint32_t>(raw.size() - 4));
+      out.append(raw, 4, std::string::npos);
     }
+  }
+
+  // Frees a written stream; every 16 MB the freed pages go back to the
+  // system (heap_trim.h), so the output grows into the memory they leave.
+  void releaseStream(std::string* stream) {
+    freed += stream->size();
+    std::string().swap(*stream);
+    if (freed < (16u << 20)) return;
+    returnFreedHeap();
+    freed = 0;
   }
 
   // An upper bound of the encoded size of `n` (reserved once: no regrowth).
@@ -295,18 +344,39 @@ FbxNode& FbxNode::addInt64Array(const std::vector<int64_t>& v) {
   properties.push_back(encodeArray('l', v));
   return *this;
 }
+FbxNode& FbxNode::addShared(const FbxProperty& p) {
+  properties.push_back(p);  // copies the shared_ptr, not the payload
+  return *this;
+}
 
-Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
-                              const FbxEncodeOptions& options) {
+FbxProperty fbxSharedInt64Array(const std::vector<int64_t>& v) {
+  FbxProperty p = encodeArray('l', v);
+  p.shared = std::make_shared<const std::string>(std::move(p.payload));
+  p.payload.clear();
+  return p;
+}
+
+namespace {
+
+Status checkEncoding(uint32_t version, const FbxEncodeOptions& options) {
   if (version < 7000 || version >= 8000)
     return makeError("FBX: unsupported version " + std::to_string(version) +
                      "; expected 7400 or 7500");
   if (options.compress_level < 0 || options.compress_level > kFbxMaxZlibLevel)
     return makeError("FBX: compression level " + std::to_string(options.compress_level) +
                      "; expected 0 (stored) to 12");
-  const std::unordered_map<const FbxProperty*, std::string> deflated = deflateAll(top, options);
+  return Status();
+}
+
+// `pending`: the deferred arrays of `top` (none at level 0: the Encoder
+// stores them raw); `release`: they may be freed as they are used.
+Result<std::string> encode(const std::vector<FbxNode>& top, const std::vector<Pending>& pending,
+                           uint32_t version, const FbxEncodeOptions& options, bool release) {
+  Deflated deflated = deflateAll(pending, options);
+  if (release) returnFreedHeap();  // the arrays compressed and freed
   Encoder enc;
   enc.deflated = &deflated;
+  enc.release = release;
   enc.stored = options.compress_level == 0;
   enc.wide = version >= 7500;
   size_t bound = 27 + enc.headerSize() + 1 + 200;  // header, top null record, footer
@@ -319,6 +389,28 @@ Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
   enc.nullRecord();
   enc.footer(version);
   return std::move(enc.out);
+}
+
+}  // namespace
+
+Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
+                              const FbxEncodeOptions& options) {
+  if (Status st = checkEncoding(version, options); !st) return st.error();
+  std::vector<Pending> pending;
+  if (options.compress_level > 0)
+    for (const FbxNode& n : top) collectDeflates(n, &pending);
+  return encode(top, pending, version, options, false);
+}
+
+Result<std::string> encodeFbx(std::vector<FbxNode>&& top, uint32_t version,
+                              const FbxEncodeOptions& options) {
+  if (Status st = checkEncoding(version, options); !st) return st.error();
+  std::vector<Pending> pending;
+  if (options.compress_level > 0)
+    for (FbxNode& n : top) collectDeflates(n, &pending);
+  Result<std::string> bytes = encode(top, pending, version, options, true);
+  top.clear();  // its arrays are gone: nothing is left to read
+  return bytes;
 }
 
 }  // namespace smpl

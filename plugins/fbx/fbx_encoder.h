@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,17 @@ namespace smpl {
 
 struct FbxProperty {
   char type = 0;         // C Y I L F D S R f d l i b
-  std::string payload;   // encoded bytes after the type code
+  std::string payload;   // encoded bytes after the type code (empty when `shared`)
   bool deflate = false;  // payload is count + raw array bytes, compressed by encodeFbx()
+  // Non-null: the payload, held once for every node that has it (an array
+  // several nodes repeat: the key times of every curve of a clip); it is
+  // compressed once and written at each place.
+  std::shared_ptr<const std::string> shared;
+  const std::string& bytes() const { return shared ? *shared : payload; }
 };
+
+// An array property encoded once, for FbxNode::addShared on several nodes.
+FbxProperty fbxSharedInt64Array(const std::vector<int64_t>& v);
 
 struct FbxNode {
   std::string name;
@@ -62,6 +71,7 @@ struct FbxNode {
   FbxNode& addDoubleArray(const std::vector<double>& v);
   FbxNode& addInt32Array(const std::vector<int32_t>& v);
   FbxNode& addInt64Array(const std::vector<int64_t>& v);
+  FbxNode& addShared(const FbxProperty& p);  // p from fbxShared*Array: its payload is not copied
 };
 
 // Arrays whose raw size exceeds this many bytes are deflated.
@@ -81,6 +91,12 @@ struct FbxEncodeOptions {
 // (32-bit record headers) or 7500 (64-bit). Fails on names longer than 255
 // bytes, for 7400 on files beyond 4 GiB, and on a level outside 0..12.
 Result<std::string> encodeFbx(const std::vector<FbxNode>& top, uint32_t version,
+                              const FbxEncodeOptions& options = FbxEncodeOptions());
+// The same bytes from nodes handed over: each array is freed once compressed
+// and each compressed array once written, so a large file (a long clip's
+// curves) is not in memory as arrays, compressed arrays and output at once.
+// `top` is left empty.
+Result<std::string> encodeFbx(std::vector<FbxNode>&& top, uint32_t version,
                               const FbxEncodeOptions& options = FbxEncodeOptions());
 
 }  // namespace smpl

@@ -16,7 +16,7 @@ class FbxWriter : public Writer {
     FbxEncodeOptions encode;
     encode.compress_level = options.fbx_compress_level;
     encode.threads = options.threads;
-    return encodeFbx(*scene, static_cast<uint32_t>(options.fbx_version), encode);
+    return encodeFbx(std::move(*scene), static_cast<uint32_t>(options.fbx_version), encode);
   }
 };
 

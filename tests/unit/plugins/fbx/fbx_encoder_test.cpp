@@ -213,6 +213,50 @@ TEST(FbxEncoder, BytesDoNotDependOnTheThreadCount) {
   }
 }
 
+// Nodes handed over (encodeFbx(std::move(top)): arrays freed once compressed,
+// compressed arrays once written) give the bytes of the same nodes lent; a
+// shared array (a clip's key times on every curve) is written at each node
+// that has it, as the same array added to each would be: with long and short
+// (not deferred) shared arrays, arrays with the same bytes and distinct ones,
+// at every level and both versions. The handed-over nodes are gone.
+TEST(FbxEncoder, HandedOverNodesAndSharedArraysGiveTheSameBytes) {
+  for (size_t keys : {size_t(3000), size_t(5)}) {
+    std::vector<int64_t> times(keys);
+    for (size_t i = 0; i < keys; ++i) times[i] = int64_t(i) * 1539538600;
+    auto build = [&](bool shared) {
+      std::vector<FbxNode> top(1, FbxNode("Objects"));
+      const FbxProperty key_times = fbxSharedInt64Array(times);
+      for (int c = 0; c < 12; ++c) {
+        FbxNode& curve = top[0].add("AnimationCurve");
+        if (shared)
+          curve.add("KeyTime").addShared(key_times);
+        else
+          curve.add("KeyTime").addInt64Array(times);
+        std::vector<float> values(keys, 0.0f);  // every fourth curve: the same zeros
+        if (c % 4 != 0)
+          for (size_t i = 0; i < keys; ++i) values[i] = float(std::sin(0.01 * double(i * c)));
+        curve.add("KeyValueFloat").addFloatArray(values);
+      }
+      return top;
+    };
+    for (uint32_t version : {7400u, 7500u})
+      for (int level : {0, 1, 6}) {
+        FbxEncodeOptions o;
+        o.compress_level = level;
+        const std::vector<FbxNode> lent = build(false);
+        Result<std::string> reference = encodeFbx(lent, version, o);
+        const std::vector<FbxNode> shared = build(true);
+        Result<std::string> lent_shared = encodeFbx(shared, version, o);
+        std::vector<FbxNode> handed = build(true);
+        Result<std::string> out = encodeFbx(std::move(handed), version, o);
+        ASSERT_TRUE(reference && lent_shared && out) << out.message();
+        EXPECT_TRUE(*lent_shared == *reference) << keys << " keys, level " << level;
+        EXPECT_TRUE(*out == *reference) << keys << " keys, level " << level << ", " << version;
+        EXPECT_TRUE(handed.empty());
+      }
+  }
+}
+
 TEST(FbxEncoder, RejectsBadNamesAndVersions) {
   std::vector<FbxNode> top(1);
   top[0].name = std::string(256, 'x');
