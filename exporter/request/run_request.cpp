@@ -226,18 +226,21 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
   if (report.skin_fitted && asset->placement.root_bone)  // model joint k is file joint k + 1
     report.skin.joints = (report.skin.joints.array() - 1).cwiseMax(0).matrix();
-  if (r.skin_error_poses > 0 && report.skin_fitted) {
+  // The refit is in the morph targets already; only the measurement reads it.
+  const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
+  if (!measure) asset->corrective_refit = CorrectiveRefit();
+  returnFreedHeap();
+  Result<size_t> bytes = writeJob(r, *asset, *writer);
+  if (!bytes) return bytes.error();
+  if (measure) {  // after the write, without the clips: a long clip's tracks are gone first
+    asset->animations.clear();
+    returnFreedHeap();
     Result<PruningError> err = measurePruningError(model, report.options, r.skin_error_poses,
                                                    &report.skin, &asset->corrective_refit);
     if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());
     report.skin_error = *err;
     report.skin_error_measured = true;
   }
-  // The refit is in the morph targets already; only the measurement reads it.
-  asset->corrective_refit = CorrectiveRefit();
-  returnFreedHeap();
-  Result<size_t> bytes = writeJob(r, *asset, *writer);
-  if (!bytes) return bytes.error();
   report.bytes = *bytes;
   report.placement = asset->placement;
   report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
