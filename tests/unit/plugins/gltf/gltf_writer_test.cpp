@@ -434,6 +434,25 @@ TEST(GltfWriter, ShortIndicesBelowRestartValue) {
             TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
 }
 
+// A clip whose keys are not unit (made by hand, not by the bake) is written
+// normalised (in double, then rounded), not spliced as it is.
+TEST(GltfWriter, RotationKeysThatAreNotUnitAreNormalised) {
+  AssetSpec spec;
+  spec.frames = 5;
+  Asset a = makeAsset(spec);
+  RotationTrack& track = a.animations[0].rotations[1];
+  const RotationTrack unit = track;
+  for (Eigen::Quaternionf& q : track) q.coeffs() *= 2.5f;
+  const Loaded m = writeAndLoad(a, true, "scaled.glb");
+  const tinygltf::AnimationChannel& ch = m.animations[0].channels[1];
+  ASSERT_EQ(ch.target_node, 1);
+  const std::vector<double> q =
+      readAccessor(m, m.animations[0].samplers[size_t(ch.sampler)].output);
+  ASSERT_EQ(q.size(), 4 * unit.size());
+  for (size_t t = 0; t < unit.size(); ++t)
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(q[4 * t + size_t(c)], unit[t].coeffs()[c], 2e-7) << t;
+}
+
 TEST(GltfWriter, AnimationChannels) {
   AssetSpec spec;
   spec.frames = 5;
