@@ -78,27 +78,36 @@ std::string besides(const std::string& path, const std::string& entry) {
   return dir + (last == '/' || last == '\\' ? "" : "/") + entry;
 }
 
+// A file of the set in its folder: the folder's handle (opened once for the
+// whole write) and the file's name there. Every create, link, rename and
+// removal below is relative to that handle, so nothing planted or swapped in
+// on the folder's path meanwhile can redirect the set.
+struct Place {
+  const os::Folder* folder = nullptr;
+  std::string name;
+};
+
 // A temporary being written: its name and the open file that marks it live
 // until the commit is over.
 struct Temp {
-  std::string path;
+  std::string name;
   os::NewFile file;
 };
 
-void closeTemps(std::vector<Temp>* temps, bool remove) {
-  for (Temp& t : *temps) {
-    t.file.close();
-    if (remove) os::remove(t.path);
+void closeTemps(const std::vector<Place>& places, std::vector<Temp>* temps, bool remove) {
+  for (size_t i = 0; i < temps->size(); ++i) {
+    (*temps)[i].file.close();
+    if (remove) places[i].folder->remove((*temps)[i].name);
   }
 }
 
 // Creates a fresh temporary of `path` (never an existing name or link), under
 // the folder's shared lock.
-Status createTemp(const std::string& path, Temp* t) {
+Status createTemp(const std::string& path, const Place& at, Temp* t) {
   for (int attempt = 0; attempt < 64; ++attempt) {
-    t->path = tempPathFor(path);
-    os::FolderLocks shared({dirName(path)}, false);
-    const os::NewFile::Created c = t->file.create(t->path);
+    t->name = baseName(tempPathFor(at.name));
+    os::FolderLocks shared(std::vector<const os::Folder*>{at.folder}, false);
+    const os::NewFile::Created c = t->file.create(*at.folder, t->name);
     if (c == os::NewFile::Created::Exists) continue;  // taken (or planted): draw another name
     if (c == os::NewFile::Created::Failed)
       return ioError(path, "cannot create temporary file", os::errorText());
@@ -117,57 +126,82 @@ Status writeTemp(Temp* t, const FileContent& f) {
 
 // The old file kept while a set of files is replaced.
 struct Backup {
-  std::string path;      // empty: no backup
+  std::string name;      // empty: no backup
   bool existed = false;  // there was an old file (a regular file or a symbolic link)
 };
 
 // Only regular files and symbolic links are backed up (a link itself, never
 // its target): a directory in the way makes the rename fail, which leaves it
 // as it was.
-Backup keepBackup(const std::string& path, const std::string& backup) {
-  if (!os::isFileOrLink(path)) return Backup{};
-  if (os::hardLink(path, backup)) return Backup{backup, true};
-  if (os::rename(path, backup)) return Backup{backup, true};
+Backup keepBackup(const Place& at, const std::string& backup) {
+  if (!at.folder->isFileOrLink(at.name)) return Backup{};
+  if (at.folder->hardLink(at.name, backup)) return Backup{backup, true};
+  if (at.folder->rename(at.name, backup)) return Backup{backup, true};
   return Backup{"", true};
 }
 
-// Undoes a rename of a new file over `path`: the backup goes back in place,
-// or the new file is removed when there was no old one.
-void restore(const std::string& path, const Backup& b) {
-  if (!b.path.empty())
-    os::rename(b.path, path);
+// Undoes a rename of a new file over the place: the backup goes back, or
+// the new file is removed when there was no old one.
+void restore(const Place& at, const Backup& b) {
+  if (!b.name.empty())
+    at.folder->rename(b.name, at.name);
   else if (!b.existed)
-    os::remove(path);
+    at.folder->remove(at.name);
 }
 
-// After a failed rename of the temporary: the old file is still in `path`
+// After a failed rename of the temporary: the old file is still in place
 // (linked backup) or in the backup (renamed); put it back either way.
-void restoreBackup(const std::string& path, const Backup& b) {
-  if (b.path.empty()) return;
-  if (!os::exists(path) && os::exists(b.path))
-    os::rename(b.path, path);
+void restoreBackup(const Place& at, const Backup& b) {
+  if (b.name.empty()) return;
+  if (!at.folder->exists(at.name) && at.folder->exists(b.name))
+    at.folder->rename(b.name, at.name);
   else
-    os::remove(b.path);
+    at.folder->remove(b.name);
 }
 
 // Step 2 and 3 of the protocol, under the folders' exclusive lock.
-Status commit(const std::vector<FileContent>& files, const std::vector<Temp>& temps) {
+Status commit(const std::vector<FileContent>& files, const std::vector<Place>& places,
+              const std::vector<Temp>& temps) {
   std::vector<Backup> backups;
   for (size_t i = 0; i < files.size(); ++i) {
-    const Backup b = keepBackup(files[i].path, temps[i].path + kBackupSuffix);
-    if (!os::rename(temps[i].path, files[i].path)) {
+    const Place& at = places[i];
+    const Backup b = keepBackup(at, temps[i].name + kBackupSuffix);
+    if (!at.folder->rename(temps[i].name, at.name)) {
       Status st =
           ioError(files[i].path, "cannot rename temporary file into place", os::errorText());
-      restoreBackup(files[i].path, b);  // rename left the old file as it was
-      for (size_t j = i; j-- > 0;) restore(files[j].path, backups[j]);
-      for (size_t j = i; j < files.size(); ++j) os::remove(temps[j].path);
+      restoreBackup(at, b);  // rename left the old file as it was
+      for (size_t j = i; j-- > 0;) restore(places[j], backups[j]);
+      for (size_t j = i; j < files.size(); ++j) places[j].folder->remove(temps[j].name);
       return st;
     }
     backups.push_back(b);
     if (void (*hook)(size_t) = g_commit_hook.load()) hook(i);
   }
-  for (const Backup& b : backups)
-    if (!b.path.empty()) os::remove(b.path);
+  for (size_t i = 0; i < backups.size(); ++i)
+    if (!backups[i].name.empty()) places[i].folder->remove(backups[i].name);
+  return Status();
+}
+
+// Opens the folder of each file once (files in one folder share its handle).
+// Errors name the file: "<path>: cannot create temporary file: <reason>".
+Status openFolders(const std::vector<FileContent>& files, std::vector<os::Folder>* folders,
+                   std::vector<Place>* places) {
+  std::vector<std::string> dirs;
+  for (const FileContent& f : files) {
+    const std::string dir = dirName(f.path);
+    if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
+  }
+  folders->resize(dirs.size());  // never resized again: places point into it
+  for (size_t i = 0; i < dirs.size(); ++i) {
+    if ((*folders)[i].open(dirs[i])) continue;
+    for (const FileContent& f : files)
+      if (dirName(f.path) == dirs[i])
+        return ioError(f.path, "cannot create temporary file", os::errorText());
+  }
+  for (const FileContent& f : files) {
+    const size_t k = std::find(dirs.begin(), dirs.end(), dirName(f.path)) - dirs.begin();
+    places->push_back(Place{&(*folders)[k], baseName(f.path)});
+  }
   return Status();
 }
 
@@ -209,27 +243,30 @@ Status writeFilesTogether(const std::vector<FileContent>& files) {
   for (const FileContent& f : files)
     if (baseName(f.path).size() > kNameMax)
       return ioError(f.path, "cannot create", std::strerror(ENAMETOOLONG));
+  std::vector<os::Folder> folders;
+  std::vector<Place> places;
+  if (Status st = openFolders(files, &folders, &places); !st) return st;
   std::vector<Temp> temps;
   temps.reserve(files.size());
-  for (const FileContent& f : files) {
+  for (size_t i = 0; i < files.size(); ++i) {
     temps.emplace_back();
-    Status st = createTemp(f.path, &temps.back());
+    Status st = createTemp(files[i].path, places[i], &temps.back());
     if (!st) temps.pop_back();  // nothing created: its last name may be someone else's file
-    if (st) st = writeTemp(&temps.back(), f);
+    if (st) st = writeTemp(&temps.back(), files[i]);
     if (!st) {
-      closeTemps(&temps, true);
+      closeTemps(places, &temps, true);
       return st;
     }
   }
-  std::vector<std::string> dirs;
-  for (const FileContent& f : files) dirs.push_back(dirName(f.path));
+  std::vector<const os::Folder*> held;
+  for (const os::Folder& f : folders) held.push_back(&f);
   Status st;
   {
-    os::FolderLocks exclusive(dirs, true);
-    st = commit(files, temps);
+    os::FolderLocks exclusive(held, true);
+    st = commit(files, places, temps);
     if (st) exclusive.sync();
   }
-  closeTemps(&temps, false);  // renamed into place, or already removed by commit()
+  closeTemps(places, &temps, false);  // renamed into place, or already removed by commit()
   return st;
 }
 
@@ -237,10 +274,12 @@ int removeStaleTemps(const std::string& dir, const std::vector<std::string>& nam
   std::vector<std::string> prefixes;
   for (const std::string& n : std::set<std::string>(names.begin(), names.end()))
     prefixes.push_back(tempPrefix(n));
-  os::FolderLocks exclusive({dir}, true);  // no temporary is between creation and its mark
-  int removed = 0;
-  for (const std::string& entry : os::listFolder(dir))
-    if (isTempOf(entry, prefixes) && os::removeIfUnused(dir + "/" + entry)) ++removed;
+  os::Folder folder;
+  if (!folder.open(dir)) return 0;
+  os::FolderLocks exclusive(std::vector<const os::Folder*>{&folder}, true);  // no temporary is
+  int removed = 0;  // between its creation and its mark meanwhile
+  for (const std::string& entry : folder.list())
+    if (isTempOf(entry, prefixes) && folder.removeIfUnused(entry)) ++removed;
   return removed;
 }
 

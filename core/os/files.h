@@ -71,6 +71,8 @@ class FileMapping {
   size_t size_ = 0;
 };
 
+class Folder;
+
 // A new file created for writing, never an existing name (O_EXCL |
 // O_NOFOLLOW; CREATE_NEW), so a planted file or link at the name cannot
 // redirect it. While it is open, removeIfUnused() leaves it alone.
@@ -85,6 +87,8 @@ class NewFile {
   ~NewFile();
 
   Created create(const std::string& path);
+  // `name` (one component) in `dir`: openat(2) relative to the folder's handle.
+  Created create(const Folder& dir, const std::string& name);
   bool writeAll(const void* data, size_t size);  // false on failure
   bool sync();                                   // to stable storage
   void close();
@@ -92,6 +96,43 @@ class NewFile {
  private:
   static constexpr intptr_t kClosed = -1;
   intptr_t handle_ = kClosed;
+};
+
+// A folder opened once; every name below is one component in it, created,
+// linked, renamed and removed relative to that handle (openat, linkat,
+// renameat, unlinkat; never following a link at the name), so a folder or
+// link swapped in on the folder's path after it was opened cannot redirect
+// the files written there. The path itself is resolved once, as the user
+// gave it. On Windows the folder is held open without FILE_SHARE_DELETE, so
+// it cannot be renamed or replaced while held, and names are joined to its
+// path. Move-only; closed on destruction.
+class Folder {
+ public:
+  Folder() = default;
+  Folder(Folder&& other) noexcept;
+  Folder& operator=(Folder&& other) noexcept;
+  Folder(const Folder&) = delete;
+  Folder& operator=(const Folder&) = delete;
+  ~Folder();
+
+  bool open(const std::string& path);  // false on failure (errorText())
+  const std::string& path() const { return path_; }
+  // "path/name", for messages.
+  std::string join(const std::string& name) const;
+
+  bool isFileOrLink(const std::string& name) const;  // a link itself, not its target
+  bool exists(const std::string& name) const;
+  bool hardLink(const std::string& from, const std::string& to) const;  // a link itself
+  bool rename(const std::string& from, const std::string& to) const;    // replaces `to`
+  bool remove(const std::string& name) const;
+  bool removeIfUnused(const std::string& name) const;  // as os::removeIfUnused
+  std::vector<std::string> list() const;               // as os::listFolder
+  intptr_t handle() const { return handle_; }
+
+ private:
+  static constexpr intptr_t kClosed = -1;
+  intptr_t handle_ = kClosed;  // a directory descriptor or a HANDLE
+  std::string path_;
 };
 
 // Locks on folders that serialise writers of the same folders between
@@ -102,6 +143,8 @@ class NewFile {
 class FolderLocks {
  public:
   FolderLocks(const std::vector<std::string>& dirs, bool exclusive);
+  // The same for open folders (each locked through a handle of its own).
+  FolderLocks(const std::vector<const Folder*>& dirs, bool exclusive);
   ~FolderLocks();
   FolderLocks(const FolderLocks&) = delete;
   FolderLocks& operator=(const FolderLocks&) = delete;

@@ -206,12 +206,119 @@ void NewFile::close() {
   handle_ = kClosed;
 }
 
+NewFile::Created NewFile::create(const Folder& dir, const std::string& name) {
+  close();
+  const int fd = ::openat(static_cast<int>(dir.handle()), name.c_str(),
+                          O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    t_error = errno;
+    return errno == EEXIST ? Created::Exists : Created::Failed;
+  }
+  flockRetry(fd, LOCK_EX | LOCK_NB);  // a new inode: nobody else can hold it
+  handle_ = fd;
+  return Created::Yes;
+}
+
+// ---- Folder
+
+Folder::Folder(Folder&& other) noexcept
+    : handle_(std::exchange(other.handle_, kClosed)), path_(std::move(other.path_)) {}
+
+Folder& Folder::operator=(Folder&& other) noexcept {
+  if (this != &other) {
+    if (handle_ != kClosed) ::close(static_cast<int>(handle_));
+    handle_ = std::exchange(other.handle_, kClosed);
+    path_ = std::move(other.path_);
+  }
+  return *this;
+}
+
+Folder::~Folder() {
+  if (handle_ != kClosed) ::close(static_cast<int>(handle_));
+}
+
+bool Folder::open(const std::string& path) {
+  if (handle_ != kClosed) ::close(static_cast<int>(handle_));
+  handle_ = kClosed;
+  path_ = path;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return fail();
+  handle_ = fd;
+  return true;
+}
+
+std::string Folder::join(const std::string& name) const {
+  if (path_.empty() || path_ == ".") return name;
+  return path_ + (path_.back() == '/' ? "" : "/") + name;
+}
+
+bool Folder::isFileOrLink(const std::string& name) const {
+  struct stat st {};
+  return ::fstatat(static_cast<int>(handle_), name.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0 &&
+         (S_ISREG(st.st_mode) || S_ISLNK(st.st_mode));
+}
+
+bool Folder::exists(const std::string& name) const {
+  struct stat st {};
+  return ::fstatat(static_cast<int>(handle_), name.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0;
+}
+
+bool Folder::hardLink(const std::string& from, const std::string& to) const {
+  const int fd = static_cast<int>(handle_);
+  return ::linkat(fd, from.c_str(), fd, to.c_str(), 0) == 0 || fail();
+}
+
+bool Folder::rename(const std::string& from, const std::string& to) const {
+  const int fd = static_cast<int>(handle_);
+  return ::renameat(fd, from.c_str(), fd, to.c_str()) == 0 || fail();
+}
+
+bool Folder::remove(const std::string& name) const {
+  return ::unlinkat(static_cast<int>(handle_), name.c_str(), 0) == 0 || fail();
+}
+
+bool Folder::removeIfUnused(const std::string& name) const {
+  const int dir = static_cast<int>(handle_);
+  struct stat before {
+  }, now{};
+  if (::fstatat(dir, name.c_str(), &before, AT_SYMLINK_NOFOLLOW) != 0 || !S_ISREG(before.st_mode))
+    return false;
+  const int fd = ::openat(dir, name.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  bool removed = false;
+  if (::fstat(fd, &now) == 0 && now.st_dev == before.st_dev && now.st_ino == before.st_ino &&
+      flockRetry(fd, LOCK_EX | LOCK_NB) == 0)
+    removed = ::unlinkat(dir, name.c_str(), 0) == 0;
+  ::close(fd);
+  return removed;
+}
+
+std::vector<std::string> Folder::list() const {
+  std::vector<std::string> names;
+  const int fd = ::openat(static_cast<int>(handle_), ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return names;
+  DIR* d = ::fdopendir(fd);
+  if (!d) {
+    ::close(fd);
+    return names;
+  }
+  while (dirent* e = ::readdir(d)) {
+    const std::string entry = e->d_name;
+    if (entry != "." && entry != "..") names.push_back(entry);
+  }
+  ::closedir(d);  // closes fd
+  return names;
+}
+
 // ---- FolderLocks
 
-FolderLocks::FolderLocks(const std::vector<std::string>& dirs, bool exclusive) {
+namespace {
+
+// Locks the open folder descriptors `fds` (taken over), once per folder, in
+// (device, inode) order.
+std::vector<intptr_t> lockFolders(const std::vector<int>& fds, bool exclusive) {
   std::vector<std::pair<std::pair<dev_t, ino_t>, int>> open;
-  for (const std::string& dir : dirs) {
-    const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  for (const int fd : fds) {
     struct stat st {};
     if (fd < 0) continue;
     if (::fstat(fd, &st) != 0) {
@@ -220,15 +327,37 @@ FolderLocks::FolderLocks(const std::vector<std::string>& dirs, bool exclusive) {
     }
     open.push_back({{st.st_dev, st.st_ino}, fd});
   }
-  std::sort(open.begin(), open.end());  // (device, inode) order
+  std::sort(open.begin(), open.end());
+  std::vector<intptr_t> handles;
   for (size_t i = 0; i < open.size(); ++i) {
     if (i > 0 && open[i].first == open[i - 1].first) {
       ::close(open[i].second);  // the same folder by another path: one lock is enough
       continue;
     }
     flockRetry(open[i].second, exclusive ? LOCK_EX : LOCK_SH);
-    handles_.push_back(open[i].second);
+    handles.push_back(open[i].second);
   }
+  return handles;
+}
+
+}  // namespace
+
+FolderLocks::FolderLocks(const std::vector<std::string>& dirs, bool exclusive) {
+  std::vector<int> fds;
+  for (const std::string& dir : dirs)
+    fds.push_back(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  handles_ = lockFolders(fds, exclusive);
+}
+
+// A new open file description per folder ("." relative to its handle): an
+// flock belongs to the description, so the lock ends with this object, not
+// with the Folder.
+FolderLocks::FolderLocks(const std::vector<const Folder*>& dirs, bool exclusive) {
+  std::vector<int> fds;
+  for (const Folder* dir : dirs)
+    fds.push_back(
+        ::openat(static_cast<int>(dir->handle()), ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  handles_ = lockFolders(fds, exclusive);
 }
 
 FolderLocks::~FolderLocks() {

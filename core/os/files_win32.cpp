@@ -269,6 +269,61 @@ void NewFile::close() {
   handle_ = kClosed;
 }
 
+NewFile::Created NewFile::create(const Folder& dir, const std::string& name) {
+  return create(dir.join(name));
+}
+
+// ---- Folder: held open without FILE_SHARE_DELETE (nobody can rename or
+// remove it meanwhile); names joined to its path.
+
+Folder::Folder(Folder&& other) noexcept
+    : handle_(std::exchange(other.handle_, kClosed)), path_(std::move(other.path_)) {}
+
+Folder& Folder::operator=(Folder&& other) noexcept {
+  if (this != &other) {
+    if (handle_ != kClosed) CloseHandle(asHandle(handle_));
+    handle_ = std::exchange(other.handle_, kClosed);
+    path_ = std::move(other.path_);
+  }
+  return *this;
+}
+
+Folder::~Folder() {
+  if (handle_ != kClosed) CloseHandle(asHandle(handle_));
+}
+
+bool Folder::open(const std::string& path) {
+  if (handle_ != kClosed) CloseHandle(asHandle(handle_));
+  handle_ = kClosed;
+  path_ = path;
+  HANDLE h = CreateFileW(widen(path.empty() ? "." : path).c_str(), FILE_LIST_DIRECTORY,
+                         FILE_SHARE_READ | FILE_SHARE_WRITE, nullptr, OPEN_EXISTING,
+                         FILE_FLAG_BACKUP_SEMANTICS, nullptr);
+  if (h == INVALID_HANDLE_VALUE) return fail();
+  handle_ = reinterpret_cast<intptr_t>(h);
+  return true;
+}
+
+std::string Folder::join(const std::string& name) const {
+  if (path_.empty() || path_ == ".") return name;
+  const char last = path_.back();
+  return path_ + (last == '/' || last == '\\' ? "" : "\\") + name;
+}
+
+bool Folder::isFileOrLink(const std::string& name) const { return os::isFileOrLink(join(name)); }
+bool Folder::exists(const std::string& name) const { return os::exists(join(name)); }
+bool Folder::hardLink(const std::string& from, const std::string& to) const {
+  return os::hardLink(join(from), join(to));
+}
+bool Folder::rename(const std::string& from, const std::string& to) const {
+  return os::rename(join(from), join(to));
+}
+bool Folder::remove(const std::string& name) const { return os::remove(join(name)); }
+bool Folder::removeIfUnused(const std::string& name) const {
+  return os::removeIfUnused(join(name));
+}
+std::vector<std::string> Folder::list() const { return listFolder(path_); }
+
 // ---- FolderLocks
 
 namespace {
@@ -312,6 +367,19 @@ FolderLocks::FolderLocks(const std::vector<std::string>& dirs, bool) {
     handles_.push_back(reinterpret_cast<intptr_t>(m));
   }
 }
+
+namespace {
+
+std::vector<std::string> pathsOf(const std::vector<const Folder*>& dirs) {
+  std::vector<std::string> paths;
+  for (const Folder* dir : dirs) paths.push_back(dir->path());
+  return paths;
+}
+
+}  // namespace
+
+FolderLocks::FolderLocks(const std::vector<const Folder*>& dirs, bool exclusive)
+    : FolderLocks(pathsOf(dirs), exclusive) {}
 
 FolderLocks::~FolderLocks() {
   for (auto it = handles_.rbegin(); it != handles_.rend(); ++it) {

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <filesystem>
 
+#include "core/io/name_component.h"
 #include "core/load/motion_fit.h"
 #include "core/load/motion_sequence.h"
 #include "core/os/path.h"
@@ -53,7 +54,7 @@ std::string trackOutput(const std::string& out, const std::string& id) {
   const std::string name = os::utf8(os::fsPath(out).filename());
   const size_t dot = name.rfind('.');
   const size_t cut = out.size() - name.size() + (dot == std::string::npos ? name.size() : dot);
-  return out.substr(0, cut) + ".track" + id + out.substr(cut);
+  return out.substr(0, cut) + ".track" + safeNameComponent(id) + out.substr(cut);
 }
 
 uint64_t motionsDecoded() { return decoded.load(); }

@@ -33,7 +33,9 @@ Result<Motion> decodeMotion(const std::string& path, const ExportRequest& reques
 Status resolveMotionHands(const BodyModel& model, const ExportRequest& request,
                           const std::string& path, Motion* motion);
 
-// `out` for track `id` of --track all: DIR/walk.glb -> DIR/walk.track<id>.glb.
+// `out` for track `id` of --track all: DIR/walk.glb -> DIR/walk.track<id>.glb,
+// the id (which comes from the motion file) made one safe file-name component
+// by safeNameComponent() (core/io/name_component.h): "a/b" -> walk.tracka%2Fb.glb.
 std::string trackOutput(const std::string& out, const std::string& id);
 
 // How many times decodeMotionSet ran in this process (every thread): the test

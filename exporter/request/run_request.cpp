@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <unordered_map>
 
 #include "core/heap_trim.h"
 #include "core/io/file_io.h"
@@ -289,6 +290,29 @@ Result<ExportReport> runExportJob(const ExportRequest& r, const RunInputs& input
   return guarded<ExportReport>(&stage, [&] { return runJob(r, inputs, models, &stage); });
 }
 
+// What can be known before the first track is written: no two tracks share
+// an output (names from safeNameComponent are distinct, so only a hash
+// collision of two long ids could), and every file name of every track fits
+// NAME_MAX (a long --out stem), so a run never fails at track 5 after
+// committing tracks 1-4.
+Status checkTrackOutputs(const std::string& motion, const std::vector<Motion>& tracks,
+                         const std::vector<std::string>& outs, const RunPaths& paths) {
+  std::unordered_map<std::string, size_t> first;
+  for (size_t i = 0; i < outs.size(); ++i) {
+    const auto [at, fresh] = first.emplace(outs[i], i);
+    if (!fresh)
+      return fail(ErrorKind::Load, "loading", motion,
+                  "tracks '" + printable(tracks[at->second].track, 64) + "' and '" +
+                      printable(tracks[i].track, 64) + "' would both be written to " +
+                      printable(outs[i]));
+  }
+  constexpr size_t kNameMax = 255;  // NAME_MAX; the atomic writer refuses longer names too
+  for (const std::string& path : paths.outputs)
+    if (baseName(path).size() > kNameMax)
+      return fail(ErrorKind::Write, "saving", path, "cannot create: File name too long");
+  return Status();
+}
+
 Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelSource* models) {
   if (Status st = beginRun(r); !st) return st.error();
   Stage stage;
@@ -304,8 +328,11 @@ Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelS
   if (!tracks) return tracks.error();
   std::vector<std::string> outs;  // known now, guarded before anything is written
   for (const Motion& m : *tracks)
-    outs.push_back(m.track.empty() || tracks->size() == 1 ? r.out : trackOutput(r.out, m.track));
-  if (Status st = checkRunPaths(runPaths(r, outs, r.motions)); !st) return usage(st.message());
+    outs.push_back(tracks->size() == 1 ? r.out : trackOutput(r.out, m.track));
+  const RunPaths paths = runPaths(r, outs, r.motions);
+  if (Status st = checkTrackOutputs(r.motions.front(), *tracks, outs, paths); !st)
+    return st.error();
+  if (Status st = checkRunPaths(paths); !st) return usage(st.message());
   Result<RunInputs> inputs = loadRunInputs(r, models);
   if (!inputs) return inputs.error();
   std::vector<ExportReport> reports;

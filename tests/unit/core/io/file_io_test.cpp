@@ -385,6 +385,47 @@ TEST_F(FileIo, SecondWriterWaitsForACommitInProgress) {
   EXPECT_EQ(list().size(), 2u);
 }
 
+// The folder of a set is opened once and every file is created and renamed
+// relative to that handle: a folder moved away and replaced by a link to
+// another place between two renames (a planted link) cannot redirect the
+// rest of the set; both files end in the folder the write began in.
+std::string g_swap_from, g_swap_to, g_swap_link_target;
+
+void swapFolderForLink(size_t index) {
+  if (index != 0) return;
+  ASSERT_EQ(::rename(g_swap_from.c_str(), g_swap_to.c_str()), 0);
+  ASSERT_EQ(::symlink(g_swap_link_target.c_str(), g_swap_from.c_str()), 0);
+}
+
+TEST_F(FileIo, FolderSwappedForALinkMidCommitCannotRedirectTheSet) {
+  const std::string sub = dir_ + "/set", moved = dir_ + "/set-moved", elsewhere = dir_ + "/else";
+  ASSERT_EQ(::mkdir(sub.c_str(), 0755), 0);
+  ASSERT_EQ(::mkdir(elsewhere.c_str(), 0755), 0);
+  g_swap_from = sub, g_swap_to = moved, g_swap_link_target = elsewhere;
+  setCommitHookForTesting(swapFolderForLink);
+  const std::string out = "output", side = "sidecar";
+  const Status st = writeFilesTogether({{sub + "/a.glb", out.data(), out.size()},
+                                        {sub + "/a.glb.smpl.json", side.data(), side.size()}});
+  setCommitHookForTesting(nullptr);
+  EXPECT_TRUE(st.ok()) << st.message();
+  EXPECT_EQ(readText(moved + "/a.glb"), out);
+  EXPECT_EQ(readText(moved + "/a.glb.smpl.json"), side);
+  std::vector<std::string> redirected;
+  if (DIR* d = ::opendir(elsewhere.c_str())) {
+    while (dirent* e = ::readdir(d))
+      if (std::strcmp(e->d_name, ".") && std::strcmp(e->d_name, ".."))
+        redirected.push_back(e->d_name);
+    ::closedir(d);
+  }
+  EXPECT_TRUE(redirected.empty()) << redirected.front();
+  for (const std::string& f : {moved + "/a.glb", moved + "/a.glb.smpl.json"})
+    std::remove(f.c_str());
+  for (const std::string& f : redirected) std::remove((elsewhere + "/" + f).c_str());
+  ::unlink(sub.c_str());
+  ::rmdir(moved.c_str());
+  ::rmdir(elsewhere.c_str());
+}
+
 TEST(BaseName, LastPathComponent) {
   EXPECT_EQ(baseName("/data/models/SMPLX_NEUTRAL.npz"), "SMPLX_NEUTRAL.npz");
   EXPECT_EQ(baseName("model.npz"), "model.npz");

@@ -267,6 +267,10 @@ TEST_F(RunRequestTest, TrackAllWritesOneOutputPerPerson) {
   EXPECT_NE(sidecar.find(R"("first_frame":6)"), std::string::npos) << sidecar;
   EXPECT_EQ(trackOutput("a/b.c/walk.fbx", "12"), "a/b.c/walk.track12.fbx");
   EXPECT_EQ(trackOutput("walk", "3"), "walk.track3");
+  // An id from the file is one escaped component, never a path.
+  EXPECT_EQ(trackOutput("d/walk.glb", "X/../../v"), "d/walk.trackX%2F..%2F..%2Fv.glb");
+  EXPECT_EQ(trackOutput("d/walk.glb", ".."), "d/walk.track%2E%2E.glb");
+  EXPECT_EQ(trackOutput("d/walk.glb", "a\nb"), "d/walk.tracka%0Ab.glb");
 }
 
 TEST_F(RunRequestTest, TrackChoicesAndFoldersAreChecked) {
