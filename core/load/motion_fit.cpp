@@ -99,8 +99,17 @@ Status putHand(const DataNode& d, const std::string& path, const char* key, int 
 }
 
 // Rows of a (R,N) array: identical -> that row, else their mean (note).
+// Rows are compared as stored, not against their mean: the mean of 30 equal
+// float32 rows, summed in double, differs from them by rounding, and such a
+// file (MHR's SMPL-X converter repeats its betas per frame) has one row.
 std::vector<double> oneRow(const Array& a, const char* key, Motion* m) {
   const int64_t n = a.shape.empty() ? 1 : a.shape.back(), rows = n > 0 ? a.size() / n : 0;
+  bool identical = true;
+  for (int64_t r = 1; r < rows && identical; ++r)
+    identical = std::equal(a.data.begin() + r * n, a.data.begin() + (r + 1) * n, a.data.begin());
+  if (identical)
+    return rows > 0 ? std::vector<double>(a.data.begin(), a.data.begin() + n)
+                    : std::vector<double>(n, 0.0);
   std::vector<double> mean(n, 0.0);
   double deviation = 0.0;
   for (int64_t r = 0; r < rows; ++r)
@@ -108,7 +117,7 @@ std::vector<double> oneRow(const Array& a, const char* key, Motion* m) {
   for (int64_t r = 0; r < rows; ++r)
     for (int64_t i = 0; i < n; ++i)
       deviation = std::max(deviation, std::abs(a.data[r * n + i] - mean[i]));
-  if (deviation > 0) {
+  {
     char text[160];
     std::snprintf(text, sizeof text,
                   "'%s' has %lld different rows: their mean is used (largest deviation %.3g)", key,

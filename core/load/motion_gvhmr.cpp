@@ -46,6 +46,32 @@ Result<bool> readsWorld(const DataNode& root, const LayoutInput& in) {
   }
 }
 
+// Hands merged into a GVHMR params dict as Mano2Smpl-X (VincentHu19/Mano2Smpl-X
+// mano2smplx.py) writes them: `left_hand_pose` / `right_hand_pose`, 15 finger
+// joints in SMPL-X order as axis-angle, for an SMPL-X with flat_hand_mean=True
+// (its README), so the rotations are absolute: put as they are, no mean added.
+// (L,45) or (L,15,3); returns whether the side was there.
+Result<bool> putAbsoluteHand(const DataNode& params, const std::string& group, const char* key,
+                             int first, const std::string& path, Motion* m) {
+  const DataNode* node = params.get(key);
+  if (!node) return false;
+  const Array* a = params.leaf(key);
+  const int64_t frames = static_cast<int64_t>(m->frames.size());
+  const bool ok =
+      a &&
+      ((a->shape.size() == 2 && a->shape[0] == frames && a->shape[1] == 45) ||
+       (a->shape.size() == 3 && a->shape[0] == frames && a->shape[1] == 15 && a->shape[2] == 3));
+  if (!ok)
+    return makeError(path + ": '" + group + "/" + key + "' is " +
+                     (a ? "of shape " + shapeString(a->shape) : describeNode(*node)) +
+                     "; expected (" + std::to_string(frames) + ",45) axis-angle finger poses");
+  if (Status s = motion_detail::checkNumbers(*a, path, (group + "/" + key).c_str()); !s)
+    return s.error();
+  for (int64_t f = 0; f < frames; ++f)
+    motion_detail::putAxisAngle(a->data.data() + 45 * f, 15, first, &m->frames[f]);
+  return true;
+}
+
 Status decodePoses(const DataNode& params, const std::string& group, const std::string& path,
                    Motion* m) {
   const Array* body = params.leaf("body_pose");
@@ -64,14 +90,28 @@ Status decodePoses(const DataNode& params, const std::string& group, const std::
   m->layout = ModelKind::SmplX;
   if (Status s = motion_detail::allocateFrames(frames, 55, path, m); !s) return s;
   m->translation.resize(frames);
-  const Eigen::VectorXd zeros = Eigen::VectorXd::Zero(45);  // hands at hands_mean
   for (int64_t f = 0; f < frames; ++f) {
     motion_detail::putAxisAngle((*root)->data.data() + 3 * f, 1, 0, &m->frames[f]);
     motion_detail::putAxisAngle((*pose)->data.data() + 63 * f, 21, 1, &m->frames[f]);
     m->translation[f] = Eigen::Map<const Eigen::Vector3d>((*transl)->data.data() + 3 * f);
-    m->hands.left.push_back(zeros);
-    m->hands.right.push_back(zeros);
   }
+  Result<bool> left = putAbsoluteHand(params, group, "left_hand_pose", 25, path, m);
+  if (!left) return left.error();
+  Result<bool> right = putAbsoluteHand(params, group, "right_hand_pose", 40, path, m);
+  if (!right) return right.error();
+  const Eigen::VectorXd zeros = Eigen::VectorXd::Zero(45);  // a side without poses: hands_mean
+  if (!*left) m->hands.left.assign(frames, zeros);
+  if (!*right) m->hands.right.assign(frames, zeros);
+  if (*left || *right)
+    m->notes.push_back(std::string("hands from ") +
+                       (*left && *right ? "'left_hand_pose' and 'right_hand_pose'"
+                        : *left         ? "'left_hand_pose' (the right hand at hands_mean)"
+                                        : "'right_hand_pose' (the left hand at hands_mean)") +
+                       ": absolute finger rotations (flat_hand_mean=True, as Mano2Smpl-X merges "
+                       "them)");
+  else
+    m->notes.push_back(
+        "hands at the model's hands_mean (GVHMR's SMPL-X: no hand pose, flat_hand_mean=False)");
   m->hands.rest_without_mean =
       "the model has no hands_mean: GVHMR's hands (its SMPL-X's mean hand) stay at rest";
   return Status();
@@ -91,9 +131,7 @@ Status decodeGvhmr(const DataNode& root, const LayoutInput& in, MotionSet* out) 
     if (!betas) return betas.error();
     if (Status s = video_rows::putBetas(**betas, in.path, "betas", "", &m); !s) return s;
   }
-  m.notes.push_back("read as GVHMR output (SMPL-X; one person)");
-  m.notes.push_back(
-      "hands at the model's hands_mean (GVHMR's SMPL-X: no hand pose, flat_hand_mean=False)");
+  m.notes.insert(m.notes.begin(), "read as GVHMR output (SMPL-X; one person)");
   if (*world) {
     m.world = MotionWorld::Y;
     m.notes.push_back("world frame ('smpl_params_global'; Y up)");

@@ -98,6 +98,12 @@ CASES = [
          args=["--source-params", "incam"]),
     case("gvhmr_pkl", V + "gvhmr/hmr4d_results.pkl", "smplx_small", [0, 11, 23],
          ["read as GVHMR output", "world frame"]),
+    # GVHMR with fingers merged in as Mano2Smpl-X does: absolute finger rotations, not hands_mean.
+    case("gvhmr_hands", V + "gvhmr_hands/hmr4d_results.pt", "smplx_small", [0, 11, 23],
+         ["read as GVHMR output", "hands from 'left_hand_pose' and 'right_hand_pose'", "flat_hand_mean=True"],
+         absent=["hands at the model's hands_mean"]),
+    case("gvhmr_hands_incam", V + "gvhmr_hands/hmr4d_results.pt", "smplx_small", [0, 11, 23],
+         ["camera frame", "hands from 'left_hand_pose'"], args=["--source-params", "incam"]),
     # Today's reading of GVHMR's global parameters flattened into an npz (an SMPL-X fit: hands at rest).
     case("gvhmr_flat_today", V + "gvhmr/gvhmr_flat.npz", "smplx_small", [0, 11, 23],
          ["assumed 30 fps", "their mean"]),
@@ -146,6 +152,8 @@ CASES = [
     refused("phalp_no_track", V + "phalp_empty/demo_video.pkl", "smpl_small", "no tracked person"),
     refused("gvhmr_bad_shape", V + "gvhmr_bad/hmr4d_results.pt", "smplx_small",
             "'smpl_params_global/body_pose' has shape (24,60)"),
+    refused("gvhmr_hands_bad_shape", V + "gvhmr_hands_bad/hmr4d_results.pt", "smplx_small",
+            "'smpl_params_global/left_hand_pose' is of shape (24,44)"),
     refused("vibe_no_world", V + "vibe/vibe_output.pkl", "smpl_small", "no world-frame parameters",
             args=["--source-params", "global"]),
 ]
@@ -338,8 +346,13 @@ def gvhmr_clips(case, path, m):
     incam = arg(case, "--source-params", "global") == "incam"
     p = {k: f64(v) for k, v in pred["smpl_params_incam" if incam else "smpl_params_global"].items()}
     z = np.zeros(3)
-    poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], z, z, z, m["hands_meanl"], m["hands_meanr"])
-             for i in range(len(p["body_pose"]))]
+    # Hands merged by Mano2Smpl-X (VincentHu19/Mano2Smpl-X mano2smplx.py; README: "set flat_hand_mean=True
+    # in SMPLX"): left_hand_pose / right_hand_pose are the finger rotations themselves, no mean added.
+    n = len(p["body_pose"])
+    left = p["left_hand_pose"] if "left_hand_pose" in p else np.tile(m["hands_meanl"], (n, 1))
+    right = p["right_hand_pose"] if "right_hand_pose" in p else np.tile(m["hands_meanr"], (n, 1))
+    poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], z, z, z, left[i], right[i])
+             for i in range(n)]
     return [(None, clip_dict("smplx", poses, p["transl"], p["betas"], fps_of(case, 30), frame_change(case, incam)))]
 
 
