@@ -13,6 +13,7 @@
 #include "core/load/motion_hamer.h"
 #include "core/load/motion_layout.h"
 #include "core/load/motion_mdm.h"
+#include "core/load/motion_mhr.h"
 #include "core/load/motion_motionx.h"
 #include "core/load/motion_phalp.h"
 #include "core/load/motion_positions.h"
@@ -29,6 +30,7 @@ namespace smpl {
 const std::vector<MotionLayout>& motionLayouts() {
   // Order: a layout whose keys another layout's files may also carry comes after it.
   static const std::vector<MotionLayout> table = {
+      mhrLayout(),        // SAM 3D Body / MHR (refused), first: its dicts may carry any key
       smplCodecLayout(),  // bodyPose (.smpl)
       motionxLayout(),    // a (T,322) / (T,172) array (.npy)
       positionsLayout(),  // joint positions (refused): (T,22,3) arrays, MDM results.npy

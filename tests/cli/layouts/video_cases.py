@@ -154,6 +154,8 @@ CASES = [
             "'smpl_params_global/body_pose' has shape (24,60)"),
     refused("gvhmr_hands_bad_shape", V + "gvhmr_hands_bad/hmr4d_results.pt", "smplx_small",
             "'smpl_params_global/left_hand_pose' is of shape (24,44)"),
+    refused("sam3d_npz", V + "sam3d/person0.npz", "smplx_small", "MHR parameters (SAM 3D Body), not SMPL"),
+    refused("sam3d_list_pkl", V + "sam3d/outputs.pkl", "smplx_small", "tools/mhr_smpl_conversion"),
     refused("vibe_no_world", V + "vibe/vibe_output.pkl", "smpl_small", "no world-frame parameters",
             args=["--source-params", "global"]),
 ]
