@@ -18,7 +18,7 @@
 #include "core/os/path.h"
 #include "core/os/system.h"
 #include "core/parallel.h"
-#include "exporter/request/error_line.h"
+#include "request/error_line.h"
 
 namespace smpl {
 namespace fs = std::filesystem;

@@ -14,9 +14,9 @@
 #include "core/load/motion_layout.h"
 #include "core/os/path.h"
 #include "exporter/metadata_json.h"
-#include "exporter/request/error_line.h"
-#include "exporter/request/producer.h"
-#include "exporter/request/run_paths.h"
+#include "request/error_line.h"
+#include "request/producer.h"
+#include "request/run_paths.h"
 
 namespace smpl {
 namespace fs = std::filesystem;

@@ -25,7 +25,7 @@ enum class Applies {
            // morph targets, UVs and mesh name options, refused for a skeleton-only .bvh
 };
 
-// How an option enters the producer hash (exporter/request/producer.h), which decides
+// How an option enters the producer hash (request/producer.h), which decides
 // whether an existing output is up to date.
 enum class Hashed {
   Value,    // as given: it changes the bytes written

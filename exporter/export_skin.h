@@ -14,7 +14,7 @@ namespace smpl {
 
 // M for `options` on `model`: --max-influences N clamped to the K joints,
 // kAllInfluences -> K. The clamp is a precondition: the request refuses N
-// outside 1..K first (exporter/request/check_request.h, the one check).
+// outside 1..K first (request/check_request.h, the one check).
 int influencesFor(const BodyModel& model, const ExportOptions& options);
 
 // N x M skin of the subject `body` (shapeBody of the export's betas). With

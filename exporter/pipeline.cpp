@@ -174,7 +174,7 @@ Status addMorphTargets(const BodyModel& model, const ExportOptions& o, const Cor
     addCorrectives(model, o, refit, asset);
   }
   // Counts beyond the model's directions are clamped (a precondition: the
-  // request refuses them first, exporter/request/check_request.h).
+  // request refuses them first, request/check_request.h).
   for (int i = 0; i < std::min(o.shape_keys, model.numBetas()); ++i)
     targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
   for (int i = 0; i < std::min(o.expression_keys, model.numExpressions()); ++i)

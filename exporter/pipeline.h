@@ -93,7 +93,7 @@ inline bool refitsCorrectives(const ExportOptions& o) {
 
 // The rest asset: skeleton, mesh, skin (exportSkin), morph targets. The
 // options' ranges are checked before, once, by the request
-// (exporter/request/check_request.h checkRequestForModel); here they are
+// (request/check_request.h checkRequestForModel); here they are
 // preconditions: counts beyond the model are clamped (max_influences by
 // influencesFor, shape/expression keys to B/E), a corrective basis without
 // correctives is not built, and a basis with Split weights is signed. Errors:

@@ -91,7 +91,7 @@ struct WriterFormat {
   bool external_buffer = false;  // writes <stem>.bin beside the output unless --gltf-embed
   const Writer* writer = nullptr;
   // true: the file holds one animation (BVH); the request refuses a second
-  // --motion (exporter/request/check_request.cpp). Last: initialisers stay valid.
+  // --motion (request/check_request.cpp). Last: initialisers stay valid.
   bool single_clip = false;
 };
 

@@ -25,17 +25,18 @@ ALLOWED = {
     "plugins/gltf": ["core", "core/math", "exporter", "plugins"],
     "plugins/fbx": ["core", "core/math", "exporter", "plugins"],
     "plugins/bvh": ["core", "core/math", "exporter", "plugins"],
-    # The export request: above the writers (it picks one), below cli/ and tools/.
-    "exporter/request": ["core", "core/math", "core/io", "core/io/pickle", "core/load",
-                         "core/demo", "exporter", "plugins"],
+    # The export request, a top-level layer: above exporter/ and the writers (it
+    # picks one), below the front ends (cli/, tools/) that fill it.
+    "request": ["core", "core/math", "core/io", "core/io/pickle", "core/load", "core/demo",
+                "exporter", "plugins"],
     "cli": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter", "plugins",
-            "exporter/request"],
+            "request"],
     "tools": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter",
-              "plugins", "plugins/gltf", "plugins/fbx", "exporter/request", "tools/bench"],
+              "plugins", "plugins/gltf", "plugins/fbx", "request", "tools/bench"],
     "tools/bench": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter",
-                    "plugins", "exporter/request", "tools"],
+                    "plugins", "request", "tools"],
     "tools/reference": ["core", "core/math", "core/io", "core/load", "core/demo", "exporter",
-                        "exporter/request", "cli"],
+                        "request", "cli"],
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 

@@ -22,7 +22,7 @@
 // 2k + (1 if right else 0): HaMeR does not track hands.
 // A left hand's rotations are given as the left hand's own pose, S R S for
 // every joint (MANO_LEFT(S R S) = S MANO_RIGHT(R)), with Motion::hand = "left";
-// the export mirrors the model when its side differs (exporter/request,
+// the export mirrors the model when its side differs (request/,
 // core/math/mirror_model.h), so a left hand on MANO_RIGHT is HaMeR's mirrored mesh.
 // Detection: hand_pose and global_orient (any of the three places), or an
 // undecoded `pred_mano_params` member, and no body_pose.

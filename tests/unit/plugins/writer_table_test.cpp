@@ -16,9 +16,9 @@
 #include "cli/options.h"
 #include "cli/settings.h"
 #include "core/io/file_io.h"
-#include "exporter/request/check_request.h"
-#include "exporter/request/run_request.h"
 #include "plugins/writer.h"
+#include "request/check_request.h"
+#include "request/run_request.h"
 
 namespace smpl {
 namespace {

@@ -22,7 +22,7 @@ TEST(Motion, AmassSmplh) {
   EXPECT_NEAR(m->translation[100].x(), 0.2, 1e-12);
 }
 
-// After the bake (exporter/request/run_request.cpp) the per-frame arrays
+// After the bake (request/run_request.cpp) the per-frame arrays
 // and their charge go; what names and describes the motion stays.
 TEST(Motion, ReleaseFramesFreesTheFramesAndTheirCharge) {
   const uint64_t before = memoryCharged();

@@ -1,4 +1,4 @@
-#include "exporter/request/request_motions.h"
+#include "request/request_motions.h"
 
 #include <atomic>
 #include <filesystem>

@@ -22,8 +22,8 @@
 
 #include "core/body_model.h"
 #include "core/result.h"
-#include "exporter/request/export_request.h"
 #include "plugins/writer.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

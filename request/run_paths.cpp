@@ -1,7 +1,7 @@
 // runPaths / checkRunPaths: stat every input once (dev, inode, real path),
 // then look every output up. Uses the error_code overloads of
 // std::filesystem: an input that cannot be resolved is left to its loader.
-#include "exporter/request/run_paths.h"
+#include "request/run_paths.h"
 
 #include <filesystem>
 #include <map>

@@ -1,5 +1,5 @@
 // producerBase/producerHash: see producer.h for what enters the hash.
-#include "exporter/request/producer.h"
+#include "request/producer.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,8 +1,8 @@
-// A hand motion's side against the MANO model's (exporter/request/hand_side.h):
+// A hand motion's side against the MANO model's (request/hand_side.h):
 // a left hand on MANO_RIGHT (and a right hand on MANO_LEFT) poses the model
 // mirrored by S = diag(-1,1,1), owned by the export; the same side, a body
 // model or a motion without a side use the model as it is.
-#include "exporter/request/hand_side.h"
+#include "request/hand_side.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // checkRequest / checkRequestForModel / checkDmplCount: see check_request.h.
-#include "exporter/request/check_request.h"
+#include "request/check_request.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "exporter/request/motion_notes.h"
+#include "request/motion_notes.h"
 
 namespace smpl {
 

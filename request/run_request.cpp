@@ -1,5 +1,5 @@
 // beginRun / loadRunInputs / runExportJob / runExportRequest: see run_request.h.
-#include "exporter/request/run_request.h"
+#include "request/run_request.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,16 +15,16 @@
 #include "core/memory_budget.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
-#include "exporter/request/check_request.h"
-#include "exporter/request/dmpl_job.h"
-#include "exporter/request/error_line.h"
-#include "exporter/request/hand_side.h"
-#include "exporter/request/motion_notes.h"
-#include "exporter/request/producer.h"
-#include "exporter/request/request_motions.h"
-#include "exporter/request/request_options.h"
-#include "exporter/request/run_paths.h"
 #include "plugins/writer.h"
+#include "request/check_request.h"
+#include "request/dmpl_job.h"
+#include "request/error_line.h"
+#include "request/hand_side.h"
+#include "request/motion_notes.h"
+#include "request/producer.h"
+#include "request/request_motions.h"
+#include "request/request_options.h"
+#include "request/run_paths.h"
 
 namespace smpl {
 namespace {

@@ -1,8 +1,8 @@
-// The request's checks (exporter/request/check_request.h): every range and
+// The request's checks (request/check_request.h): every range and
 // every conflict refused with its message, naming the option as the user
 // types it, of kind Usage; the model-dependent counts against the model; a
 // request built in code (no command line) goes through the same checks.
-#include "exporter/request/check_request.h"
+#include "request/check_request.h"
 
 #include <gtest/gtest.h>
 

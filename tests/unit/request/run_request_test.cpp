@@ -1,10 +1,10 @@
-// runExportRequest / runExportJob (exporter/request/run_request.h): the final
+// runExportRequest / runExportJob (request/run_request.h): the final
 // finite check stops a NaN before any writer (exit 3, nothing written); the
 // sidecar records a producer hash that depends on the options that change
 // the output and not on those that do not; each motion is decoded once, and
 // a model folder picks from the decoded motion (never reading it again); the
 // model's checks run once the model is known; the path guard runs first.
-#include "exporter/request/run_request.h"
+#include "request/run_request.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -22,7 +22,7 @@
 #include "core/io/file_io.h"
 #include "core/load/model_loader.h"
 #include "exporter/metadata_json.h"
-#include "exporter/request/request_motions.h"
+#include "request/request_motions.h"
 
 namespace smpl {
 namespace {

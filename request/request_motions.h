@@ -13,7 +13,7 @@
 #include "core/load/motion.h"
 #include "core/load/motion_tracks.h"
 #include "core/result.h"
-#include "exporter/request/export_request.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

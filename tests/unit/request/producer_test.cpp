@@ -1,7 +1,7 @@
 // producerBase: which options and which input files change the producer hash
-// (exporter/request/producer.h); the command line fills the hashed options
+// (request/producer.h); the command line fills the hashed options
 // from its option table's Hashed column.
-#include "exporter/request/producer.h"
+#include "request/producer.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

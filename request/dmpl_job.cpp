@@ -1,4 +1,4 @@
-#include "exporter/request/dmpl_job.h"
+#include "request/dmpl_job.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -6,8 +6,8 @@
 #include "core/load/dmpl.h"
 #include "core/os/path.h"
 #include "exporter/dmpl_targets.h"
-#include "exporter/request/check_request.h"
-#include "exporter/request/error_line.h"
+#include "request/check_request.h"
+#include "request/error_line.h"
 
 namespace smpl {
 namespace {

@@ -1,4 +1,4 @@
-#include "exporter/request/model_source.h"
+#include "request/model_source.h"
 
 #include <filesystem>
 

@@ -14,7 +14,7 @@
 #include "core/load/motion.h"
 #include "exporter/asset.h"
 #include "exporter/dmpl_targets.h"
-#include "exporter/request/export_request.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/result.h"
-#include "exporter/request/export_request.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

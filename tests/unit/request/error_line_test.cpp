@@ -1,6 +1,6 @@
-// errorLine (exporter/request/error_line.h): one printable line of at most
+// errorLine (request/error_line.h): one printable line of at most
 // 4 KiB that always keeps its reason.
-#include "exporter/request/error_line.h"
+#include "request/error_line.h"
 
 #include <gtest/gtest.h>
 

@@ -28,9 +28,9 @@
 #include <vector>
 
 #include "core/result.h"
-#include "exporter/request/export_request.h"
-#include "exporter/request/model_source.h"
 #include "exporter/skin_cache.h"
+#include "request/export_request.h"
+#include "request/model_source.h"
 
 namespace smpl {
 

@@ -1,8 +1,8 @@
-#include "exporter/request/hand_side.h"
+#include "request/hand_side.h"
 
 #include "core/io/printable.h"
 #include "core/math/mirror_model.h"
-#include "exporter/request/model_source.h"
+#include "request/model_source.h"
 
 namespace smpl {
 

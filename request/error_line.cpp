@@ -1,4 +1,4 @@
-#include "exporter/request/error_line.h"
+#include "request/error_line.h"
 
 #include "core/io/printable.h"
 

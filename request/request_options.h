@@ -9,8 +9,8 @@
 
 #include "exporter/animation.h"
 #include "exporter/pipeline.h"
-#include "exporter/request/export_request.h"
 #include "plugins/writer.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

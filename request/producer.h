@@ -22,7 +22,7 @@
 
 #include "core/io/content_hash.h"
 #include "core/result.h"
-#include "exporter/request/export_request.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

@@ -1,4 +1,4 @@
-#include "exporter/request/request_options.h"
+#include "request/request_options.h"
 
 #include "core/io/file_io.h"
 

@@ -10,7 +10,7 @@
 #include "core/load/motion.h"
 #include "exporter/animation.h"
 #include "exporter/asset.h"
-#include "exporter/request/export_request.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

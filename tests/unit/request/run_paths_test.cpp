@@ -1,10 +1,10 @@
-// The path guard (exporter/request/run_paths.h): same path, symbolic links
+// The path guard (request/run_paths.h): same path, symbolic links
 // either way, hard links and the sidecar are caught; distinct and
 // not-yet-existing outputs pass; directories and devices are refused as
 // outputs; the manifest may not be an output or sit in the motion folder;
 // the input list covers a model folder's subfolders, the UV partner and the
 // DMPL basis.
-#include "exporter/request/run_paths.h"
+#include "request/run_paths.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
