@@ -19,7 +19,7 @@ enum class Applies {
   Single,  // one export (--out), not batch mode
   Motion,  // needs --motion or --motion-dir
   Batch,   // only batch mode (--motion-dir)
-  Format,  // only the output formats whose writer row lists it (plugins/writer.h
+  Format,  // only the output formats whose writer row lists it (writers/writer.h
            // WriterFormat::options: --draco for .glb/.gltf, --fbx-units for .fbx, ...)
   Mesh,    // only the output formats with a mesh (WriterFormat::needs_mesh): the skin,
            // morph targets, UVs and mesh name options, refused for a skeleton-only .bvh

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/result.h"
-#include "plugins/writer.h"
 #include "request/export_request.h"
+#include "writers/writer.h"
 
 namespace smpl {
 
@@ -33,7 +33,7 @@ struct Settings {
 // Batch mode: --motion-dir or --out-dir given.
 bool isBatch(const Settings& settings);
 
-// The writer row (plugins/writer.h) of the run's outputs: batch mode's
+// The writer row (writers/writer.h) of the run's outputs: batch mode's
 // --format (default the table's first row), else --out's extension; null when
 // --out has none the table knows (the request reports it).
 const WriterFormat* outputFormat(const Settings& settings);

@@ -3,7 +3,7 @@
 // files of one export carry the same content.
 //
 //   Result<Asset> asset = buildAsset(model, options);
-//   const Writer* w = writerForPath("body.glb");  // plugins/writer.h
+//   const Writer* w = writerForPath("body.glb");  // writers/writer.h
 #pragma once
 
 #include <string>
@@ -76,7 +76,7 @@ struct ExportOptions {
   std::string name = "body";
   bool quantize_morphs = false;  // --quantize-morphs: exportAsset folds each corrective's peak
                                  // into its weights and marks it quantized (morph_scales.h)
-  // false: a skeleton-only asset (the writer has no mesh, plugins/writer.h):
+  // false: a skeleton-only asset (the writer has no mesh, writers/writer.h):
   // no UVs, no skin (nothing fitted), no morph targets.
   bool mesh = true;
   Origin origin = Origin::Model;  // --origin (exportAsset applies it after baking)

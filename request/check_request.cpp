@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "core/load/validate_inputs.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

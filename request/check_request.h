@@ -22,8 +22,8 @@
 
 #include "core/body_model.h"
 #include "core/result.h"
-#include "plugins/writer.h"
 #include "request/export_request.h"
+#include "writers/writer.h"
 
 namespace smpl {
 
@@ -41,7 +41,7 @@ Status checkRequestOptions(const ExportRequest& request);
 
 // checkRequestOptions, then the output: --out given unless batch
 // (motion_dir), its format (batch: --format) has a row in the writer table
-// (plugins/writer.h),
+// (writers/writer.h),
 // and a format without a mesh gets no mesh options (--dmpl, --shape-keys,
 // --expression-keys, --uv, --corrective-basis, --quantize-morphs).
 Status checkRequest(const ExportRequest& request);

@@ -105,7 +105,7 @@ struct ExportReport {
   std::string model_note;          // why a folder's pick is not the wanted gender, or ""
   ExportOptions options;           // as used (betas may come from the motion or the file)
   bool skin_fitted = false;        // a skin was built (fitted or truncated); not for a writer
-                                   // without a mesh (plugins/writer.h needs_mesh)
+                                   // without a mesh (writers/writer.h needs_mesh)
   SparseSkin skin;  // the skin written, per model vertex (exporter/pruning_error.h skinOfAsset)
   bool skin_error_measured = false;  // request.skin_error_poses > 0 and skin_fitted
   PruningError skin_error;

@@ -12,7 +12,7 @@
 #include "core/load/uv_npy.h"
 #include "core/os/files.h"
 #include "core/os/path.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace fs = std::filesystem;

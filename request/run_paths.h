@@ -34,7 +34,7 @@ RunPaths runPaths(const ExportRequest& request, const std::vector<std::string>& 
                   const std::vector<std::string>& motions);
 
 // The external buffer file written beside an output whose writer row has
-// one (plugins/writer.h external_buffer: DIR/body.gltf -> DIR/body.bin), or ""
+// one (writers/writer.h external_buffer: DIR/body.gltf -> DIR/body.bin), or ""
 // (GLB, FBX, or --gltf-embed).
 std::string gltfBufferPath(const ExportRequest& request, const std::string& out);
 

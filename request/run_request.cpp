@@ -15,7 +15,6 @@
 #include "core/memory_budget.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
-#include "plugins/writer.h"
 #include "request/check_request.h"
 #include "request/dmpl_job.h"
 #include "request/error_line.h"
@@ -25,6 +24,7 @@
 #include "request/request_motions.h"
 #include "request/request_options.h"
 #include "request/run_paths.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

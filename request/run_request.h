@@ -4,7 +4,7 @@
 // model through the ModelSource, each motion decoded once and reused for the
 // model-folder pick, the fit hands, the betas and DMPL), check what depends on
 // the model, build the finished asset (exportAsset: bake, fold, validate),
-// serialise it with the output's writer (plugins/writer.h) and commit the
+// serialise it with the output's writer (writers/writer.h) and commit the
 // output, its buffer and its sidecar together (writeFilesTogether).
 //
 //   ModelSource models(request.model);

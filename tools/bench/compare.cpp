@@ -42,7 +42,7 @@
 #include "core/math/forward_batch.h"
 #include "core/math/pose_sampler.h"
 #include "exporter/pipeline.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

@@ -13,7 +13,7 @@
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/validate_asset.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

@@ -10,8 +10,8 @@
 #include "core/load/model_loader.h"
 #include "exporter/metadata_json.h"
 #include "exporter/morph_scales.h"
-#include "plugins/gltf/gltf_writer.h"
 #include "tools/morph_error.h"
+#include "writers/gltf/gltf_writer.h"
 
 namespace smpl {
 namespace {

@@ -17,8 +17,8 @@
 #include "exporter/animation.h"
 #include "exporter/dmpl_targets.h"
 #include "exporter/pipeline.h"
-#include "plugins/writer.h"
 #include "tests/unit/test_asset.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {
