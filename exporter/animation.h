@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "core/result.h"
 #include "exporter/asset.h"
 

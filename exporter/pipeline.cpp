@@ -6,10 +6,10 @@
 #include <optional>
 
 #include "core/heap_trim.h"
-#include "core/load/uv_source.h"
 #include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
+#include "core/models/uv_source.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/export_skin.h"
 #include "exporter/skin_cache.h"

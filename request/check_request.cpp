@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "core/load/validate_inputs.h"
+#include "core/models/validate_inputs.h"
 #include "writers/writer.h"
 
 namespace smpl {

@@ -28,7 +28,7 @@
 namespace smpl {
 
 // Ranges and conflicts that need no file, first failure wins: the ranges
-//   --betas / --expression values |v| <= 1000 (core/load/validate_inputs.h),
+//   --betas / --expression values |v| <= 1000 (core/models/validate_inputs.h),
 //   --source-fps [1, 1000], --fps (0, 1000], --frames A >= 0 and B > A,
 //   --corrective-epsilon [0, 0.01] m, --fbx-compress-level 0..12, --threads
 //   1..1024, --dmpl-count >= 1; then --model given; the --betas /

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/load/dmpl.h"
+#include "core/models/dmpl.h"
 #include "core/os/path.h"
 #include "exporter/dmpl_targets.h"
 #include "request/check_request.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "exporter/asset.h"
 #include "exporter/dmpl_targets.h"
 #include "request/export_request.h"

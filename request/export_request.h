@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/load/motion.h"
-#include "core/load/motion_tracks.h"
 #include "core/math/skin_weights.h"
+#include "core/motions/motion.h"
+#include "core/motions/motion_tracks.h"
 #include "exporter/animation.h"
 #include "exporter/pipeline.h"
 #include "exporter/pruning_error.h"
@@ -29,7 +29,7 @@ struct ExportRequest {
   std::vector<std::string> motions;  // --motion FILE, one animation each (batch: the job's motion);
                                      // --motion-sequence DIR is one of them too
   std::string motion_sequence;  // --motion-sequence DIR: per-frame files joined (motion_sequence.h)
-  TrackChoice track;            // --track ID|longest|all (core/load/motion_tracks.h)
+  TrackChoice track;            // --track ID|longest|all (core/motions/motion_tracks.h)
   SourceParams source_params = SourceParams::Default;  // --source-params global|incam
   std::optional<double> source_fps;    // --source-fps R, fps in [1, 1000]; none: the stored rate
   bool flat_hand_mean = false;         // --flat-hand-mean: fit hands are flat-hand relative

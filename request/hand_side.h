@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
 #include "core/memory_budget.h"
+#include "core/motions/motion.h"
 #include "core/result.h"
 
 namespace smpl {

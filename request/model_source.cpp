@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "core/demo/demo_body.h"
-#include "core/load/model_folder.h"
-#include "core/load/model_loader.h"
+#include "core/models/model_folder.h"
+#include "core/models/model_loader.h"
 #include "core/os/path.h"
 
 namespace smpl {

@@ -1,5 +1,5 @@
 // Where each export's body model comes from: `--model FILE`, `--model builtin`
-// or `--model DIR` (core/load/model_folder.h picks the file per motion from
+// or `--model DIR` (core/models/model_folder.h picks the file per motion from
 // the motion as the export decoded it: its model kind from its joint layout,
 // its gender from `gender`; the motion file is not read again). Loaded models
 // are cached by path and shared by the batch workers (thread-safe), so a
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
 #include "core/memory_budget.h"
+#include "core/motions/motion.h"
 #include "core/result.h"
 
 namespace smpl {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "exporter/animation.h"
 #include "exporter/asset.h"
 #include "request/export_request.h"

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "core/io/file_io.h"
-#include "core/load/model_folder.h"
+#include "core/models/model_folder.h"
 #include "core/os/path.h"
 
 namespace smpl {
@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // A folder (a --model folder): each file a model could be picked from
-// (core/load/model_folder.h, two levels deep), by relative path, size and time.
+// (core/models/model_folder.h, two levels deep), by relative path, size and time.
 void addFolder(const std::string& dir, ContentHash* h) {
   for (const std::string& rel : listModelFolder(dir)) {
     std::error_code ec;
@@ -47,7 +47,7 @@ Status addInput(const std::string& tag, const std::string& path, ContentHash* h)
   return Status();
 }
 
-// --dmpl DIR: every basis it can pick (core/load/dmpl.h findDmplBasis), by content.
+// --dmpl DIR: every basis it can pick (core/models/dmpl.h findDmplBasis), by content.
 Status addDmplFolder(const std::string& dir, ContentHash* h) {
   std::error_code ec;
   if (dir.empty() || !fs::is_directory(os::fsPath(dir), ec)) return Status();

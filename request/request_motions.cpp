@@ -3,8 +3,8 @@
 #include <atomic>
 #include <filesystem>
 
-#include "core/load/motion_fit.h"
-#include "core/load/motion_sequence.h"
+#include "core/motions/motion_fit.h"
+#include "core/motions/motion_sequence.h"
 #include "core/os/path.h"
 
 namespace smpl {

@@ -2,7 +2,7 @@
 // file (or --motion-sequence folder) is opened and decoded once per export,
 // and that decoded Motion serves every later step (the --model DIR pick, the
 // fit hands, the betas, DMPL, the bake). Small functions, so the motion
-// reader (core/load/motion.h) stays behind them.
+// reader (core/motions/motion.h) stays behind them.
 #pragma once
 
 #include <cstdint>
@@ -10,15 +10,15 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
-#include "core/load/motion_tracks.h"
+#include "core/motions/motion.h"
+#include "core/motions/motion_tracks.h"
 #include "core/result.h"
 #include "request/export_request.h"
 
 namespace smpl {
 
 // Every track of `path` (a motion file, or the request's --motion-sequence
-// folder, core/load/motion_sequence.h) with the request's --source-fps,
+// folder, core/motions/motion_sequence.h) with the request's --source-fps,
 // --source-params and --up. A folder given as --motion is refused (what to
 // give instead). Errors name the file.
 Result<MotionSet> decodeMotionSet(const std::string& path, const ExportRequest& request);
@@ -28,7 +28,7 @@ Result<MotionSet> decodeMotionSet(const std::string& path, const ExportRequest& 
 Result<Motion> decodeMotion(const std::string& path, const ExportRequest& request);
 
 // Fit hand poses (PCA coefficients, hands_mean) through `model`'s basis, with
-// the request's --flat-hand-mean (core/load/motion_fit.h resolveFitHands).
+// the request's --flat-hand-mean (core/motions/motion_fit.h resolveFitHands).
 // A no-op for motions without pending hands; errors name the motion `path`.
 Status resolveMotionHands(const BodyModel& model, const ExportRequest& request,
                           const std::string& path, Motion* motion);

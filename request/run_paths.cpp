@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "core/io/file_io.h"
-#include "core/load/model_folder.h"
-#include "core/load/uv_npy.h"
+#include "core/models/model_folder.h"
+#include "core/models/uv_npy.h"
 #include "core/os/files.h"
 #include "core/os/path.h"
 #include "writers/writer.h"
@@ -38,13 +38,13 @@ bool isDirectory(const std::string& path) {
   return !path.empty() && fs::is_directory(os::fsPath(path), ec);
 }
 
-// Each file of a model folder a pick may choose (core/load/model_folder.h).
+// Each file of a model folder a pick may choose (core/models/model_folder.h).
 void addModelFolder(const std::string& dir, std::vector<std::string>* files) {
   for (const std::string& rel : listModelFolder(dir))
     files->push_back(os::utf8(os::fsPath(dir) / os::fsPath(rel)));
 }
 
-// Each basis findDmplBasis (core/load/dmpl.h) may pick from a --dmpl folder.
+// Each basis findDmplBasis (core/models/dmpl.h) may pick from a --dmpl folder.
 void addDmplFolder(const std::string& dir, std::vector<std::string>* files) {
   for (const char* sub : {"dmpls/", ""})
     for (const char* gender : {"female", "male", "neutral"})

@@ -15,10 +15,10 @@
 namespace smpl {
 
 struct RunPaths {
-  // The model (a file; for a folder each file core/load/model_folder.h may
+  // The model (a file; for a folder each file core/models/model_folder.h may
   // pick, two levels deep; not "builtin"), every motion, --betas-file, --uv
-  // (and its numpy partner, core/load/uv_npy.h), --dmpl (a file; for a folder
-  // each basis core/load/dmpl.h findDmplBasis may pick).
+  // (and its numpy partner, core/models/uv_npy.h), --dmpl (a file; for a folder
+  // each basis core/models/dmpl.h findDmplBasis may pick).
   std::vector<std::string> inputs;
   // Each output, its sidecar "<out>.smpl.json", the buffer "<stem>.bin" of a
   // .gltf (unless --gltf-embed), and the batch --manifest.

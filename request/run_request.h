@@ -49,7 +49,7 @@ struct RunInputs {
 // core/memory_budget.h). Errors: "Error in arguments: ..." (Usage).
 Status beginRun(const ExportRequest& request);
 
-// --betas-file read once (core/load/betas_file.h), then a model file (not a
+// --betas-file read once (core/models/betas_file.h), then a model file (not a
 // folder, whose pick needs a motion) loaded into `models` before any motion.
 // Errors: "Error loading <file>: ..." (Load).
 Result<RunInputs> loadRunInputs(const ExportRequest& request, ModelSource* models);

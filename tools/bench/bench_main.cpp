@@ -11,10 +11,10 @@
 #include <thread>
 
 #include "core/demo/demo_body.h"
-#include "core/load/motion.h"
 #include "core/math/forward.h"
 #include "core/math/forward_batch.h"
 #include "core/math/pose_sampler.h"
+#include "core/motions/motion.h"
 #include "exporter/animation.h"
 #include "exporter/morph_scales.h"
 #include "exporter/pipeline.h"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/demo/demo_body.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/validate_asset.h"

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 #include "exporter/metadata_json.h"
 #include "exporter/morph_scales.h"
 #include "tools/morph_error.h"

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -20,7 +20,7 @@
 #include "cli/settings.h"
 #include "core/demo/demo_body.h"
 #include "core/io/file_io.h"
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 #include "exporter/metadata_json.h"
 #include "request/request_motions.h"
 
