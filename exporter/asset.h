@@ -156,7 +156,7 @@ struct AssetMetadata {
   CorrectiveBasis corrective_basis;  // last: keeps aggregate initialisers of the fields above valid
   // Added after corrective_basis for the same reason (aggregate initialisers stay valid).
   std::string skin_weights = "truncated";      // "truncated" or "optimized" (export_skin.h)
-  std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (pipeline.h)
+  std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (export_options.h)
   DmplInfo dmpl{};  // DMPL soft-tissue targets (empty without --dmpl); last, as above
   ExpressionInfo expression_targets{};  // animated expressions (empty: static); last, as above
 };

@@ -8,7 +8,7 @@
 #include "core/body_model.h"
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
-#include "exporter/pipeline.h"
+#include "exporter/export_options.h"
 
 namespace smpl {
 

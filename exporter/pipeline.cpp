@@ -94,7 +94,7 @@ void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
           static_cast<float>(mesh->positions(i, c) - shift(3 * mesh->source_vertex[i] + c));
 }
 
-// Split encoding of feature n (pipeline.h): one rectified target per sign
+// Split encoding of feature n (export_options.h): one rectified target per sign
 // the feature can take; delta = P_n / scale, so weight * delta = f P_n.
 void addSplitCorrective(const BodyModel& model, const CorrectiveRefit& refit, int n, Asset* asset) {
   const bool diagonal = (n % 9) / 3 == n % 3;
@@ -244,17 +244,6 @@ FittedSkin fitSkin(const BodyModel& model, const ShapedBody& body, const ExportO
 }
 
 }  // namespace
-
-const char* correctiveEncodingName(CorrectiveEncoding encoding) {
-  switch (encoding) {
-    case CorrectiveEncoding::Unit:
-      return "unit";
-    case CorrectiveEncoding::Split:
-      return "split";
-    default:
-      return "signed";
-  }
-}
 
 std::string correctiveTargetName(const BodyModel& model, int feature) {
   const int joint = feature / 9 + 1, r = (feature % 9) / 3, c = feature % 3;

@@ -18,7 +18,7 @@
 #include "core/motions/motion.h"
 #include "core/motions/motion_tracks.h"
 #include "exporter/animation.h"
-#include "exporter/pipeline.h"
+#include "exporter/export_options.h"
 #include "exporter/pruning_error.h"
 
 namespace smpl {

@@ -46,7 +46,6 @@ WriterOptions writerOptionsOf(const ExportRequest& r, const std::string& buffer_
   w.fbx_compress_level = r.fbx_compress_level;
   w.threads = r.threads.value_or(0);
   w.morph_epsilon = r.corrective_epsilon;
-  w.quantize_morphs = r.quantize_morphs;
   w.draco = r.draco;
   w.meshopt = r.meshopt;
   w.quantize_animation = r.quantize_animation;

@@ -1,5 +1,5 @@
 // The request's fields as the options of the library stages below it: the
-// asset (ExportOptions, exporter/pipeline.h), the bake (AnimationOptions,
+// asset (ExportOptions, exporter/export_options.h), the bake (AnimationOptions,
 // exporter/animation.h) and the writer (WriterOptions, writers/writer.h).
 // Pure translations: the values were checked by check_request.h.
 #pragma once
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "exporter/animation.h"
-#include "exporter/pipeline.h"
+#include "exporter/export_options.h"
 #include "request/export_request.h"
 #include "writers/writer.h"
 

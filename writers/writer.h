@@ -26,10 +26,7 @@ struct WriterOptions {
   int threads = 0;  // FBX: compression workers (--threads; 0 = all cores); same bytes for any
   // glTF compact encodings (each optional; see README "Size"):
   double morph_epsilon =
-      0.0;  // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors
-  bool quantize_morphs = false;  // --quantize-morphs; the export job hands it to exportAsset
-                                 // (ExportOptions), which marks MorphTarget::quantized: writers
-                                 // read the mark, not this flag
+      0.0;             // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors
   bool draco = false;  // KHR_draco_mesh_compression for the base mesh (sequential, order kept)
   // --meshopt: EXT_meshopt_compression of the vertex, index, morph and animation views
   bool meshopt = false;
