@@ -96,17 +96,7 @@ void addMeshGeometry(SceneContext& ctx) {
 void addMeshModel(SceneContext& ctx) {
   ctx.mesh_model = ctx.ids.id("model/mesh");
   FbxNode& model = ctx.addObject("Model", ctx.mesh_model, meshName(ctx.asset), "Model", "Mesh");
-  model.add("Version").addInt32(232);
-  FbxNode& p = model.add("Properties70");
-  pVector(p, "Lcl Translation", "Lcl Translation", "", "A", 0, 0, 0);
-  pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", 0, 0, 0);
-  pVector(p, "Lcl Scaling", "Lcl Scaling", "", "A", 1, 1, 1);
-  pInt(p, "DefaultAttributeIndex", 0);
-  pEnum(p, "InheritType", 1);
-  model.add("MultiLayer").addInt32(0);
-  model.add("MultiTake").addInt32(0);
-  model.add("Shading").addBool(true);
-  model.add("Culling").addString("CullingOff");
+  addModelBody(model, 0, 0, 0);
 }
 
 void addMaterial(SceneContext& ctx) {

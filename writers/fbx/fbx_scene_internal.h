@@ -50,6 +50,11 @@ void pColor(FbxNode& p70, const std::string& name, double r, double g, double b)
 void pVector(FbxNode& p70, const std::string& name, const char* type, const char* label,
              const char* flags, double x, double y, double z);
 
+// The body of a Model object (the mesh's and each joint's): Version, the
+// Properties70 (Lcl Translation x y z, no rotation, unit scale, attribute 0,
+// InheritType 1) and the display flags.
+void addModelBody(FbxNode& model, double x, double y, double z);
+
 // 4x4 column-major matrix (FBX order: translation in elements 12..14).
 std::vector<double> translationMatrix(double x, double y, double z);
 

@@ -61,6 +61,20 @@ void pVector(FbxNode& p70, const std::string& name, const char* type, const char
   addP(p70, name, type, label, flags).addDouble(x).addDouble(y).addDouble(z);
 }
 
+void addModelBody(FbxNode& model, double x, double y, double z) {
+  model.add("Version").addInt32(232);
+  FbxNode& p = model.add("Properties70");
+  pVector(p, "Lcl Translation", "Lcl Translation", "", "A", x, y, z);
+  pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", 0, 0, 0);
+  pVector(p, "Lcl Scaling", "Lcl Scaling", "", "A", 1, 1, 1);
+  pInt(p, "DefaultAttributeIndex", 0);
+  pEnum(p, "InheritType", 1);
+  model.add("MultiLayer").addInt32(0);
+  model.add("MultiTake").addInt32(0);
+  model.add("Shading").addBool(true);
+  model.add("Culling").addString("CullingOff");
+}
+
 std::vector<double> translationMatrix(double x, double y, double z) {
   return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, x, y, z, 1};
 }

@@ -12,20 +12,10 @@ void addJointModel(SceneContext& ctx, int k) {
   int64_t model = ctx.ids.id("model/joint/" + std::to_string(k));
   ctx.joint_models.push_back(model);
   FbxNode& node = ctx.addObject("Model", model, name, "Model", "LimbNode");
-  node.add("Version").addInt32(232);
-  FbxNode& p = node.add("Properties70");
   // Rest rotation is identity by contract, so a joint's animated local
   // rotation is the model's own R_k (docs/file-contract.md).
-  pVector(p, "Lcl Translation", "Lcl Translation", "", "A", s.rest_local(k, 0) * ctx.scale,
-          s.rest_local(k, 1) * ctx.scale, s.rest_local(k, 2) * ctx.scale);
-  pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", 0, 0, 0);
-  pVector(p, "Lcl Scaling", "Lcl Scaling", "", "A", 1, 1, 1);
-  pInt(p, "DefaultAttributeIndex", 0);
-  pEnum(p, "InheritType", 1);
-  node.add("MultiLayer").addInt32(0);
-  node.add("MultiTake").addInt32(0);
-  node.add("Shading").addBool(true);
-  node.add("Culling").addString("CullingOff");
+  addModelBody(node, s.rest_local(k, 0) * ctx.scale, s.rest_local(k, 1) * ctx.scale,
+               s.rest_local(k, 2) * ctx.scale);
 
   int64_t attr = ctx.ids.id("attribute/joint/" + std::to_string(k));
   FbxNode& a = ctx.addObject("NodeAttribute", attr, name, "NodeAttribute", "LimbNode");
