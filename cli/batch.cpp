@@ -13,12 +13,12 @@
 #include "cli/batch_report.h"
 #include "cli/manifest.h"
 #include "cli/sha256.h"
-#include "core/load/motion.h"
-#include "core/load/motion_layout.h"
+#include "core/motions/motion.h"
+#include "core/motions/motion_layout.h"
 #include "core/os/path.h"
 #include "core/os/system.h"
 #include "core/parallel.h"
-#include "exporter/request/error_line.h"
+#include "request/error_line.h"
 
 namespace smpl {
 namespace fs = std::filesystem;

@@ -11,8 +11,8 @@
 
 #include "cli/batch_plan.h"
 #include "cli/settings.h"
-#include "exporter/request/model_source.h"
-#include "exporter/request/run_request.h"
+#include "request/model_source.h"
+#include "request/run_request.h"
 
 namespace smpl {
 
@@ -23,7 +23,7 @@ struct BatchSummary {
 };
 
 // Converts `plan` (from planBatch with the same settings): one export job per
-// output (exporter/request/run_request.h runExportJob, the settings' request
+// output (request/run_request.h runExportJob, the settings' request
 // with that output and motion), sharing `inputs` (loadRunInputs) and
 // `models` (one file, or per motion from a folder). Prints the plan's notes
 // and per-entry errors (counted as failed) and one line per output.

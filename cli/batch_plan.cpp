@@ -11,18 +11,18 @@
 #include "core/io/file_io.h"
 #include "core/io/sha256.h"
 #include "core/io/utf8.h"
-#include "core/load/motion_layout.h"
+#include "core/motions/motion_layout.h"
 #include "core/os/path.h"
 #include "exporter/metadata_json.h"
-#include "exporter/request/error_line.h"
-#include "exporter/request/producer.h"
-#include "exporter/request/run_paths.h"
+#include "request/error_line.h"
+#include "request/producer.h"
+#include "request/run_paths.h"
 
 namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
-// A name with a motion extension of the reader table (core/load/motion_layout.h),
+// A name with a motion extension of the reader table (core/motions/motion_layout.h),
 // not one of our sidecars.
 bool isMotionName(const std::string& name) {
   if (hasSuffix(name, ".smpl.json")) return false;

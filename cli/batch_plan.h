@@ -1,6 +1,6 @@
 // Batch planning (--motion-dir DIR --out-dir DIR), done before any work:
 // list the motions, map each to its output, refuse name collisions, run the
-// path guard over every path of the run (exporter/request/run_paths.h:
+// path guard over every path of the run (request/run_paths.h:
 // outputs that are inputs, directories or devices, the manifest), remove
 // stale temporaries of these outputs, and decide which outputs are up to date. runBatch (batch.h)
 // then converts.

@@ -1,5 +1,5 @@
 // smpl-export: a thin main. Parse argv into the export request (cli/settings.h),
-// run it (exporter/request/run_request.h: checks, path guard, load, build,
+// run it (request/run_request.h: checks, path guard, load, build,
 // write) or a batch of them (cli/batch.h), print a summary. Everything the run
 // reads or builds is charged to one memory budget (core/memory_budget.h, set
 // by --memory-limit); the request turns exceptions that still escape into one
@@ -28,8 +28,8 @@
 #include "core/memory_budget.h"
 #include "core/os/system.h"
 #include "core/parallel.h"
-#include "exporter/request/run_request.h"
 #include "exporter/skin_cache.h"
+#include "request/run_request.h"
 
 using namespace smpl;
 

@@ -11,7 +11,7 @@
 #include "cli/settings.h"
 #include "core/memory_budget.h"
 #include "core/number_text.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {
@@ -452,7 +452,7 @@ std::vector<std::string> wrap(const std::string& text, size_t width) {
   return lines;
 }
 
-// The writer table's words in usage text (plugins/writer.h): {formats}
+// The writer table's words in usage text (writers/writer.h): {formats}
 // "glb|gltf|fbx|bvh", {default-format} "glb", {extensions} ".glb, .gltf, .fbx, .bvh",
 // {extensions|} ".glb|.gltf|.fbx|.bvh".
 std::string expand(std::string text) {

@@ -19,13 +19,13 @@ enum class Applies {
   Single,  // one export (--out), not batch mode
   Motion,  // needs --motion or --motion-dir
   Batch,   // only batch mode (--motion-dir)
-  Format,  // only the output formats whose writer row lists it (plugins/writer.h
+  Format,  // only the output formats whose writer row lists it (writers/writer.h
            // WriterFormat::options: --draco for .glb/.gltf, --fbx-units for .fbx, ...)
   Mesh,    // only the output formats with a mesh (WriterFormat::needs_mesh): the skin,
            // morph targets, UVs and mesh name options, refused for a skeleton-only .bvh
 };
 
-// How an option enters the producer hash (exporter/request/producer.h), which decides
+// How an option enters the producer hash (request/producer.h), which decides
 // whether an existing output is up to date.
 enum class Hashed {
   Value,    // as given: it changes the bytes written

@@ -4,7 +4,7 @@
 
 #include "cli/options.h"
 #include "cli/settings.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

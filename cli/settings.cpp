@@ -1,6 +1,6 @@
 // parseSettings: every option through the one table (cli/options.h), then the
 // rules of where options apply. Nothing here touches a file, and no value is
-// range-checked here: the request does that (exporter/request/check_request.h).
+// range-checked here: the request does that (request/check_request.h).
 #include "cli/settings.h"
 
 #include <algorithm>
@@ -8,7 +8,7 @@
 #include "cli/options.h"
 #include "cli/presets.h"
 #include "core/io/printable.h"
-#include "exporter/request/check_request.h"
+#include "request/check_request.h"
 
 namespace smpl {
 namespace {

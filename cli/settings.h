@@ -1,9 +1,9 @@
 // Command-line settings of smpl-export: argv parsed into the export request
-// (exporter/request/export_request.h) plus what only the command line has
+// (request/export_request.h) plus what only the command line has
 // (batch mode, printing). Parsing checks syntax only (gltfpack's discipline:
 // unknown options, malformed values and options used where they do not apply
 // fail first); every range and every conflict between options is checked
-// once, by the request (exporter/request/check_request.h). The options
+// once, by the request (request/check_request.h). The options
 // themselves are described once, in cli/options.h.
 #pragma once
 
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/result.h"
-#include "exporter/request/export_request.h"
-#include "plugins/writer.h"
+#include "request/export_request.h"
+#include "writers/writer.h"
 
 namespace smpl {
 
@@ -33,7 +33,7 @@ struct Settings {
 // Batch mode: --motion-dir or --out-dir given.
 bool isBatch(const Settings& settings);
 
-// The writer row (plugins/writer.h) of the run's outputs: batch mode's
+// The writer row (writers/writer.h) of the run's outputs: batch mode's
 // --format (default the table's first row), else --out's extension; null when
 // --out has none the table knows (the request reports it).
 const WriterFormat* outputFormat(const Settings& settings);

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "exporter/request/export_request.h"
+#include "request/export_request.h"
 
 namespace smpl {
 

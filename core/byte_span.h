@@ -1,5 +1,5 @@
 // A run of bytes owned elsewhere: one part of a file written in parts
-// (core/io/file_io.h FileContent::tail, plugins/writer.h Writer::Files).
+// (core/io/file_io.h FileContent::tail, writers/writer.h Writer::Files).
 #pragma once
 
 #include <cstddef>

@@ -5,7 +5,7 @@
 // `.npz` (ROMP's `results`). Leaves are Arrays (core/array.h: numbers widened
 // to double, C order); inner nodes are dicts (keys in file order) and lists.
 // The container readers build it (core/io/tree/data_tree.h); the motion layouts
-// read it (core/load/motion_layouts.h). It owns its data: each leaf holds
+// read it (core/motions/motion_layout.h). It owns its data: each leaf holds
 // its own memory charge (core/memory_budget.h).
 //
 //   const DataNode* body = root.get("smpl_params_global");

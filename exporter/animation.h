@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "core/result.h"
 #include "exporter/asset.h"
 
@@ -30,7 +30,7 @@ enum class UpAxis { Auto, Y, Z, NegY };
 // The rotation that turns a motion's world Y-up (identity for Y).
 Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world);
 
-// The request checks the ranges (exporter/request/check_request.h); here
+// The request checks the ranges (request/check_request.h); here
 // they are preconditions: fps >= 0, and a frame range outside a motion is
 // that motion's export error.
 struct AnimationOptions {

@@ -1,6 +1,6 @@
 // The format-neutral asset: everything a writer serialises, nothing it must
 // compute. The pipeline (pipeline.h) builds it from a model and options; the
-// writers in plugins/ only translate it into bytes. Plain data, model axes
+// writers (writers/) only translate it into bytes. Plain data, model axes
 // (metres, +Y up, right-handed), float32 where the files store float32.
 #pragma once
 
@@ -156,7 +156,7 @@ struct AssetMetadata {
   CorrectiveBasis corrective_basis;  // last: keeps aggregate initialisers of the fields above valid
   // Added after corrective_basis for the same reason (aggregate initialisers stay valid).
   std::string skin_weights = "truncated";      // "truncated" or "optimized" (export_skin.h)
-  std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (pipeline.h)
+  std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (export_options.h)
   DmplInfo dmpl{};  // DMPL soft-tissue targets (empty without --dmpl); last, as above
   ExpressionInfo expression_targets{};  // animated expressions (empty: static); last, as above
 };
@@ -179,7 +179,7 @@ struct Asset {
   SkinnedMesh mesh;
   std::vector<AnimationClip> animations;
   AssetMetadata metadata;
-  // A skeleton-only asset (for a writer without a mesh, plugins/writer.h
+  // A skeleton-only asset (for a writer without a mesh, writers/writer.h
   // needs_mesh = false): `mesh` is empty and validateAssetStructure does not
   // require one. Last: keeps aggregate initialisers of the fields above valid.
   bool skeleton_only = false;

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <map>
 
-#include "core/load/validate_inputs.h"
+#include "core/models/validate_inputs.h"
 #include "core/os/path.h"
 #include "exporter/joint_shift_cost.h"
 

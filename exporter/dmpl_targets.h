@@ -1,4 +1,4 @@
-// DMPL soft-tissue dynamics as morph targets (core/load/dmpl.h): one target
+// DMPL soft-tissue dynamics as morph targets (core/models/dmpl.h): one target
 // `dmpl_<i>` per basis direction, deltas in the rest pose (model axes), and
 // per-frame weights from the motion's `dmpls`. The coefficients are unbounded,
 // so each target gets an affine encoding from the motions' range,
@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/dmpl.h"
-#include "core/load/motion.h"
+#include "core/models/dmpl.h"
+#include "core/motions/motion.h"
 #include "core/result.h"
 #include "exporter/asset.h"
 
@@ -61,7 +61,7 @@ Status applyDmplFrame(const Asset& asset, const Eigen::VectorXd& c, const Rotati
 // Motion coefficients usable with a basis of `directions` columns: errors
 // name the motion file `path` (shape, NaN from Motion::dmpls_problem, width
 // different from the basis's `directions`, before --dmpl-count, values beyond
-// kMaxCoefficient: checkDmplValues, core/load/validate_inputs.h).
+// kMaxCoefficient: checkDmplValues, core/models/validate_inputs.h).
 Status checkDmplCoefficients(const Motion& motion, const std::string& path, int directions,
                              const std::string& basis_path);
 

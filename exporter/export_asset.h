@@ -3,7 +3,7 @@
 // buildAsset (pipeline.h) it bakes each motion (animation.h), applies the
 // quantisation fold when asked (morph_scales.h: deltas / s_n, weights and the
 // metadata mapping * s_n) and runs validateAsset (validate_asset.h), so the
-// writers in plugins/ only translate and the sidecar written beside a file
+// writers (writers/) only translate and the sidecar written beside a file
 // carries the same numbers as the file.
 //
 //   std::vector<MotionInput> motions = {{&walk, "walk.npz", AnimationOptions(), nullptr}};
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "core/result.h"
 #include "exporter/animation.h"
 #include "exporter/asset.h"

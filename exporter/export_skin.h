@@ -8,13 +8,13 @@
 #include "core/body_model.h"
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
-#include "exporter/pipeline.h"
+#include "exporter/export_options.h"
 
 namespace smpl {
 
 // M for `options` on `model`: --max-influences N clamped to the K joints,
 // kAllInfluences -> K. The clamp is a precondition: the request refuses N
-// outside 1..K first (exporter/request/check_request.h, the one check).
+// outside 1..K first (request/check_request.h, the one check).
 int influencesFor(const BodyModel& model, const ExportOptions& options);
 
 // N x M skin of the subject `body` (shapeBody of the export's betas). With

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "core/body_model.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "exporter/asset.h"
 
 namespace smpl {

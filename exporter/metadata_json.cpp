@@ -13,7 +13,7 @@
 // The sidecar <out>.smpl.json adds, last,
 //   "producer": {"hash": "<16 hex digits>",
 //                "outputs": [{"file": "walk.glb", "bytes": N, "sha256": "<64 hex digits>"}]}
-// a hash of everything that produced the output pair (exporter/request/producer.h: exporter
+// a hash of everything that produced the output pair (request/producer.h: exporter
 // version, options, model and input identities) and the size and SHA-256 of
 // every file of the output (a .gltf's .bin included); batch mode rebuilds an
 // output whose sidecar hash differs or whose files are not the recorded ones.

@@ -27,7 +27,7 @@ struct RecordedOutput {
 std::vector<RecordedOutput> recordOutputs(const std::vector<FileContent>& outputs);
 
 // The sidecar <out>.smpl.json: metadataJson plus, last,
-//   "producer": {"hash": producer_hash,          what made the output (exporter/request/producer.h)
+//   "producer": {"hash": producer_hash,          what made the output (request/producer.h)
 //                "outputs": [{"file": "walk.glb", "bytes": 123, "sha256": "..."}, ...]}
 // "outputs" records every file of the output (recordOutputs; absent when
 // `outputs` is empty), so batch mode can tell that the files on disk are still

@@ -6,10 +6,10 @@
 #include <optional>
 
 #include "core/heap_trim.h"
-#include "core/load/uv_source.h"
 #include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
+#include "core/models/uv_source.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/export_skin.h"
 #include "exporter/skin_cache.h"
@@ -94,7 +94,7 @@ void shiftBaseMesh(const Eigen::VectorXd& shift, SkinnedMesh* mesh) {
           static_cast<float>(mesh->positions(i, c) - shift(3 * mesh->source_vertex[i] + c));
 }
 
-// Split encoding of feature n (pipeline.h): one rectified target per sign
+// Split encoding of feature n (export_options.h): one rectified target per sign
 // the feature can take; delta = P_n / scale, so weight * delta = f P_n.
 void addSplitCorrective(const BodyModel& model, const CorrectiveRefit& refit, int n, Asset* asset) {
   const bool diagonal = (n % 9) / 3 == n % 3;
@@ -174,7 +174,7 @@ Status addMorphTargets(const BodyModel& model, const ExportOptions& o, const Cor
     addCorrectives(model, o, refit, asset);
   }
   // Counts beyond the model's directions are clamped (a precondition: the
-  // request refuses them first, exporter/request/check_request.h).
+  // request refuses them first, request/check_request.h).
   for (int i = 0; i < std::min(o.shape_keys, model.numBetas()); ++i)
     targets.push_back(directionTarget("shape_" + std::to_string(i), model.shapedirs, i, src));
   for (int i = 0; i < std::min(o.expression_keys, model.numExpressions()); ++i)
@@ -244,17 +244,6 @@ FittedSkin fitSkin(const BodyModel& model, const ShapedBody& body, const ExportO
 }
 
 }  // namespace
-
-const char* correctiveEncodingName(CorrectiveEncoding encoding) {
-  switch (encoding) {
-    case CorrectiveEncoding::Unit:
-      return "unit";
-    case CorrectiveEncoding::Split:
-      return "split";
-    default:
-      return "signed";
-  }
-}
 
 std::string correctiveTargetName(const BodyModel& model, int feature) {
   const int joint = feature / 9 + 1, r = (feature % 9) / 3, c = feature % 3;

@@ -17,7 +17,7 @@
 #include "core/math/skin_weights.h"
 #include "core/result.h"
 #include "exporter/asset.h"
-#include "exporter/pipeline.h"
+#include "exporter/export_options.h"
 
 namespace smpl {
 

@@ -1,4 +1,4 @@
-// The last check before any writer, called by every writer (plugins/) and by
+// The last check before any writer, called by every writer (writers/) and by
 // exportAsset: the asset's structure (validate_structure.h: shapes, indices,
 // one root, increasing key times, normals) and then every number a writer
 // serialises is finite, and every number stored as float32 fits a float32. Inputs are

@@ -2,7 +2,7 @@
 """Fails when smpl-export's code does what only works (or only gives the same bytes) on one OS.
 
 1. Outputs must be byte-identical on every platform and CPU, so the code that
-   computes them (cli/, core/, exporter/, plugins/) calls core/math/libm.h
+   computes them (cli/, request/, core/, exporter/, writers/) calls core/math/libm.h
    (smpl::libm::sin ...: musl's libm everywhere) and core/math/rotation.h, never
    std::sin & co nor Eigen's AngleAxis, slerp or eulerAngles (which call the C
    library's).
@@ -16,7 +16,7 @@ import pathlib
 import re
 import sys
 
-FOLDERS = ("cli", "core", "exporter", "plugins")
+FOLDERS = ("cli", "request", "core", "exporter", "writers")
 ALLOWED = {"core/math/libm.h", "core/math/rotation.h", "core/math/rotation.cpp", "core/os/path.h"}
 FUNCS = "sin|cos|tan|asin|acos|atan|atan2|exp|exp2|expm1|log|log2|log10|log1p|pow|hypot|cbrt|" \
         "sinh|cosh|tanh|asinh|acosh|atanh|erf|erfc|tgamma|lgamma|sincos"

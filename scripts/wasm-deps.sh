@@ -111,7 +111,7 @@ ln -sfn /usr/include/tiny_gltf.h "$PREFIX/include/tiny_gltf.h"
 mkdir -p "$PREFIX/lib/cmake/TinyGLTF" "$PREFIX/lib/cmake/meshoptimizer"
 cat >"$PREFIX/lib/cmake/TinyGLTF/TinyGLTFConfig.cmake" <<'CM'
 # Written by scripts/wasm-deps.sh: the TinyGLTF header (libtinygltf-dev); the
-# project compiles its implementation (plugins/gltf/static/tinygltf_impl.cpp).
+# project compiles its implementation (writers/gltf/static/tinygltf_impl.cpp).
 get_filename_component(_p "${CMAKE_CURRENT_LIST_DIR}/../../.." ABSOLUTE)
 if(NOT TARGET TinyGLTF::TinyGLTF)
   add_library(TinyGLTF::TinyGLTF INTERFACE IMPORTED)

@@ -167,7 +167,7 @@ fi
 if [ -f /usr/include/tiny_gltf.h ]; then
   ln -sfn /usr/include/tiny_gltf.h "$PREFIX/include/tiny_gltf.h"
   # Header only: the project compiles the implementation itself (as for
-  # SMPL_STATIC, plugins/gltf/static/tinygltf_impl.cpp); Debian's
+  # SMPL_STATIC, writers/gltf/static/tinygltf_impl.cpp); Debian's
   # libtinygltf.so is a Linux library.
   cat >"$PREFIX/lib/cmake/TinyGLTF/TinyGLTFConfig.cmake" <<'EOF'
 # Written by scripts/windows-deps.sh: TinyGLTF header (libtinygltf-dev) for

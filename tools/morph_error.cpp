@@ -10,8 +10,8 @@
 
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
-#include "plugins/gltf/gltf_buffer.h"
-#include "plugins/gltf/gltf_draco.h"
+#include "writers/gltf/gltf_buffer.h"
+#include "writers/gltf/gltf_draco.h"
 
 namespace smpl {
 namespace {

@@ -1,5 +1,5 @@
 // A 64-bit content hash, to tell whether an input or a set of options changed
-// since an output was made (batch up-to-date check, exporter/request/producer.h). Not
+// since an output was made (batch up-to-date check, request/producer.h). Not
 // cryptographic: it detects changes, it does not resist forgery. Stable across
 // runs, machines and builds (fixed constants, little-endian word order).
 #pragma once

@@ -65,7 +65,7 @@ extern const InputKind kModelInput;
 // bound), .npy and pickles/joblib (1 GiB), JSON and other text (256 MiB); any
 // other first bytes (compressed joblib, or none of them) are left to the
 // container sniffer (core/io/tree/data_tree.h), which names what it reads.
-// The motion reader (core/load/motion_read.cpp) calls, before it maps the file,
+// The motion reader (core/motions/motion_read.cpp) calls, before it maps the file,
 //   Result<FileFormat> f = checkInputFile(path, kMotionInput);
 extern const InputKind kMotionInput;
 // --uv FILE.obj: text, 256 MiB.

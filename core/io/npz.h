@@ -53,7 +53,7 @@ class NpzArchive {
   Result<bool> isObjectArray(const std::string& key) const;
   // Decode one member. Object arrays ('|O') are refused here with
   //   "model.npz: 'key' is an object array ('|O'); expected numbers or text"
-  // (core/load/npz_arrays decodes them with the data-only unpickler).
+  // (core/models/npz_arrays decodes them with the data-only unpickler).
   Result<Array> get(const std::string& key) const;
   // Ok while every byte read from the mapping was the file's; after the file
   // shrank under it (mapping_guard.h: zeros were read instead), the error
@@ -85,7 +85,7 @@ class NpzArchive {
 
 // Eager reads of every member (np.load(...) then dict(...)), kept for small
 // files such as betas. Object-array members are skipped (they are not numeric
-// data; decode them through NpzArchive + core/load/npz_arrays if needed).
+// data; decode them through NpzArchive + core/models/npz_arrays if needed).
 Result<ArrayDict> parseNpz(const uint8_t* data, size_t size, const std::string& context);
 Result<ArrayDict> readNpzFile(const std::string& path);
 

@@ -13,7 +13,7 @@ struct SparseSkin {
 };
 
 // M = max_influences; a precondition, not a user-facing check (the export
-// request checks --max-influences once, exporter/request/check_request.h):
+// request checks --max-influences once, request/check_request.h):
 // M < 1 is taken as 1.
 SparseSkin pruneWeights(const Eigen::MatrixXd& weights, int max_influences);
 

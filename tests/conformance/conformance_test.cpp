@@ -11,9 +11,9 @@
 
 #include <map>
 
-#include "core/load/model_loader.h"
-#include "core/load/motion.h"
 #include "core/math/forward.h"
+#include "core/models/model_loader.h"
+#include "core/motions/motion.h"
 #include "exporter/export_asset.h"
 #include "tests/conformance/kit_reader.h"
 #include "unreal/SmplCorrectives/Source/SmplCorrectives/Public/SmplCorrectivesMetadata.h"

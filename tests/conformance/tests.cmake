@@ -44,7 +44,7 @@ set_tests_properties(conformance.numpy.perturbed PROPERTIES LABELS unit
   FIXTURES_REQUIRED conformance_perturbed)
 
 add_executable(conformance_tests ${CMAKE_CURRENT_LIST_DIR}/conformance_test.cpp)
-target_link_libraries(conformance_tests PRIVATE smpl_exporter smpl_load GTest::gtest_main)
+target_link_libraries(conformance_tests PRIVATE smpl_exporter smpl_models smpl_motions GTest::gtest_main)
 add_dependencies(conformance_tests fixtures)
 add_test(NAME conformance.cpp COMMAND conformance_tests)
 add_test(NAME conformance.cpp.perturbed COMMAND ${SMPL_EXPECT_FAILURE} $<TARGET_FILE:conformance_tests>)

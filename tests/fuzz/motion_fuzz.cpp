@@ -1,4 +1,4 @@
-// libFuzzer entry point for the motion reader (core/load/motion: .npz and
+// libFuzzer entry point for the motion reader (core/motions/motion: .npz and
 // .json motions, split AMASS keys, rotation matrices, frame rates, betas).
 // loadMotion reads a path, so each input is written to a private temporary
 // file; the first byte picks the format (odd: .json, even: .npz) and the rest
@@ -12,8 +12,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/load/motion.h"
 #include "core/memory_budget.h"
+#include "core/motions/motion.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   smpl::setMemoryLimit(1ull << 30);

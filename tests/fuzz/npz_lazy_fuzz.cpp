@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/load/npz_arrays.h"
+#include "core/models/npz_arrays.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   smpl::Result<smpl::NpzArchive> npz = smpl::NpzArchive::fromBytes(data, size, "fuzz.npz");

@@ -1,4 +1,4 @@
-// libFuzzer entry point for the OBJ UV reader (core/load/uv_obj, `--uv`).
+// libFuzzer entry point for the OBJ UV reader (core/models/uv_obj, `--uv`).
 // The first byte sets the model's vertex count (0..255) so the face index
 // checks are exercised against both small and matching meshes; the rest is
 // the OBJ text, written to a private temporary file (the reader takes a path).
@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <string>
 
-#include "core/load/uv_obj.h"
 #include "core/memory_budget.h"
+#include "core/models/uv_obj.h"
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
   smpl::setMemoryLimit(1ull << 30);

@@ -55,7 +55,7 @@ add_executable(unreal_standin_test ${CMAKE_CURRENT_LIST_DIR}/unreal_standin_test
 target_include_directories(unreal_standin_test PRIVATE ${CMAKE_CURRENT_LIST_DIR}/unreal_standin
   ${SMPL_UNREAL_SOURCE}/SmplCorrectives/Public ${SMPL_UNREAL_SOURCE}/SmplCorrectivesEditor/Public)
 target_compile_definitions(unreal_standin_test PRIVATE SMPL_FIXTURE_DIR="${SMPL_FIXTURE_DIR}")
-target_link_libraries(unreal_standin_test PRIVATE smpl_load GTest::gtest_main)
+target_link_libraries(unreal_standin_test PRIVATE smpl_models smpl_motions GTest::gtest_main)
 add_dependencies(unreal_standin_test fixtures)
 add_test(NAME runtime.unreal_glue COMMAND unreal_standin_test)
 set_tests_properties(runtime.unreal_glue PROPERTIES LABELS unit)

@@ -15,9 +15,9 @@
 #include "AnimGraphNode_SmplCorrectives.h"
 #include "AnimNode_SmplCorrectives.h"
 #include "Animation/AnimInstanceProxy.h"
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
+#include "core/models/model_loader.h"
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include "core/demo/demo_body.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/pipeline.h"
-#include "plugins/writer.h"
 #include "tools/bench/synthetic_model.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

@@ -11,17 +11,17 @@
 #include <thread>
 
 #include "core/demo/demo_body.h"
-#include "core/load/motion.h"
 #include "core/math/forward.h"
 #include "core/math/forward_batch.h"
 #include "core/math/pose_sampler.h"
+#include "core/motions/motion.h"
 #include "exporter/animation.h"
 #include "exporter/morph_scales.h"
 #include "exporter/pipeline.h"
-#include "plugins/writer.h"
 #include "tools/bench/compare.h"
 #include "tools/bench/synthetic_model.h"
 #include "tools/morph_error.h"
+#include "writers/writer.h"
 
 using namespace smpl;
 using Clock = std::chrono::steady_clock;
@@ -70,7 +70,7 @@ void benchExport(const BodyModel& model, int repeats) {
 }
 
 // Compact glTF encodings (README "Size"): size, write time and the max vertex
-// error each adds over 32 seeded poses (plugins/gltf/morph_error.h).
+// error each adds over 32 seeded poses (tools/morph_error.h).
 void benchCompact(const BodyModel& model, int repeats) {
   Result<Asset> asset = buildAsset(model, ExportOptions());
   if (!asset)

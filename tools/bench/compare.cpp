@@ -38,11 +38,11 @@
 #include <vector>
 
 #include "core/io/npz.h"
-#include "core/load/model_loader.h"
 #include "core/math/forward_batch.h"
 #include "core/math/pose_sampler.h"
+#include "core/models/model_loader.h"
 #include "exporter/pipeline.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

@@ -25,11 +25,11 @@
 
 #include "core/demo/demo_body.h"
 #include "core/joint_names.h"
-#include "core/load/model_loader.h"
-#include "core/load/motion.h"
 #include "core/math/corrective_refit.h"
 #include "core/math/skin_weight_fit.h"
 #include "core/math/skin_weights.h"
+#include "core/models/model_loader.h"
+#include "core/motions/motion.h"
 #include "exporter/export_skin.h"
 #include "exporter/pruning_error.h"
 

@@ -29,7 +29,7 @@
 // --model, --betas, --max-influences, --skin-weights and --corrective-refit are the export's own
 // options: they are parsed by smpl-export's option table (cli/options.h) into
 // an ExportRequest, checked by the request's checks and the model loaded by
-// its ModelSource (exporter/request/), so this tool takes exactly what
+// its ModelSource (request/), so this tool takes exactly what
 // smpl-export takes, with the same messages. --poses, --seed, --dump-model
 // and --out (a prefix) are this tool's own.
 #include <Eigen/Core>
@@ -49,9 +49,9 @@
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
 #include "exporter/export_skin.h"
-#include "exporter/request/check_request.h"
-#include "exporter/request/model_source.h"
-#include "exporter/request/request_options.h"
+#include "request/check_request.h"
+#include "request/model_source.h"
+#include "request/request_options.h"
 #include "tools/reference/conformance_kit.h"
 
 namespace {

@@ -193,6 +193,36 @@ Result<Ref> rebuildTensor(Heap& heap, const TensorArgs& t) {
   return heap.add(std::move(o));
 }
 
+// A storage's persistent id: a tuple of `items` ('storage', type, key,
+// location, numel[, view_metadata]; `layout` names them in the error) whose
+// type is a known storage class.
+struct StorageId {
+  Ref type = 0, key_ref = 0;
+  std::string key;
+  DtypeInfo element;
+  int64_t numel = 0;
+};
+
+Result<StorageId> storageId(Heap& heap, Ref pid, size_t items, const char* layout) {
+  const PyObj& t = heap.at(pid);
+  StorageId id;
+  std::string tag;
+  if (t.kind != Kind::Tuple || t.items.size() != items || !stringValue(heap, t.items[0], &tag) ||
+      tag != "storage")
+    return heap.fail("persistent id is a " + typeName(heap, pid) + ", expected " + layout);
+  const PyObj& type = heap.at(t.items[1]);
+  if (type.kind != Kind::Global || type.global != GlobalId::TorchStorageType ||
+      !elementOf(type.text, &id.element))
+    return heap.fail("torch storage type '" + printable(typeName(heap, t.items[1]), 100) +
+                     "' is not supported (complex and quantized tensors are not motion data)");
+  if (!stringValue(heap, t.items[2], &id.key) || !intOf(heap.at(t.items[4]), &id.numel) ||
+      id.numel < 0)
+    return heap.fail("torch storage id has a bad key or element count");
+  id.type = t.items[1];
+  id.key_ref = t.items[2];
+  return id;
+}
+
 Result<Ref> tensorFromArgs(Heap& heap, GlobalId id, const std::vector<Ref>& args) {
   const char* name =
       id == GlobalId::TorchRebuildTensorV3 ? "_rebuild_tensor_v3" : "_rebuild_tensor_v2";
@@ -255,21 +285,11 @@ bool resolveTorchGlobal(const std::string& module, const std::string& name, Glob
 }
 
 Result<Ref> persistentLoad(Heap& heap, Ref pid) {
-  const PyObj& t = heap.at(pid);
-  std::string tag, key;
-  if (t.kind != Kind::Tuple || t.items.size() != 5 || !stringValue(heap, t.items[0], &tag) ||
-      tag != "storage")
-    return heap.fail("persistent id is a " + typeName(heap, pid) +
-                     ", expected ('storage', type, key, location, numel)");
-  const PyObj& type = heap.at(t.items[1]);
-  DtypeInfo d;
-  if (type.kind != Kind::Global || type.global != GlobalId::TorchStorageType ||
-      !elementOf(type.text, &d))
-    return heap.fail("torch storage type '" + printable(typeName(heap, t.items[1]), 100) +
-                     "' is not supported (complex and quantized tensors are not motion data)");
-  int64_t numel = 0;
-  if (!stringValue(heap, t.items[2], &key) || !intOf(heap.at(t.items[4]), &numel) || numel < 0)
-    return heap.fail("torch storage id has a bad key or element count");
+  Result<StorageId> id = storageId(heap, pid, 5, "('storage', type, key, location, numel)");
+  if (!id) return id.error();
+  const std::string& key = id->key;
+  const DtypeInfo d = id->element;
+  const int64_t numel = id->numel;
   Result<StorageBytes> bytes = heap.options().torch_storage(key);
   if (!bytes) return bytes.error();
   if (static_cast<uint64_t>(numel) > bytes->size / static_cast<uint64_t>(d.itemsize))
@@ -280,8 +300,8 @@ Result<Ref> persistentLoad(Heap& heap, Ref pid) {
   PyObj o;
   o.kind = Kind::Instance;
   o.global = GlobalId::TorchStorage;
-  o.text = type.text;
-  o.items = {t.items[2]};  // the key, for errors
+  o.text = heap.at(id->type).text;
+  o.items = {id->key_ref};  // the key, for errors
   o.view = reinterpret_cast<const char*>(bytes->data);
   o.view_size = static_cast<size_t>(numel) * static_cast<size_t>(d.itemsize);
   o.dtype = d;
@@ -290,33 +310,23 @@ Result<Ref> persistentLoad(Heap& heap, Ref pid) {
 }
 
 Result<Ref> legacyPersistentLoad(Heap& heap, Ref pid) {
-  const PyObj& t = heap.at(pid);
-  std::string tag, key;
-  if (t.kind != Kind::Tuple || t.items.size() != 6 || !stringValue(heap, t.items[0], &tag) ||
-      tag != "storage")
-    return heap.fail("persistent id is a " + typeName(heap, pid) +
-                     ", expected ('storage', type, key, location, numel, view_metadata)");
-  const PyObj& type = heap.at(t.items[1]);
-  DtypeInfo d;
-  if (type.kind != Kind::Global || type.global != GlobalId::TorchStorageType ||
-      !elementOf(type.text, &d))
-    return heap.fail("torch storage type '" + printable(typeName(heap, t.items[1]), 100) +
-                     "' is not supported (complex and quantized tensors are not motion data)");
-  int64_t numel = 0;
-  if (!stringValue(heap, t.items[2], &key) || !intOf(heap.at(t.items[4]), &numel) || numel < 0)
-    return heap.fail("torch storage id has a bad key or element count");
+  Result<StorageId> id =
+      storageId(heap, pid, 6, "('storage', type, key, location, numel, view_metadata)");
+  if (!id) return id.error();
+  const std::string& key = id->key;
+  const Ref view_metadata = heap.at(pid).items[5];
   // torch's _legacy_save always writes None here (its is_view test compares a storage with itself).
-  if (heap.at(t.items[5]).kind != Kind::None)
+  if (heap.at(view_metadata).kind != Kind::None)
     return heap.fail("torch storage '" + printable(key) + "' is a view (view_metadata " +
-                     typeName(heap, t.items[5]) + "): not supported");
+                     typeName(heap, view_metadata) + "): not supported");
   PK_TRY(heap.charge(2 * sizeof(Ref), "storage"));
   PyObj o;
   o.kind = Kind::Instance;
   o.global = GlobalId::TorchStorage;
-  o.text = type.text;
-  o.items = {t.items[2]};  // the key, for errors and to bind the bytes
-  o.dtype = d;
-  o.i = numel;
+  o.text = heap.at(id->type).text;
+  o.items = {id->key_ref};  // the key, for errors and to bind the bytes
+  o.dtype = id->element;
+  o.i = id->numel;
   Result<Ref> r = heap.add(std::move(o));
   if (r) heap.options().legacy_storages->push_back(*r);
   return r;

@@ -430,7 +430,7 @@ def with_hands_mean(poses, model):
 
 def camera_fit(case, fixture_dir, model):
     """A fit with smplx's names (vchoutas/smplx SMPLX.forward, axis-angle input, full 45-d
-    hands with hands_mean added: flat_hand_mean=False, as core/load/motion_fit.h), transl
+    hands with hands_mean added: flat_hand_mean=False, as core/motions/motion_fit.h), transl
     added to the vertices; in camera coordinates (OpenCV: x right, y down, z forward)."""
     with open(os.path.join(fixture_dir, case["fixture"]), "rb") as fh:
         data = pickle.load(fh)

@@ -359,7 +359,7 @@ def gvhmr_clips(case, path, m):
 
 
 def gvhmr_flat_clips(case, path, m):
-    # Today's Fit reader (core/load/motion_fit.h) on a flattened npz: body_pose (T,63) = SMPL-X body,
+    # Today's Fit reader (core/motions/motion_fit.h) on a flattened npz: body_pose (T,63) = SMPL-X body,
     # global_orient, transl, betas rows averaged; no hand keys -> hands at rest (zero); Y up; 30 fps.
     d = np.load(path)
     z = np.zeros(3)

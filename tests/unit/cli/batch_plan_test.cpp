@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "exporter/request/run_request.h"
+#include "request/run_request.h"
 
 namespace smpl {
 namespace {

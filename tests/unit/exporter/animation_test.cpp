@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 #include "exporter/pipeline.h"
 
 namespace smpl {

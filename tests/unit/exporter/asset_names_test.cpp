@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "core/demo/demo_body.h"
-#include "core/load/motion.h"
+#include "core/motions/motion.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/validate_asset.h"
-#include "plugins/writer.h"
+#include "writers/writer.h"
 
 namespace smpl {
 namespace {

@@ -9,9 +9,9 @@
 #include <Eigen/SVD>
 #include <nlohmann/json.hpp>
 
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
+#include "core/models/model_loader.h"
 #include "exporter/animation.h"
 #include "exporter/metadata_json.h"
 #include "exporter/pipeline.h"

@@ -7,11 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 #include "exporter/metadata_json.h"
 #include "exporter/morph_scales.h"
-#include "plugins/gltf/gltf_writer.h"
 #include "tools/morph_error.h"
+#include "writers/gltf/gltf_writer.h"
 
 namespace smpl {
 namespace {

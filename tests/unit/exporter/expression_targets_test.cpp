@@ -9,8 +9,8 @@
 
 #include <random>
 
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
+#include "core/models/model_loader.h"
 #include "exporter/animation.h"
 #include "exporter/export_asset.h"
 #include "tests/unit/test_asset.h"

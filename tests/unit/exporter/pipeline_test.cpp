@@ -7,8 +7,8 @@
 
 #include <fstream>
 
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

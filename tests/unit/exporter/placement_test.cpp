@@ -9,7 +9,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "tests/unit/test_asset.h"

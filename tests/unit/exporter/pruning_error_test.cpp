@@ -9,11 +9,11 @@
 #include <algorithm>
 
 #include "core/demo/demo_body.h"
-#include "core/load/model_loader.h"
 #include "core/math/corrective_refit.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
+#include "core/models/model_loader.h"
 #include "exporter/export_skin.h"
 
 namespace smpl {

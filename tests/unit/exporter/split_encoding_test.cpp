@@ -1,4 +1,4 @@
-// The split corrective encoding (exporter/pipeline.h, docs/file-contract.md):
+// The split corrective encoding (exporter/export_options.h, docs/file-contract.md):
 // base mesh v_shaped, every weight 0 at rest and in [0, 1] for any pose, and
 // sum_t max(0, scale f + offset) delta_t == posedirs f exactly (float deltas).
 // Also: --corrective-basis targets are quantized by --quantize-morphs

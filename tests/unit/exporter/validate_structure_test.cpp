@@ -10,9 +10,9 @@
 #include <functional>
 
 #include "exporter/validate_asset.h"
-#include "plugins/fbx/fbx_writer.h"
-#include "plugins/gltf/gltf_writer.h"
 #include "tests/unit/test_asset.h"
+#include "writers/fbx/fbx_writer.h"
+#include "writers/gltf/gltf_writer.h"
 
 namespace smpl {
 namespace {

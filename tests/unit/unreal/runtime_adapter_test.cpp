@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
+#include "core/models/model_loader.h"
 #include "unreal/SmplCorrectives/Source/SmplCorrectives/Public/SmplCorrectivesAdapter.h"
 
 namespace {

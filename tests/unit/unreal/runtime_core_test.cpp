@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "core/demo/demo_body.h"
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
+#include "core/models/model_loader.h"
 #include "unreal/SmplCorrectives/Source/SmplCorrectives/Public/SmplCorrectivesCore.h"
 
 namespace {

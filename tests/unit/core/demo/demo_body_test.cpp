@@ -13,9 +13,9 @@
 
 #include "core/demo/demo_body_internal.h"
 #include "core/joint_names.h"
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "core/math/pose_sampler.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -11,12 +11,12 @@
 #include <algorithm>
 
 #include "core/demo/demo_body.h"
-#include "core/load/model_loader.h"
 #include "core/math/forward.h"
 #include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weight_fit.h"
 #include "core/math/skin_weights.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "core/joint_names.h"
-#include "core/load/model_loader.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skin_weights.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/npz.h"
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 #include <random>
 
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 
 namespace smpl {
 namespace {

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/demo/demo_body.h"
-#include "core/load/model_loader.h"
+#include "core/models/model_loader.h"
 #include "exporter/export_skin.h"
 #include "exporter/pruning_error.h"
 

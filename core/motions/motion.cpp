@@ -1,0 +1,143 @@
+// loadMotion: the container (motion_read.h), the layout row
+// (motion_layout.h), its decode, then the frame rate and the value checks.
+#include "core/motions/motion.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/io/file_io.h"
+#include "core/joint_names.h"
+#include "core/motions/motion_internal.h"
+#include "core/motions/motion_read.h"
+#include "core/motions/validate_motion.h"
+
+namespace smpl {
+namespace motion_detail {
+
+Status allocateFrames(int64_t t, size_t joints, const std::string& path, Motion* m) {
+  const uint64_t frame_bytes =
+      sizeof(Rotations) + joints * sizeof(Eigen::Matrix3d) + sizeof(Eigen::Vector3d);
+  if (Status st = m->charge.add(static_cast<uint64_t>(t) * frame_bytes, path,
+                                std::to_string(t) + " frames");
+      !st)
+    return st;
+  m->frames.assign(t, Rotations(joints, Eigen::Matrix3d::Identity()));
+  return Status();
+}
+
+Status checkNumbers(const Array& a, const std::string& path, const char* key) {
+  if (a.isString()) return makeError(path + ": '" + key + "' holds text, expected numbers");
+  for (double v : a.data)
+    if (!std::isfinite(v))
+      return makeError(path + ": '" + key + "' contains NaN or infinite values");
+  return Status();
+}
+
+Status readExpression(const Array& a, const std::string& path, const char* key, Motion* m) {
+  if (Status st = checkNumbers(a, path, key); !st) return st;
+  const int64_t t = static_cast<int64_t>(m->frames.size());
+  const int64_t e = a.shape.empty() ? 1 : a.shape.back();
+  const int64_t rows = e > 0 ? a.size() / e : 0;
+  if (e < 1 || a.shape.size() > 2 || (rows != t && rows != 1))
+    return makeError(path + ": '" + key + "' has shape " + shapeString(a.shape) + "; expected (" +
+                     std::to_string(t) + ",E) expression coefficients");
+  if (Status st = m->charge.add(static_cast<uint64_t>(t * e) * sizeof(double), path, key); !st)
+    return st;
+  m->expression.resize(t, e);
+  for (int64_t f = 0; f < t; ++f)
+    for (int64_t i = 0; i < e; ++i) m->expression(f, i) = a.data[(rows == 1 ? 0 : f) * e + i];
+  return Status();
+}
+
+void putAxisAngle(const double* p, int count, int first, Rotations* out) {
+  const Rotations r = rotationsFromAxisAngle(Eigen::Map<const Eigen::VectorXd>(p, 3 * count));
+  for (int k = 0; k < count; ++k) (*out)[first + k] = r[k];
+}
+
+void putMatrices(const double* p, int count, int first, Rotations* out) {
+  for (int k = 0; k < count; ++k)
+    (*out)[first + k] = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(p + 9 * k);
+}
+
+}  // namespace motion_detail
+
+namespace {
+
+// The source rate: --source-fps, else the stored one, else a default; a
+// note says what was assumed or overridden (single frames need no rate).
+void settleFps(const MotionOptions& o, double fallback, const char* why, Motion* m) {
+  char text[200];
+  if (o.source_fps > 0) {
+    if (m->fps > 0 && std::abs(m->fps - o.source_fps) > 1e-9) {
+      std::snprintf(text, sizeof text, "the stored rate %g fps is overridden by --source-fps %g",
+                    m->fps, o.source_fps);
+      m->notes.push_back(text);
+    }
+    m->fps = o.source_fps;
+    m->fps_assumed = false;
+    return;
+  }
+  if (m->fps > 0) return;
+  m->fps = fallback;
+  m->fps_assumed = true;
+  if (m->frames.size() < 2) return;
+  std::snprintf(text, sizeof text, "%s; assumed %g fps (state the rate with --source-fps R)", why,
+                fallback);
+  m->notes.push_back(text);
+}
+
+// The file's stem: the clip name of each track.
+std::string stemOf(const std::string& path) {
+  std::string name = baseName(path);
+  return name.substr(0, name.rfind('.'));
+}
+
+}  // namespace
+
+Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& options) {
+  Result<MotionFile> file = readMotionFile(path);
+  if (!file) return file.error();
+  const MotionLayout* row = file->layout;
+  if (!row) return makeError(path + ": " + unmatchedMessage(file->root));
+  MotionSet set;
+  if (Status s = row->decode(file->root, LayoutInput{path, options}, &set); !s) return s.error();
+  if (set.tracks.empty()) return makeError(path + ": no motion in the file");
+  for (Motion& m : set.tracks) {
+    m.name = stemOf(path);
+    if (m.source_layout.empty()) m.source_layout = row->name;  // a decode may name a variant
+    settleFps(options, row->fps_fallback, row->fps_why, &m);
+    if (m.world == MotionWorld::CameraYDown && !options.up_given)
+      m.notes.push_back(
+          (m.world_why.empty() ? std::string("the poses are in a camera frame") : m.world_why) +
+          " (x right, y down, z forward): turned upright by a half turn about x "
+          "(--up -y); --up y keeps the file's axes");
+    if (Status st = checkMotionValues(&m, path); !st) return st.error();
+  }
+  return set;
+}
+
+Result<Motion> loadMotion(const std::string& path, const MotionOptions& options) {
+  Result<MotionSet> set = loadMotionSet(path, options);
+  if (!set) return set.error();
+  Motion m = std::move(set->tracks.front());
+  m.notes.insert(m.notes.begin(), set->notes.begin(), set->notes.end());
+  return m;
+}
+
+void releaseFrames(Motion* m) {
+  std::vector<Rotations>().swap(m->frames);
+  std::vector<Eigen::Vector3d>().swap(m->translation);
+  std::vector<Eigen::Matrix3d>().swap(m->world_rotation);
+  std::vector<Eigen::Vector3d>().swap(m->world_translation);
+  m->dmpls.resize(0, 0);
+  m->expression.resize(0, 0);
+  m->charge.release();
+}
+
+Result<bool> hasPoseData(const std::string& path) {
+  Result<MotionFile> file = probeMotionFile(path);
+  if (!file) return file.error();
+  return file->layout != nullptr || !isShapeOnly(file->root);
+}
+
+}  // namespace smpl

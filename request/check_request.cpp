@@ -1,0 +1,197 @@
+// checkRequest / checkRequestForModel / checkDmplCount: see check_request.h.
+#include "request/check_request.h"
+
+#include <cstdio>
+
+#include "core/models/validate_inputs.h"
+#include "writers/writer.h"
+
+namespace smpl {
+namespace {
+
+Error usage(const std::string& message) { return makeError(message, ErrorKind::Usage); }
+
+std::string number(double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.15g", v);
+  return text;
+}
+
+// A rate in [lo, hi] (or (lo, hi] when `open_low`).
+Status checkRate(const std::optional<double>& v, const char* option, double lo, double hi,
+                 bool open_low) {
+  if (!v || (*v >= lo && *v <= hi && !(open_low && *v == lo))) return Status();
+  return usage(std::string(option) + ": expected a rate in " + (open_low ? "(" : "[") + number(lo) +
+               ", " + number(hi) + "], got '" + number(*v) + "'");
+}
+
+// Values that need no model: each option's own range.
+Status checkRanges(const ExportRequest& r) {
+  if (Status st = checkCoefficients(r.betas, "--betas", "value"); !st) return usage(st.message());
+  if (Status st = checkCoefficients(r.expression, "--expression", "value"); !st)
+    return usage(st.message());
+  if (Status st = checkRate(r.source_fps, "--source-fps", 1, 1000, false); !st) return st;
+  if (Status st = checkRate(r.fps, "--fps", 0, 1000, true); !st) return st;
+  if (r.first_frame < 0)
+    return usage("--frames: bad start '" + std::to_string(r.first_frame) + "'");
+  if (r.end_frame >= 0 && r.end_frame <= r.first_frame)
+    return usage("--frames: end must be after start in '" + std::to_string(r.first_frame) + ":" +
+                 std::to_string(r.end_frame) + "'");
+  if (!(r.corrective_epsilon >= 0 && r.corrective_epsilon <= 0.01))
+    return usage("--corrective-epsilon: expected metres in [0, 0.01], got '" +
+                 number(r.corrective_epsilon) + "'");
+  if (r.fbx_compress_level < 0 || r.fbx_compress_level > 12)
+    return usage("--fbx-compress-level: expected 0..12, got '" +
+                 std::to_string(r.fbx_compress_level) + "'");
+  if (r.threads && (*r.threads < 1 || *r.threads > 1024))
+    return usage("--threads: expected 1..1024, got '" + std::to_string(*r.threads) + "'");
+  if (r.dmpl_count && *r.dmpl_count < 1)
+    return usage("--dmpl-count: expected N >= 1, got '" + std::to_string(*r.dmpl_count) + "'");
+  return Status();
+}
+
+// Size options that would otherwise be silently ignored together (issue 13 item 6).
+Status checkMorphOptions(const ExportRequest& r) {
+  if (r.corrective_basis > 0 && !r.correctives)
+    return usage("--corrective-basis conflicts with --correctives none");
+  if (r.encoding != CorrectiveEncoding::Auto && !r.correctives)
+    return usage(
+        "--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
+  if (r.quantize_morphs && !r.correctives)
+    return usage(
+        "--quantize-morphs quantizes corrective targets; with --correctives none there are none");
+  if (r.corrective_epsilon > 0 && !r.correctives && r.shape_keys == 0 && r.expression_keys == 0)
+    return usage(
+        "--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
+        "--expression-keys there are none");
+  if (r.quantize_animation && r.motions.empty() && r.motion_dir.empty())
+    return usage(
+        "--quantize-animation quantises animation keys; without --motion or --motion-dir there are "
+        "none");
+  if (r.corrective_basis > 0 && r.encoding == CorrectiveEncoding::Split)
+    return usage(
+        "--corrective-basis conflicts with --corrective-weights split (basis weights are signed or "
+        "unit)");
+  return Status();
+}
+
+Status checkConflicts(const ExportRequest& r) {
+  if (r.model.empty()) return usage("missing --model PATH (use --model builtin for the demo body)");
+  if (!r.betas.empty() && !r.betas_file.empty())
+    return usage("--betas and --betas-file conflict: give one");
+  if (r.betas_from_motion && (!r.betas.empty() || !r.betas_file.empty()))
+    return usage("--betas-from-motion conflicts with --betas/--betas-file");
+  if (r.dmpl_count && r.dmpl.empty()) return usage("--dmpl-count needs --dmpl");
+  if (r.dmpl_regressed_joints && r.dmpl.empty()) return usage("--dmpl-joints needs --dmpl");
+  if (r.track.kind == TrackChoice::Kind::All && !r.motion_dir.empty())
+    return usage(
+        "--track all writes one output per person of one motion; in batch mode give --track "
+        "longest or a track id");
+  if (r.track.kind == TrackChoice::Kind::All && r.motions.size() != 1)
+    return usage(
+        "--track all writes one output per person: give one --motion or --motion-sequence");
+  if (r.root_bone && r.origin == Origin::Model)
+    return usage(
+        "--root-bone conflicts with --origin model (the root bone stands on the floor: it implies "
+        "--origin floor)");
+  if (!r.motion_sequence.empty() && r.motions.size() != 1)
+    return usage("--motion-sequence DIR is the run's one motion: it conflicts with --motion");
+  return checkMorphOptions(r);
+}
+
+// A format without a mesh (writer.h needs_mesh false) refuses what only a mesh has.
+Status checkMeshOptions(const ExportRequest& r, const WriterFormat& format) {
+  const char* option = !r.dmpl.empty()          ? "--dmpl"
+                       : r.shape_keys > 0       ? "--shape-keys"
+                       : r.expression_keys > 0  ? "--expression-keys"
+                       : !r.uv.empty()          ? "--uv"
+                       : r.corrective_basis > 0 ? "--corrective-basis"
+                       : r.quantize_morphs      ? "--quantize-morphs"
+                                                : nullptr;
+  if (!option) return Status();
+  return usage(std::string(option) + " needs an output format with a mesh; " + format.name +
+               " output has none");
+}
+
+// A count option against what the model has: "--shape-keys 12: the model has 10 shape directions".
+Status checkCount(int value, int available, const char* option, const char* what) {
+  if (value >= 0 && value <= available) return Status();
+  return usage(std::string(option) + " " + std::to_string(value) + ": the model has " +
+               std::to_string(available) + " " + what);
+}
+
+}  // namespace
+
+Status checkRequestOptions(const ExportRequest& r) {
+  if (Status st = checkRanges(r); !st) return st;
+  return checkConflicts(r);
+}
+
+Status checkRequest(const ExportRequest& r) {
+  if (Status st = checkRequestOptions(r); !st) return st;
+  if (r.out.empty() && r.motion_dir.empty())
+    return usage("missing --out FILE (" + writerExtensionList() + ")");
+  const WriterFormat* format = r.out.empty() ? batchFormat(r) : writerFormatForPath(r.out);
+  if (!format && r.out.empty()) {
+    std::string names;  // the writer table's rows
+    for (size_t i = 0; i < writerFormats().size(); ++i)
+      names += std::string(i == 0                            ? ""
+                           : i + 1 == writerFormats().size() ? " or "
+                                                             : ", ") +
+               "'" + writerFormats()[i].name + "'";
+    return usage("--format: expected " + names + ", got '" + r.format + "'");
+  }
+  if (!format)
+    return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
+  if (r.draco && !dracoAvailable())
+    return usage(
+        "--draco: this smpl-export was built without Draco (the Windows and WebAssembly builds: "
+        "Debian ships no Draco for them); use --meshopt, or a Linux build");
+  if (r.meshopt && !meshoptAvailable())
+    return usage(
+        "--meshopt: this smpl-export was built without meshoptimizer (the static build: "
+        "Debian ships no static libmeshoptimizer); use the Debian package build");
+  if (format->single_clip && r.motions.size() > 1)
+    return usage("--motion: " + format->name + " output holds one motion; got " +
+                 std::to_string(r.motions.size()) + " (one output per motion: --motion-dir)");
+  return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
+}
+
+Status checkRequestForModel(const ExportRequest& r, const std::vector<double>& betas,
+                            const BodyModel& model) {
+  if (static_cast<int>(betas.size()) > model.numBetas())
+    return usage("betas: " + std::to_string(betas.size()) + " values given; the model " +
+                 model.name + " has " + std::to_string(model.numBetas()));
+  if (static_cast<int>(r.expression.size()) > model.numExpressions())
+    return usage("expression: " + std::to_string(r.expression.size()) +
+                 " values given; the model " + model.name + " has " +
+                 std::to_string(model.numExpressions()));
+  if (!r.all_influences && (r.max_influences < 1 || r.max_influences > model.numJoints()))
+    return usage("--max-influences must be between 1 and " + std::to_string(model.numJoints()) +
+                 " (the model's joints) or 'all', got " + std::to_string(r.max_influences));
+  if (Status st = checkCount(r.shape_keys, model.numBetas(), "--shape-keys", "shape directions");
+      !st)
+    return st;
+  if (Status st = checkCount(r.expression_keys, model.numExpressions(), "--expression-keys",
+                             "expression directions");
+      !st)
+    return st;
+  const int p = model.numPoseFeatures();
+  if (r.corrective_basis < 0 || r.corrective_basis > p)
+    return usage("--corrective-basis " + std::to_string(r.corrective_basis) + ": expected 1.." +
+                 std::to_string(p) + " (the model has " + std::to_string(p) + " pose correctives)");
+  return Status();
+}
+
+const WriterFormat* batchFormat(const ExportRequest& r) {
+  return r.format.empty() ? &writerFormats().front() : writerFormatByName(r.format);
+}
+
+Status checkDmplCount(const ExportRequest& r, int directions) {
+  if (!r.dmpl_count || *r.dmpl_count <= directions) return Status();
+  return makeError("--dmpl-count " + std::to_string(*r.dmpl_count) + ": the basis has " +
+                       std::to_string(directions) + " directions",
+                   ErrorKind::Load);
+}
+
+}  // namespace smpl

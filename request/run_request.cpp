@@ -1,0 +1,360 @@
+// beginRun / loadRunInputs / runExportJob / runExportRequest: see run_request.h.
+#include "request/run_request.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <unordered_map>
+
+#include "core/heap_trim.h"
+#include "core/io/file_io.h"
+#include "core/io/printable.h"
+#include "core/memory_budget.h"
+#include "core/models/betas_file.h"
+#include "exporter/export_asset.h"
+#include "exporter/metadata_json.h"
+#include "request/check_request.h"
+#include "request/dmpl_job.h"
+#include "request/error_line.h"
+#include "request/hand_side.h"
+#include "request/motion_notes.h"
+#include "request/producer.h"
+#include "request/request_motions.h"
+#include "request/request_options.h"
+#include "request/run_paths.h"
+#include "writers/writer.h"
+
+namespace smpl {
+namespace {
+
+// What the run is doing, for the line of an exception that escapes.
+struct Stage {
+  const char* verb = "in";
+  std::string path = "arguments";
+  ErrorKind kind = ErrorKind::Usage;
+  void set(const char* v, const std::string& p, ErrorKind k) { verb = v, path = p, kind = k; }
+};
+
+Error fail(ErrorKind kind, const char* verb, const std::string& path, const std::string& message) {
+  return makeError(errorLine(verb, path, message), kind);
+}
+
+Error usage(const std::string& message) {
+  return fail(ErrorKind::Usage, "in", "arguments", message);
+}
+
+// Runs `body` and turns an escaping exception into the stage's error line.
+template <class T, class Body>
+Result<T> guarded(Stage* stage, Body body) {
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    return fail(stage->kind, stage->verb, stage->path,
+                "out of memory (the system refused an allocation below --memory-limit " +
+                    formatBytes(memoryLimit()) + "; set a lower limit)");
+  } catch (const std::exception& e) {
+    return fail(stage->kind, stage->verb, stage->path, std::string("internal error: ") + e.what());
+  }
+}
+
+// An export error that is really about the options is a usage error; an
+// input read while building (the --uv file) fails as a load error.
+Error exportFailure(const std::string& out, const Error& e, const std::string& input) {
+  if (e.kind == ErrorKind::Usage) return usage(e.message);
+  if (e.kind == ErrorKind::Load) return fail(ErrorKind::Load, "loading", input, e.message);
+  return fail(ErrorKind::Export, "exporting", out, e.message);
+}
+
+// The motions decoded once, the model picked with the first (mirrored for a
+// hand of the other side: hand_side.h), the model's checks, then the fit
+// hands through the model's basis.
+struct Loaded {
+  std::vector<Motion> motions;
+  ModelPick pick;
+  HandSideModel side;  // owns pick.model when it is the mirrored model
+};
+
+Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
+                       Stage* stage, const Motion* given) {
+  Loaded loaded;
+  if (given) loaded.motions.push_back(*given);  // a track of --track all, decoded by the caller
+  for (size_t i = given ? 1 : 0; i < r.motions.size(); ++i) {  // exceptions: "exporting <out>"
+    const std::string& path = r.motions[i];
+    Result<Motion> m = decodeMotion(path, r);
+    if (!m) return fail(ErrorKind::Load, "loading", path, m.message());
+    loaded.motions.push_back(std::move(*m));
+  }
+  stage->set("loading", r.model, ErrorKind::Load);  // a folder's pick loads its model here
+  Result<ModelPick> pick = models->forMotion(loaded.motions.empty() ? nullptr : &loaded.motions[0]);
+  if (!pick) return fail(ErrorKind::Load, "loading", r.model, pick.message());
+  stage->set("exporting", r.out, ErrorKind::Export);
+  loaded.pick = *pick;
+  Result<HandSideModel> side = modelForHandSide(*pick->model, r.motions, &loaded.motions);
+  if (!side) return fail(ErrorKind::Load, "loading", r.motions.front(), side.message());
+  loaded.side = std::move(*side);
+  if (loaded.side.mirrored) loaded.pick.model = loaded.side.mirrored.get();
+  const BodyModel& model = *loaded.pick.model;
+  if (Status st = checkRequestForModel(r, inputs.betas, model); !st) return usage(st.message());
+  for (size_t i = 0; i < r.motions.size(); ++i)
+    if (Status st = resolveMotionHands(model, r, r.motions[i], &loaded.motions[i]); !st)
+      return fail(ErrorKind::Load, "loading", r.motions[i], st.message());
+  return loaded;
+}
+
+// Betas from the first motion when the run gave none; --betas-from-motion
+// makes a motion without betas an error.
+Status betasFromMotion(const BodyModel& model, const ExportRequest& r,
+                       const std::vector<Motion>& motions, ExportOptions* o,
+                       std::vector<std::string>* notes) {
+  if (motions.empty() || motions[0].betas.empty()) {
+    if (r.betas_from_motion && !r.motions.empty())
+      return fail(ErrorKind::Load, "loading", r.motions[0],
+                  "no betas in the motion (--betas-from-motion)");
+    return Status();
+  }
+  const std::vector<double>& betas = motions[0].betas;
+  const size_t n = std::min(betas.size(), static_cast<size_t>(model.numBetas()));
+  o->betas.assign(betas.begin(), betas.begin() + n);
+  double dropped = 0;
+  for (size_t i = n; i < betas.size(); ++i) dropped = std::max(dropped, std::abs(betas[i]));
+  if (dropped > 0) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "%s: the motion has %zu betas; the model %s has %d: betas %zu..%zu are not "
+                  "used (largest |value| %.3g)",
+                  motions[0].name.c_str(), betas.size(), model.name.c_str(), model.numBetas(), n,
+                  betas.size() - 1, dropped);
+    notes->push_back(text);
+  }
+  return Status();
+}
+
+// What exportAsset bakes: each motion with the request's frame range
+// (clamped per motion, the note kept in `frame_notes`) and progress.
+// The job owns the motions and frees their frames once baked (runJob), so
+// the bake may free them as it goes (MotionInput::release).
+std::vector<MotionInput> motionInputs(const ExportRequest& r, std::vector<Motion>* motions,
+                                      std::vector<std::string>* frame_notes) {
+  std::vector<MotionInput> inputs;
+  const AnimationOptions animation = animationOptionsOf(r);
+  for (size_t i = 0; i < motions->size(); ++i) {
+    Motion& motion = (*motions)[i];
+    frame_notes->emplace_back();
+    MotionInput in{&motion, r.motions[i], framesFor(animation, motion, &frame_notes->back()),
+                   nullptr, &motion};
+    if (r.progress) in.progress = [&r, name = motion.name](double f) { r.progress(name, f); };
+    inputs.push_back(std::move(in));
+  }
+  return inputs;
+}
+
+// The finished asset and the notes that go with it.
+Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, Loaded* job,
+                       ExportReport* report) {
+  Loaded& loaded = *job;
+  const BodyModel& model = *loaded.pick.model;
+  ExportOptions options = exportOptionsOf(r, inputs.betas);
+  if (!inputs.betas_given)
+    if (Status st = betasFromMotion(model, r, loaded.motions, &options, &report->notes); !st)
+      return st.error();
+  Result<PreparedDmpl> dmpl = prepareDmpl(model, r, loaded.motions, report);  // dmpl_job.h
+  if (!dmpl) return dmpl.error();
+  std::vector<std::string> frame_notes;
+  // A mirrored hand model belongs to this job: its skin is not kept for others.
+  SkinCache* skins = loaded.side.mirrored ? nullptr : inputs.skins.get();
+  Result<Asset> asset = exportAsset(model, options, motionInputs(r, &loaded.motions, &frame_notes),
+                                    &dmpl->input, skins);
+  if (!asset) return exportFailure(r.out, asset.error(), options.uv_obj);
+  noteMotions(loaded.motions, frame_notes, inputs.betas_given, *asset, report);
+  noteDmplJointCost(*asset, report);
+  if (r.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
+    report->notes.push_back(
+        "--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
+  report->options = options;
+  return asset;
+}
+
+// Serialise and commit the output, its buffer and its sidecar (renamed
+// last: the commit record, file_io.h).
+Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer& writer) {
+  std::string producer = r.producer_hash;
+  if (producer.empty()) {
+    Result<ContentHash> base = producerBase(r);
+    if (!base) return fail(ErrorKind::Load, "loading", r.model, base.message());
+    producer = producerHash(*base, r.motions);
+  }
+  const std::string buffer_path = gltfBufferPath(r, r.out);
+  Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, buffer_path));
+  if (!files) return exportFailure(r.out, files.error(), "");
+  std::vector<FileContent> contents = {
+      FileContent{r.out, files->bytes.data(), files->bytes.size(), files->tailParts()}};
+  if (!buffer_path.empty())
+    contents.push_back(FileContent{buffer_path, files->buffer.data(), files->buffer.size()});
+  // The sidecar records the size and SHA-256 of each file written with it
+  // (batch mode checks them, metadata_json.h).
+  const std::string sidecar = sidecarJson(asset, producer, contents);
+  contents.push_back(FileContent{r.out + ".smpl.json", sidecar.data(), sidecar.size()});
+  if (Status st = writeFilesTogether(contents); !st)
+    return fail(ErrorKind::Write, "saving", r.out, st.message());
+  return files->size() + files->buffer.size();
+}
+
+Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
+                            Stage* stage, const Motion* given = nullptr) {
+  const auto start = std::chrono::steady_clock::now();
+  const Writer* writer = writerForPath(r.out);
+  if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
+  if (r.clean_temporaries)
+    removeStaleTemps(dirName(r.out), {baseName(r.out), baseName(r.out) + ".smpl.json",
+                                      baseName(gltfBufferPath(r, r.out))});
+  Result<Loaded> loaded = loadJob(r, inputs, models, stage, given);
+  if (!loaded) return loaded.error();
+  ExportReport report;
+  report.out = r.out;
+  report.model_path = loaded->pick.path;
+  report.model_note = loaded->pick.note;
+  report.betas_note = inputs.betas_note;
+  Result<Asset> asset = buildJob(r, inputs, &*loaded, &report);
+  if (!asset) return asset.error();
+  // The baked clips hold all the writer needs: the decoded frames are freed
+  // first, so a long clip peaks in the bake or in the write, not in both.
+  for (Motion& m : loaded->motions) releaseFrames(&m);
+  const BodyModel& model = *loaded->pick.model;
+  report.skin_fitted = asset->mesh.joints.cols() > 0;  // no skin for a skeleton-only writer
+  if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
+  if (report.skin_fitted && asset->placement.root_bone)  // model joint k is file joint k + 1
+    report.skin.joints = (report.skin.joints.array() - 1).cwiseMax(0).matrix();
+  // The refit is in the morph targets already; only the measurement reads it.
+  const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
+  if (!measure) asset->corrective_refit = CorrectiveRefit();
+  returnFreedHeap();
+  Result<size_t> bytes = writeJob(r, *asset, *writer);
+  if (!bytes) return bytes.error();
+  if (measure) {  // after the write, without the clips: a long clip's tracks are gone first
+    asset->animations.clear();
+    returnFreedHeap();
+    Result<PruningError> err = measurePruningError(model, report.options, r.skin_error_poses,
+                                                   &report.skin, &asset->corrective_refit);
+    if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());
+    report.skin_error = *err;
+    report.skin_error_measured = true;
+  }
+  report.bytes = *bytes;
+  report.placement = asset->placement;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.vertices = static_cast<int>(asset->mesh.positions.rows());
+  report.joints = static_cast<int>(asset->skeleton.names.size());
+  report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
+  report.max_influences = asset->metadata.max_influences;
+  return report;
+}
+
+}  // namespace
+
+Status beginRun(const ExportRequest& r) {
+  if (Status st = checkRequest(r); !st) return usage(st.message());
+  setMemoryLimit(r.memory_limit);
+  return Status();
+}
+
+Result<RunInputs> loadRunInputs(const ExportRequest& r, ModelSource* models) {
+  Stage stage;
+  return guarded<RunInputs>(&stage, [&]() -> Result<RunInputs> {
+    RunInputs inputs;
+    inputs.betas = r.betas;
+    inputs.betas_given = !r.betas.empty() || !r.betas_file.empty();
+    if (!r.betas_file.empty()) {
+      stage.set("loading", r.betas_file, ErrorKind::Load);
+      std::string note;  // per-frame (T,B) betas that differ: their mean, with a note
+      Result<std::vector<double>> betas = readBetasFile(r.betas_file, &note);
+      if (!betas) return fail(ErrorKind::Load, "loading", r.betas_file, betas.message());
+      inputs.betas = *betas;
+      if (!note.empty()) inputs.betas_note = printable(r.betas_file) + ": " + note;
+    }
+    stage.set("loading", r.model, ErrorKind::Load);
+    if (!models->isFolder()) {  // one model for the whole run: loaded before any motion
+      Result<ModelPick> one = models->forMotion(nullptr);
+      if (!one) return fail(ErrorKind::Load, "loading", r.model, one.message());
+    }
+    return inputs;
+  });
+}
+
+Result<ExportReport> runExportJob(const ExportRequest& r, const RunInputs& inputs,
+                                  ModelSource* models) {
+  Stage stage;
+  stage.set("exporting", r.out, ErrorKind::Export);
+  return guarded<ExportReport>(&stage, [&] { return runJob(r, inputs, models, &stage); });
+}
+
+// What can be known before the first track is written: no two tracks share
+// an output (names from safeNameComponent are distinct, so only a hash
+// collision of two long ids could), and every file name of every track fits
+// NAME_MAX (a long --out stem), so a run never fails at track 5 after
+// committing tracks 1-4.
+Status checkTrackOutputs(const std::string& motion, const std::vector<Motion>& tracks,
+                         const std::vector<std::string>& outs, const RunPaths& paths) {
+  std::unordered_map<std::string, size_t> first;
+  for (size_t i = 0; i < outs.size(); ++i) {
+    const auto [at, fresh] = first.emplace(outs[i], i);
+    if (!fresh)
+      return fail(ErrorKind::Load, "loading", motion,
+                  "tracks '" + printable(tracks[at->second].track, 64) + "' and '" +
+                      printable(tracks[i].track, 64) + "' would both be written to " +
+                      printable(outs[i]));
+  }
+  constexpr size_t kNameMax = 255;  // NAME_MAX; the atomic writer refuses longer names too
+  for (const std::string& path : paths.outputs)
+    if (baseName(path).size() > kNameMax)
+      return fail(ErrorKind::Write, "saving", path, "cannot create: File name too long");
+  return Status();
+}
+
+Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelSource* models) {
+  if (Status st = beginRun(r); !st) return st.error();
+  Stage stage;
+  stage.set("loading", r.motions.front(), ErrorKind::Load);
+  Result<std::vector<Motion>> tracks =
+      guarded<std::vector<Motion>>(&stage, [&]() -> Result<std::vector<Motion>> {
+        Result<MotionSet> set = decodeMotionSet(r.motions.front(), r);
+        if (!set) return fail(ErrorKind::Load, "loading", r.motions.front(), set.message());
+        Result<std::vector<Motion>> all = selectTracks(std::move(*set), r.track, r.motions.front());
+        if (!all) return fail(ErrorKind::Load, "loading", r.motions.front(), all.message());
+        return all;
+      });
+  if (!tracks) return tracks.error();
+  std::vector<std::string> outs;  // known now, guarded before anything is written
+  for (const Motion& m : *tracks)
+    outs.push_back(tracks->size() == 1 ? r.out : trackOutput(r.out, m.track));
+  const RunPaths paths = runPaths(r, outs, r.motions);
+  if (Status st = checkTrackOutputs(r.motions.front(), *tracks, outs, paths); !st)
+    return st.error();
+  if (Status st = checkRunPaths(paths); !st) return usage(st.message());
+  Result<RunInputs> inputs = loadRunInputs(r, models);
+  if (!inputs) return inputs.error();
+  std::vector<ExportReport> reports;
+  for (size_t i = 0; i < tracks->size(); ++i) {
+    ExportRequest job = r;
+    job.out = outs[i];
+    stage.set("exporting", job.out, ErrorKind::Export);
+    Result<ExportReport> one = guarded<ExportReport>(
+        &stage, [&] { return runJob(job, *inputs, models, &stage, &(*tracks)[i]); });
+    if (!one) return one.error();
+    reports.push_back(std::move(*one));
+  }
+  return reports;
+}
+
+Result<ExportReport> runExportRequest(const ExportRequest& r, ModelSource* models) {
+  if (Status st = beginRun(r); !st) return st.error();
+  // Before any work: no output may be an input, a directory or a device.
+  if (Status st = checkRunPaths(runPaths(r, {r.out}, r.motions)); !st) return usage(st.message());
+  Result<RunInputs> inputs = loadRunInputs(r, models);
+  if (!inputs) return inputs.error();
+  return runExportJob(r, *inputs, models);
+}
+
+}  // namespace smpl

@@ -1,0 +1,101 @@
+// Shared pieces of the Asset -> FBX node tree builder (fbx_scene*.cpp):
+// object ids, Properties70 helpers, and the context the object builders
+// fill. Not a public interface.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "exporter/asset.h"
+#include "writers/fbx/fbx_encoder.h"
+#include "writers/writer.h"
+
+namespace smpl {
+namespace fbx {
+
+// FBX time unit: ticks per second.
+constexpr int64_t kKTimePerSecond = 46186158000LL;
+
+int64_t secondsToKTime(double seconds);
+
+// Object ids derived from stable keys ("joint/3", "shape/12"), so the same
+// asset always gets the same ids, independent of build order elsewhere.
+class IdTable {
+ public:
+  int64_t id(const std::string& key);
+
+ private:
+  std::map<std::string, int64_t> by_key_;
+  std::set<int64_t> used_;
+};
+
+// Binary FBX object names are "name\x00\x01Class".
+std::string nameClass(const std::string& name, const char* cls);
+
+// Properties70 "P" records: name, type, label, flags, values.
+FbxNode& addP(FbxNode& p70, const std::string& name, const char* type, const char* label,
+              const char* flags);
+void pInt(FbxNode& p70, const std::string& name, int32_t v);
+void pEnum(FbxNode& p70, const std::string& name, int32_t v);
+void pDouble(FbxNode& p70, const std::string& name, double v);
+void pNumber(FbxNode& p70, const std::string& name, double v, bool animatable);
+void pTime(FbxNode& p70, const std::string& name, int64_t ktime);
+void pString(FbxNode& p70, const std::string& name, const std::string& v);
+void pColor(FbxNode& p70, const std::string& name, double r, double g, double b);
+// Vector-valued property with an explicit type ("Lcl Translation", "Vector3D").
+void pVector(FbxNode& p70, const std::string& name, const char* type, const char* label,
+             const char* flags, double x, double y, double z);
+
+// The body of a Model object (the mesh's and each joint's): Version, the
+// Properties70 (Lcl Translation x y z, no rotation, unit scale, attribute 0,
+// InheritType 1) and the display flags.
+void addModelBody(FbxNode& model, double x, double y, double z);
+
+// 4x4 column-major matrix (FBX order: translation in elements 12..14).
+std::vector<double> translationMatrix(double x, double y, double z);
+
+struct SceneContext {
+  const Asset& asset;
+  const WriterOptions& options;
+  double scale = 1.0;  // model metres -> file units
+  IdTable ids;
+  FbxNode objects{"Objects"};
+  FbxNode connections{"Connections"};
+  std::vector<std::pair<std::string, int>> type_counts;  // Definitions, first-use order
+
+  int64_t mesh_model = 0;
+  int64_t mesh_geometry = 0;
+  std::vector<int64_t> joint_models;
+  std::vector<int64_t> blend_channels;  // one per morph target
+
+  SceneContext(const Asset& a, const WriterOptions& o) : asset(a), options(o) {}
+
+  // Adds an object node under Objects and counts it for Definitions.
+  FbxNode& addObject(const char* node_type, int64_t id, const std::string& name, const char* cls,
+                     const char* subclass);
+  void connectOO(int64_t child, int64_t parent);
+  void connectOP(int64_t child, int64_t parent, const std::string& property);
+};
+
+// Checks sizes and index ranges of the asset and the options (fbx_validate.cpp).
+Status validateInput(const Asset& asset, const WriterOptions& options);
+
+// Object builders, each one job (fbx_geometry.cpp, fbx_skeleton.cpp,
+// fbx_morphs.cpp, fbx_animation.cpp).
+void buildMeshObjects(SceneContext& ctx);
+void buildSkeletonObjects(SceneContext& ctx);
+void buildSkinObjects(SceneContext& ctx);
+void buildMorphObjects(SceneContext& ctx);
+void buildAnimationObjects(SceneContext& ctx);
+
+// Quaternions -> Euler XYZ degrees (R = Rz * Ry * Rx, FBX eEulerXYZ), with
+// each frame's angles chosen closest to the previous frame's so curves do
+// not jump by 360 or flip between equivalent solutions.
+std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const RotationTrack& q);
+
+}  // namespace fbx
+}  // namespace smpl

@@ -1,0 +1,30 @@
+#include "writers/fbx/fbx_writer.h"
+
+#include "writers/fbx/fbx_encoder.h"
+#include "writers/fbx/fbx_scene.h"
+
+namespace smpl {
+namespace {
+
+class FbxWriter : public Writer {
+ public:
+  const char* name() const override { return "fbx"; }
+
+  Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
+    Result<std::vector<FbxNode>> scene = buildFbxScene(asset, options);
+    if (!scene) return scene.error();
+    FbxEncodeOptions encode;
+    encode.compress_level = options.fbx_compress_level;
+    encode.threads = options.threads;
+    return encodeFbx(std::move(*scene), static_cast<uint32_t>(options.fbx_version), encode);
+  }
+};
+
+}  // namespace
+
+const Writer& fbxWriter() {
+  static const FbxWriter writer;
+  return writer;
+}
+
+}  // namespace smpl
