@@ -6,23 +6,20 @@
 #include <cstdio>
 
 namespace smpl {
-namespace {
 
-std::string number(double v) {
+std::string boundText(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.6g", v);
   return text;
 }
-
-}  // namespace
 
 Status checkCoefficients(const std::vector<double>& values, const std::string& context,
                          const std::string& what) {
   for (size_t i = 0; i < values.size(); ++i)
     if (!std::isfinite(values[i]) || std::abs(values[i]) > kMaxCoefficient)
       return makeError(context + ": " + what + "[" + std::to_string(i) + "] is " +
-                       number(values[i]) + "; expected a finite value with magnitude at most " +
-                       number(kMaxCoefficient));
+                       boundText(values[i]) + "; expected a finite value with magnitude at most " +
+                       boundText(kMaxCoefficient));
   return Status();
 }
 
@@ -36,7 +33,7 @@ Status checkFloatRange(const Array& a, const std::string& context, const std::st
       return makeError(context + ": '" + key + "' contains NaN or infinite values");
     if (std::abs(v) > FLT_MAX)
       return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " +
-                       number(v) + ", beyond the float32 range the output is written in");
+                       boundText(v) + ", beyond the float32 range the output is written in");
   }
   return Status();
 }
@@ -46,15 +43,16 @@ Status checkIndices(const Array& a, const std::string& context, const std::strin
     const double v = a.data[i];
     if (!(v >= 0 && v < 2147483648.0) || v != std::floor(v))
       return makeError(context + ": '" + key + "' element " + std::to_string(i) + " is " +
-                       number(v) + "; expected a non-negative integer index");
+                       boundText(v) + "; expected a non-negative integer index");
   }
   return Status();
 }
 
 Status checkFrameRate(double fps, const std::string& context, const std::string& key) {
   if (!(fps >= kMinFrameRate && fps <= kMaxFrameRate))
-    return makeError(context + ": " + key + " is " + number(fps) + " frames per second; expected " +
-                     number(kMinFrameRate) + " to " + number(kMaxFrameRate));
+    return makeError(context + ": " + key + " is " + boundText(fps) +
+                     " frames per second; expected " + boundText(kMinFrameRate) + " to " +
+                     boundText(kMaxFrameRate));
   return Status();
 }
 
@@ -63,8 +61,8 @@ Status checkTexCoords(const double* values, size_t count, const std::string& con
   for (size_t i = 0; i < count; ++i)
     if (!(std::abs(values[i]) <= kMaxTexCoord))
       return makeError(context + ": " + key + " element " + std::to_string(i) + " is " +
-                       number(values[i]) + "; expected finite texture coordinates within " +
-                       number(kMaxTexCoord));
+                       boundText(values[i]) + "; expected finite texture coordinates within " +
+                       boundText(kMaxTexCoord));
   return Status();
 }
 
@@ -72,8 +70,8 @@ Status checkDmplBasisValues(const Array& eigvec, const std::string& context) {
   for (size_t i = 0; i < eigvec.data.size(); ++i) {
     const double v = eigvec.data[i];
     if (!(std::abs(v) <= kMaxDmplDisplacement))
-      return makeError(context + ": 'eigvec' element " + std::to_string(i) + " is " + number(v) +
-                       "; expected finite values within " + number(kMaxDmplDisplacement) +
+      return makeError(context + ": 'eigvec' element " + std::to_string(i) + " is " + boundText(v) +
+                       "; expected finite values within " + boundText(kMaxDmplDisplacement) +
                        " m per unit coefficient");
   }
   return Status();
@@ -84,9 +82,9 @@ Status checkDmplValues(const Eigen::MatrixXd& dmpls, const std::string& context)
     for (Eigen::Index d = 0; d < dmpls.cols(); ++d)
       if (!(std::abs(dmpls(t, d)) <= kMaxCoefficient))
         return makeError(context + ": 'dmpls' frame " + std::to_string(t) + " column " +
-                         std::to_string(d) + " is " + number(dmpls(t, d)) +
+                         std::to_string(d) + " is " + boundText(dmpls(t, d)) +
                          "; expected a finite value with magnitude at most " +
-                         number(kMaxCoefficient));
+                         boundText(kMaxCoefficient));
   return Status();
 }
 

@@ -51,6 +51,9 @@ constexpr double kRotationTolerance = 1e-3;  // Frobenius norm of R^T R - I
 constexpr double kMaxTexCoord = 1e3;
 constexpr double kMaxDmplDisplacement = 10.0;  // metres per unit DMPL coefficient
 
+// A value as the range errors print it (printf "%.6g": "1e+300", "-0.5").
+std::string boundText(double v);
+
 // Betas or expression coefficients; `what` names them in errors ("'betas'").
 Status checkCoefficients(const std::vector<double>& values, const std::string& context,
                          const std::string& what);

@@ -12,12 +12,6 @@
 namespace smpl {
 namespace {
 
-std::string number(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", v);
-  return text;
-}
-
 // Nearest rotation to `r`, or an error naming frame and joint.
 Status checkRotation(Eigen::Matrix3d* r, const Motion& m, size_t frame, size_t joint,
                      const std::string& path) {
@@ -32,10 +26,10 @@ Status checkRotation(Eigen::Matrix3d* r, const Motion& m, size_t frame, size_t j
   }
   const std::vector<std::string>& names = canonicalJointNames(m.layout);
   const std::string name = joint < names.size() ? " (" + names[joint] + ")" : "";
-  return makeError(
-      path + ": 'poses' frame " + std::to_string(frame) + " joint " + std::to_string(joint) + name +
-      " is not a rotation matrix: ||R^T R - I|| = " + number(error) + ", det = " + number(det) +
-      "; expected orthonormal with det +1 within " + number(kRotationTolerance));
+  return makeError(path + ": 'poses' frame " + std::to_string(frame) + " joint " +
+                   std::to_string(joint) + name + " is not a rotation matrix: ||R^T R - I|| = " +
+                   boundText(error) + ", det = " + boundText(det) +
+                   "; expected orthonormal with det +1 within " + boundText(kRotationTolerance));
 }
 
 // The per-frame frame change (Motion::world_rotation/_translation): one per
@@ -52,7 +46,7 @@ Status checkFrameChange(Motion* m, const std::string& path) {
     const double error = (r.transpose() * r - Eigen::Matrix3d::Identity()).norm();
     if (!(error <= kRotationTolerance) || !(r.determinant() > 0))
       return makeError(path + ": the frame rotation of frame " + std::to_string(f) +
-                       " is not a rotation matrix (||R^T R - I|| = " + number(error) + ")");
+                       " is not a rotation matrix (||R^T R - I|| = " + boundText(error) + ")");
     if (error > 1e-12) {
       Eigen::JacobiSVD<Eigen::Matrix3d> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
       r = svd.matrixU() * svd.matrixV().transpose();
@@ -60,16 +54,17 @@ Status checkFrameChange(Motion* m, const std::string& path) {
     for (int c = 0; c < 3; ++c)
       if (!(std::abs(m->world_translation[f][c]) <= kMaxTranslation))
         return makeError(path + ": the frame translation of frame " + std::to_string(f) + " is " +
-                         number(m->world_translation[f][c]) + " m; expected finite values within " +
-                         number(kMaxTranslation) + " m");
+                         boundText(m->world_translation[f][c]) +
+                         " m; expected finite values within " + boundText(kMaxTranslation) + " m");
   }
   if (m->expression.rows() > 0 && static_cast<size_t>(m->expression.rows()) != t)
     return makeError(path + ": " + std::to_string(m->expression.rows()) +
                      " rows of expression coefficients for " + std::to_string(t) + " frames");
   for (Eigen::Index i = 0; i < m->expression.size(); ++i)
     if (!(std::abs(m->expression.data()[i]) <= kMaxCoefficient))
-      return makeError(path + ": an expression coefficient is " + number(m->expression.data()[i]) +
-                       "; expected finite values within " + number(kMaxCoefficient));
+      return makeError(path + ": an expression coefficient is " +
+                       boundText(m->expression.data()[i]) + "; expected finite values within " +
+                       boundText(kMaxCoefficient));
   return Status();
 }
 
@@ -82,8 +77,8 @@ Status checkMotionValues(Motion* m, const std::string& path) {
     for (int c = 0; c < 3; ++c)
       if (!(std::abs(m->translation[f][c]) <= kMaxTranslation))
         return makeError(path + ": 'trans' frame " + std::to_string(f) + " is " +
-                         number(m->translation[f][c]) + " m; expected finite values within " +
-                         number(kMaxTranslation) + " m");
+                         boundText(m->translation[f][c]) + " m; expected finite values within " +
+                         boundText(kMaxTranslation) + " m");
   for (size_t f = 0; f < m->frames.size(); ++f)
     for (size_t j = 0; j < m->frames[f].size(); ++j)
       if (Status st = checkRotation(&m->frames[f][j], *m, f, j, path); !st) return st;

@@ -175,16 +175,26 @@ NewFile& NewFile::operator=(NewFile&& other) noexcept {
 
 NewFile::~NewFile() { close(); }
 
-NewFile::Created NewFile::create(const std::string& path) {
-  close();
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+namespace {
+
+// O_EXCL | O_NOFOLLOW relative to `dir` (AT_FDCWD: the working folder).
+NewFile::Created createAt(int dir, const std::string& name, intptr_t* handle) {
+  const int fd =
+      ::openat(dir, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd < 0) {
     t_error = errno;
-    return errno == EEXIST ? Created::Exists : Created::Failed;
+    return errno == EEXIST ? NewFile::Created::Exists : NewFile::Created::Failed;
   }
   flockRetry(fd, LOCK_EX | LOCK_NB);  // a new inode: nobody else can hold it
-  handle_ = fd;
-  return Created::Yes;
+  *handle = fd;
+  return NewFile::Created::Yes;
+}
+
+}  // namespace
+
+NewFile::Created NewFile::create(const std::string& path) {
+  close();
+  return createAt(AT_FDCWD, path, &handle_);
 }
 
 bool NewFile::writeAll(const void* data, size_t size) {
@@ -208,15 +218,7 @@ void NewFile::close() {
 
 NewFile::Created NewFile::create(const Folder& dir, const std::string& name) {
   close();
-  const int fd = ::openat(static_cast<int>(dir.handle()), name.c_str(),
-                          O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-  if (fd < 0) {
-    t_error = errno;
-    return errno == EEXIST ? Created::Exists : Created::Failed;
-  }
-  flockRetry(fd, LOCK_EX | LOCK_NB);  // a new inode: nobody else can hold it
-  handle_ = fd;
-  return Created::Yes;
+  return createAt(static_cast<int>(dir.handle()), name, &handle_);
 }
 
 // ---- Folder
