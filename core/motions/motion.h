@@ -22,6 +22,7 @@
 #include "core/body_model.h"
 #include "core/math/forward.h"
 #include "core/memory_budget.h"
+#include "core/motions/scene_camera.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -115,6 +116,7 @@ struct MotionOptions {
 struct MotionSet {
   std::vector<Motion> tracks;
   std::vector<std::string> notes;
+  SceneCamera camera;  // the camera the tracks were seen from, when the file has one
 };
 
 // Every track of the file at `path` (which names it in errors), each named
