@@ -7,8 +7,10 @@
 #include "core/io/file_io.h"
 #include "core/io/mapped_file.h"
 #include "core/io/pickle/pickle.h"
+#include "core/io/tree/data_tree.h"
 #include "core/joint_names.h"
 #include "core/models/npz_arrays.h"
+#include "core/models/other_models.h"
 #include "core/models/validate_inputs.h"
 
 namespace smpl {
@@ -247,15 +249,36 @@ const std::vector<std::string>& modelKeys() {
   return keys;
 }
 
+namespace {
+
+// An .npy given as a model: SUPR's released models are np.save'd dicts, so
+// one with SUPR's arrays is named; any other keeps `refused` (the format error).
+Error npyModelError(const std::string& path, const Error& refused) {
+  Result<FileFormat> sniffed = checkInputFile(path, kNpyInput);
+  if (!sniffed || *sniffed != FileFormat::Npy) return refused;
+  Result<DataNode> tree = readDataTree(path);
+  if (!tree || !tree->isDict()) return refused;
+  ArrayDict arrays;
+  for (size_t i = 0; i < tree->keys.size(); ++i)
+    if (tree->children[i].kind == DataNode::Kind::Array)
+      arrays[tree->keys[i]] = tree->children[i].array;
+  if (Status s = refuseOtherModel(tree->keys, arrays, path); !s) return s.error();
+  return refused;
+}
+
+}  // namespace
+
 Result<BodyModel> loadModel(const std::string& path) {
   // From the first bytes and the size, before anything is read whole: a
   // model is an .npz or a pickle in a regular file (no pipes: both readers
   // map it), so /dev/stdin or a 3 GB sparse file is refused at once.
   Result<FileFormat> format = checkInputFile(path, kModelInput);
-  if (!format) return format.error();
+  if (!format) return npyModelError(path, format.error());
   Result<ArrayDict> arrays = makeError(path + ": not a model file");
+  std::vector<std::string> keys;
   if (*format == FileFormat::Zip) {
     arrays = readNpzArrays(path, modelKeys(), path);  // lazy: only the model's keys are read
+    if (Result<std::vector<std::string>> names = containerKeys(path)) keys = *names;
   } else {
     Result<MappedFile> bytes = MappedFile::open(path);  // no copy of the file
     if (!bytes) return bytes.error();
@@ -263,6 +286,9 @@ Result<BodyModel> loadModel(const std::string& path) {
     if (Status st = bytes->intact(); !st) return st.error();  // the file shrank while read
   }
   if (!arrays) return arrays.error();
+  if (keys.empty())
+    for (const auto& [key, array] : *arrays) keys.push_back(key);
+  if (Status s = refuseOtherModel(keys, *arrays, path); !s) return s.error();
   return buildModel(*arrays, path);
 }
 

@@ -39,11 +39,21 @@ Result<Array> joinSplitPoses(const DataNode& d, const std::string& path) {
   return joined;
 }
 
+// SKEL's pose vector (MarilynKeller/SKEL skel/skel_model.py: num_q_params = 46);
+// no SMPL-family layout has 46 values per frame.
+constexpr int64_t kSkelPoseParameters = 46;
+
 // poses -> per-frame rotations; accepts (T,3J), (T,J,3) and (T,J,3,3).
 Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
   const auto& s = poses.shape;
   const bool matrices = s.size() == 4 && s[2] == 3 && s[3] == 3;
   const bool triples = (s.size() == 2 && s[1] % 3 == 0) || (s.size() == 3 && s[2] == 3);
+  if (s.size() == 2 && s[1] == kSkelPoseParameters)
+    return makeError(path + ": 'poses' has shape " + shapeString(s) +
+                     ": SKEL pose parameters (46 anatomical degrees of freedom, as HSMR and SKEL's "
+                     "aligner write them), not SMPL axis-angle; this version exports SMPL-family "
+                     "motions: export the SMPL parameters of the motion (docs/motions.md \"Models "
+                     "that are not SMPL\")");
   if (!matrices && !triples)
     return makeError(path + ": 'poses' has shape " + shapeString(s) +
                      "; expected (T,3J), (T,J,3) or (T,J,3,3)");

@@ -3,10 +3,9 @@
 // (the same world as the tracks' translations, before any --up turn).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace smpl {
 

@@ -84,6 +84,11 @@ def export(exe, model, motion, out, args):
     return cmd, subprocess.run(cmd, capture_output=True, text=True)
 
 
+def model_path(model, fixtures):
+    """A case's model: a fixture model's name ("smpl_small"), or a path under the fixtures."""
+    return os.path.join(fixtures, model) if "/" in model else os.path.join(fixtures, "models", model + ".npz")
+
+
 def check_refusal(case, run, work):
     want = case["refusal"]
     problems = []
@@ -139,11 +144,31 @@ def check_source(case, path, sfx):
     return ["motion_source.%s is %r, expected %r" % (k, got.get(k), v) for k, v in want.items() if got.get(k) != v]
 
 
+WRONG_READING_MIN = 1e-3  # metres: a plausible wrong reading must be at least this far from the export
+
+
+def check_wrong_readings(mod, case, a, path, sfx):
+    """Sensitivity: for each of the case's `wrong` variants (a plausible wrong reading of the file,
+    computed by the case module's reference with case["variant"] set), the export must be at least
+    WRONG_READING_MIN away, or the comparison could not tell the right reading from that one."""
+    problems = []
+    for variant in case.get("wrong", []):
+        refs = mod.expected(dict(case, variant=variant), a.fixtures)
+        ref = refs if sfx is None else refs[sfx]
+        ref_path = path + ".wrong.json"
+        with open(ref_path, "w", encoding="utf-8") as fh:
+            json.dump(ref, fh)
+        err, _ = node_compare(a.web_src, path, ref_path)
+        if not err >= WRONG_READING_MIN:
+            problems.append("the wrong reading %r is %.3e m from the export (< %.0e m)" % (variant, err, WRONG_READING_MIN))
+    return problems
+
+
 def run_case(mod, case, a, work):
     """(worst error, [problems])."""
     for p in leftovers(work, case["name"]):
         os.remove(p) if os.path.isfile(p) else shutil.rmtree(p)
-    model = os.path.join(a.fixtures, "models", case["model"] + ".npz")
+    model = model_path(case["model"], a.fixtures)
     motion = os.path.join(a.fixtures, case["fixture"])
     outs = outputs_of(case, work)
     cmd, run = export(a.exe, model, motion, os.path.join(work, case["name"] + ".glb"), case["args"])
@@ -169,6 +194,7 @@ def run_case(mod, case, a, work):
         worst = max(worst, err) if err == err else err
         if problem:
             problems.append("%s: %s" % (os.path.basename(path), problem))
+        problems += check_wrong_readings(mod, case, a, path, sfx)
         for pattern, value in ref.get("numbers", {}).items():  # a note's number, printed with 3 decimals
             found = re.search(pattern, run.stderr)
             if not found:
@@ -186,7 +212,7 @@ def run_equivalent(mod, case, a, work):
         return run_written_equivalent(mod, case, a, work)
     if isinstance(eq, str):
         return None, eq
-    model = os.path.join(a.fixtures, "models", case["model"] + ".npz")
+    model = model_path(case["model"], a.fixtures)
     refs = mod.expected(case, a.fixtures)
     worst, problems = 0.0, []
     for sfx, arrays in eq:
@@ -215,7 +241,7 @@ def run_written_equivalent(mod, case, a, work):
     worst, problems = 0.0, []
     for e in entries:
         sfx = e["suffix"] or None
-        model = os.path.join(a.fixtures, "models", e["model"] + ".npz")
+        model = model_path(e["model"], a.fixtures)
         out = e["motion"][:-4] + ".glb"
         cmd, run = export(a.exe, model, e["motion"], out, e["args"] + ["--quiet"])
         if run.returncode != 0:

@@ -48,10 +48,12 @@ EXPRESSION_COST = (r"the expression is baked with the betas-only skeleton \(fixe
                    r"math, where the joints follow the expression, this costs up to ([0-9.]+) mm")
 
 
-def case(name, fixture, model, frames, notes=(), args=(), outputs=None, absent=(), source=None, refusal=None):
+def case(name, fixture, model, frames, notes=(), args=(), outputs=None, absent=(), source=None, refusal=None,
+         wrong=()):
+    """`wrong`: plausible wrong readings (clips() variants) the export must be >= 1 mm from."""
     return {"name": name, "fixture": fixture, "model": model, "args": list(args), "outputs": outputs,
             "frames": list(frames), "notes": list(notes), "absent": list(absent), "source": source,
-            "refusal": refusal}
+            "refusal": refusal, "wrong": list(wrong)}
 
 
 def refused(name, fixture, model, message, args=()):
@@ -101,9 +103,18 @@ CASES = [
     # GVHMR with fingers merged in as Mano2Smpl-X does: absolute finger rotations, not hands_mean.
     case("gvhmr_hands", V + "gvhmr_hands/hmr4d_results.pt", "smplx_small", [0, 11, 23],
          ["read as GVHMR output", "hands from 'left_hand_pose' and 'right_hand_pose'", "flat_hand_mean=True"],
-         absent=["hands at the model's hands_mean"]),
+         absent=["hands at the model's hands_mean"], wrong=["hands ignored"]),
     case("gvhmr_hands_incam", V + "gvhmr_hands/hmr4d_results.pt", "smplx_small", [0, 11, 23],
          ["camera frame", "hands from 'left_hand_pose'"], args=["--source-params", "incam"]),
+    # MHR's converter output for SAM 3D Body (docs/motions.md "SAM 3D Body"): SMPL-X parameters of a
+    # flat_hand_mean=True model, identical float32 betas rows, exported with --flat-hand-mean.
+    case("mhr_smplx_npz", V + "mhr_smplx/smplx_params.npz", "smplx_small", [0, 2, 5], ["assumed 30 fps"],
+         args=["--flat-hand-mean"], absent=["different rows", "their mean"], wrong=["hands_mean added"]),
+    case("mhr_smplx_pt", V + "mhr_smplx/smplx_params.pt", "smplx_small", [0, 2, 5], ["assumed 30 fps"],
+         args=["--flat-hand-mean"], absent=["different rows", "their mean"], wrong=["hands_mean added"]),
+    # Without the flag the hands are read as smplx's default model does: hands_mean added.
+    case("mhr_smplx_default_mean", V + "mhr_smplx/smplx_params.npz", "smplx_small", [0, 2, 5],
+         wrong=["flat hands"]),
     # Today's reading of GVHMR's global parameters flattened into an npz (an SMPL-X fit: hands at rest).
     case("gvhmr_flat_today", V + "gvhmr/gvhmr_flat.npz", "smplx_small", [0, 11, 23],
          ["assumed 30 fps", "their mean"]),
@@ -156,6 +167,13 @@ CASES = [
             "'smpl_params_global/left_hand_pose' is of shape (24,44)"),
     refused("sam3d_npz", V + "sam3d/person0.npz", "smplx_small", "MHR parameters (SAM 3D Body), not SMPL"),
     refused("sam3d_list_pkl", V + "sam3d/outputs.pkl", "smplx_small", "tools/mhr_smpl_conversion"),
+    # Models that are not SMPL-family, named (the model given as a fixture path).
+    refused("star_model", V + "wham/wham_output.pkl", V + "not_smpl/STAR_NEUTRAL.npz", "a STAR model file"),
+    refused("supr_model_npy", V + "wham/wham_output.pkl", V + "not_smpl/supr_male.npy", "a SUPR model file"),
+    refused("supr_model_npz", V + "wham/wham_output.pkl", V + "not_smpl/supr_unconstrained.npz",
+            "a SUPR model file"),
+    refused("skel_model", V + "wham/wham_output.pkl", V + "not_smpl/skel_male.pkl", "a SKEL model file"),
+    refused("hsmr_poses", V + "not_smpl/HSMR-walk.npz", "smpl_small", "SKEL pose parameters"),
     refused("vibe_no_world", V + "vibe/vibe_output.pkl", "smpl_small", "no world-frame parameters",
             args=["--source-params", "global"]),
 ]
@@ -351,11 +369,29 @@ def gvhmr_clips(case, path, m):
     # Hands merged by Mano2Smpl-X (VincentHu19/Mano2Smpl-X mano2smplx.py; README: "set flat_hand_mean=True
     # in SMPLX"): left_hand_pose / right_hand_pose are the finger rotations themselves, no mean added.
     n = len(p["body_pose"])
-    left = p["left_hand_pose"] if "left_hand_pose" in p else np.tile(m["hands_meanl"], (n, 1))
-    right = p["right_hand_pose"] if "right_hand_pose" in p else np.tile(m["hands_meanr"], (n, 1))
+    hands = "left_hand_pose" in p and case.get("variant") != "hands ignored"
+    left = p["left_hand_pose"] if hands else np.tile(m["hands_meanl"], (n, 1))
+    right = p["right_hand_pose"] if hands else np.tile(m["hands_meanr"], (n, 1))
     poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], z, z, z, left[i], right[i])
              for i in range(n)]
     return [(None, clip_dict("smplx", poses, p["transl"], p["betas"], fps_of(case, 30), frame_change(case, incam)))]
+
+
+def mhr_smplx_clips(case, path, m):
+    # facebookresearch/MHR tools/mhr_smpl_conversion: result_parameters of an smplx.SMPLX model; its
+    # example.py builds it with flat_hand_mean=True, so the hands are the finger rotations themselves
+    # (--flat-hand-mean); smplx's default model (flat_hand_mean=False) adds hands_mean
+    # (SMPLX.forward: full_pose += self.pose_mean). transl added; identical betas rows; Y up.
+    d = gvhmr_load(path) if path.endswith(".pt") else dict(np.load(path))
+    p = {k: f64(v) for k, v in d.items()}
+    flat = "--flat-hand-mean" in case["args"]
+    if case.get("variant") in ("hands_mean added", "flat hands"):
+        flat = not flat
+    ml, mr = (np.zeros(45), np.zeros(45)) if flat else (m["hands_meanl"], m["hands_meanr"])
+    poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], p["jaw_pose"][i], p["leye_pose"][i],
+                        p["reye_pose"][i], p["left_hand_pose"][i] + ml, p["right_hand_pose"][i] + mr)
+             for i in range(len(p["body_pose"]))]
+    return [(None, clip_dict("smplx", poses, p["transl"], p["betas"], fps_of(case, 30), np.eye(3)))]
 
 
 def gvhmr_flat_clips(case, path, m):
@@ -501,6 +537,8 @@ def clips(case, fixture_dir, m):
         return vibe_clips(case, path)
     if name.startswith("phalp"):
         return phalp_clips(case, path)
+    if name.startswith("mhr_smplx"):
+        return mhr_smplx_clips(case, path, m)
     if name.startswith("gvhmr_flat"):
         return gvhmr_flat_clips(case, path, m)
     if name.startswith("gvhmr"):
