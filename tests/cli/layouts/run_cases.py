@@ -175,7 +175,27 @@ def run_case(mod, case, a, work):
                 problems.append("stderr lacks a note matching %r (numpy: %.3f)" % (pattern, value))
             elif abs(float(found.group(1)) - value) > 0.0015:
                 problems.append("note says %s, numpy %.3f: %r" % (found.group(1), value, pattern))
+    problems += check_wrong_readings(mod, case, a, refs)
     return worst, problems
+
+
+WRONG_MIN = 1e-3  # a plausible wrong reading must be at least 1 mm away at every checked frame
+
+
+def check_wrong_readings(mod, case, a, refs):
+    """Each `wrong` reading of the case (video_cases.py wrong_expected) differs from the right
+    reference by >= 1 mm (the largest vertex distance, at every checked frame): so the 1e-6 m match
+    above tells the right reading from it."""
+    problems = []
+    right = refs if case["outputs"] is None else refs[sorted(refs)[0]]
+    for label, change in case.get("wrong", []):
+        wrong = mod.wrong_expected(case, a.fixtures, change)
+        gaps = [float(np.linalg.norm(np.array(r) - np.array(w), axis=1).max())
+                for r, w in zip(right["vertices"], wrong["vertices"])]
+        print("    wrong reading %-40s %.3f mm (smallest over frames)" % (label + ":", 1000 * min(gaps)))
+        if min(gaps) < WRONG_MIN:
+            problems.append("the wrong reading '%s' is only %.3g mm away" % (label, 1000 * min(gaps)))
+    return problems
 
 
 def run_equivalent(mod, case, a, work):
