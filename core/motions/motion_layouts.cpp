@@ -74,7 +74,7 @@ std::vector<std::string> motionFileExtensions() {
   if (containers & kJoblibFile) out.push_back(".joblib");
   if (containers & kTorchFile) out.insert(out.end(), {".pt", ".pth"});
   if (containers & kNpyFile) out.push_back(".npy");
-  if (containers & kJsonFile) out.push_back(".json");
+  if (containers & kJsonFile) out.insert(out.end(), {".json", ".mcs"});  // .mcs: Meshcapade scenes
   return out;
 }
 

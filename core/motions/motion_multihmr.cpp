@@ -44,8 +44,9 @@ Result<const Array*> rows(const DataNode& d, const std::string& path, const char
   const Array* a = find(d, key);
   if (!a) return makeError(path + ": missing key '" + std::string(key) + "'");
   if (Status s = motion_detail::checkNumbers(*a, path, key); !s) return s.error();
-  const bool ok = !a->shape.empty() && a->shape[0] >= 1 && (p < 0 || a->shape[0] == p) &&
-                  (width < 0 ? a->shape.size() == 2 : a->size() == a->shape[0] * width);
+  const bool ok =
+      !a->shape.empty() && (p < 0 || a->shape[0] == p) &&
+      (width < 0 ? a->shape.size() == 2 : a->shape.size() >= 2 && a->size() == a->shape[0] * width);
   if (!ok)
     return makeError(path + ": '" + key + "' has shape " + shapeString(a->shape) + "; expected " +
                      what);
@@ -57,6 +58,12 @@ Status decodeMultiHmr(const DataNode& d, const LayoutInput& in, MotionSet* out) 
       rows(d, in.path, "rotvec", -1, 159, "(P,53,3) axis-angle (root, body, hands, jaw)");
   if (!rotvec) return rotvec.error();
   const int64_t persons = (*rotvec)->shape[0];
+  if (persons == 0) {  // an image without a detection: nothing in a sequence, an error alone
+    if (!in.options.frame_file)
+      return makeError(in.path + ": no person in this image ('rotvec' is empty)");
+    out->notes.push_back("read as Multi-HMR output (images without a person contribute no frame)");
+    return Status();
+  }
   const std::string per = "(" + std::to_string(persons);
   Result<const Array*> pelvis =
       rows(d, in.path, "transl_pelvis", persons, 3, (per + ",1,3) pelvis positions").c_str());

@@ -22,7 +22,8 @@
 // flat_hand_mean=True)): the finger rotations are absolute, put as they are.
 // Every person a track, ids 0..P-1 in row order (Multi-HMR does not track
 // persons across images: a folder read with --motion-sequence joins row p of
-// each image into track p). Camera frame (x right, y down, z forward): --up -y.
+// each image into track p; an image with zero rows adds nothing there, and is
+// refused alone). Camera frame (x right, y down, z forward): --up -y.
 // No rate is stored (one image): 30 fps in a sequence.
 // Detected by content: `rotvec` and `transl_pelvis`.
 #pragma once

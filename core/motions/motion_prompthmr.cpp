@@ -18,7 +18,8 @@ bool isDict(const DataNode* n) { return n && n->isDict(); }
 
 bool matchesPromptHmr(const DataNode& root) {
   const DataNode* people = root.isDict() ? root.get("people") : nullptr;
-  if (!isDict(people) || people->children.empty()) return false;
+  if (!isDict(people)) return false;
+  if (people->children.empty()) return isDict(root.get("camera_world"));  // refused: no person
   for (const DataNode& person : people->children)
     if (!person.isDict() ||
         (!isDict(person.get("smplx_world")) && !isDict(person.get("smplx_cam"))))
@@ -189,6 +190,8 @@ void noteIgnored(const DataNode& root, const DataNode& people, MotionSet* out) {
 
 Status decodePromptHmr(const DataNode& root, const LayoutInput& in, MotionSet* out) {
   const DataNode& people = *root.get("people");
+  if (people.children.empty())
+    return makeError(in.path + ": PromptHMR results with no tracked person ('people' is empty)");
   out->notes.push_back("read as PromptHMR output (people by track id; SMPL-X)");
   bool any_world = false;
   for (size_t i = 0; i < people.children.size(); ++i) {

@@ -35,7 +35,8 @@
 // add_camera_intrinsics: the image is taken as twice the principal point).
 // No rate is stored (the config's fps is not in the file): 30 fps.
 // Detected by content: a dict with a `people` dict whose values are dicts with
-// `smplx_world` or `smplx_cam`.
+// `smplx_world` or `smplx_cam` (an empty `people` beside a `camera_world`:
+// refused, "no tracked person").
 #pragma once
 
 #include "core/motions/motion_layout.h"

@@ -190,8 +190,9 @@ CASES = [
          args=["--track", "0"], source={"layout": "mcs", "track": "0", "frames": [0, 19]}),
     # Multi-HMR: one npz per image, two persons each (rows 0, 1); camera frame; a folder is a sequence.
     case("multihmr_seq", V + "multihmr", "smplx_small", [0, 5, 11],
-         ["read as Multi-HMR output", "12 files joined (frames 0-11)", "track 0 of 2 (source frames 0-11, the longest)",
-          "transl_pelvis", "ignored: transl, scores, loc, dist", "camera frame", "assumed 30 fps", "their mean"],
+         ["read as Multi-HMR output", "track 0 of 2 (source frames 0-11, the longest)",
+          "transl_pelvis", "ignored: transl, scores, loc, dist", "camera frame", "assumed 30 fps", "their mean",
+          "13 files joined (frames 0-12)", "images without a person contribute no frame"],
          source={"layout": "multihmr", "track": "0", "frames": [0, 11]},
          wrong=[("the other person", {"--track": "1"}), ("transl instead of transl_pelvis", {"reading": "transl"}),
                 ("transl_pelvis as the SMPL-X transl", {"reading": "pelvis_as_transl"}),
@@ -217,6 +218,8 @@ CASES = [
             "'rotvec' has shape (2,52,3)"),
     refused("multihmr_inf", V + "multihmr_bad/pelvis_inf.npz", "smplx_small", "'transl_pelvis' contains NaN"),
     refused("multihmr_persons", V + "multihmr_bad/persons.npz", "smplx_small", "'shape' has shape (1,10)"),
+    refused("multihmr_empty", V + "multihmr_bad/empty.npz", "smplx_small", "no person in this image"),
+    refused("prompthmr_empty", V + "prompthmr_bad/results_empty.pkl", "smplx_small", "no tracked person"),
 ]
 
 
