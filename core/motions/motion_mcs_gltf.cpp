@@ -110,6 +110,20 @@ int64_t cameraNode(const DataNode& root) {
   return -1;
 }
 
+// True when a node holding `node` among its children has a transform of its
+// own (the camera's pose would then be relative to it).
+bool parentMoves(const DataNode& root, int64_t node) {
+  const DataNode* nodes = root.get("nodes");
+  for (const DataNode& n : nodes->children) {
+    const Array* kids = n.isDict() ? n.leaf("children") : nullptr;
+    if (!kids || std::find(kids->data.begin(), kids->data.end(), double(node)) == kids->data.end())
+      continue;
+    for (const char* key : {"translation", "rotation", "scale", "matrix"})
+      if (n.get(key)) return true;
+  }
+  return false;
+}
+
 // The sampler index of the channel animating `node`'s `path`, and its animation.
 const DataNode* findChannel(const DataNode& root, int64_t node, const char* path,
                             int64_t* sampler) {
@@ -241,6 +255,10 @@ Result<SceneCamera> readCamera(const DataNode& root, double fps, int64_t num_fra
     return cam;
   }
   const DataNode& n = root.get("nodes")->children[node];
+  if (parentMoves(root, node))
+    notes->push_back(
+        "ignored: the transform of the camera node's parent (the camera's pose is "
+        "read as it stands in the node)");
   const std::string nctx = context + ": " + at("node", node);
   Result<int64_t> which = integer(n, "camera", -1, nctx);
   if (!which) return which.error();

@@ -37,7 +37,8 @@ Result<std::vector<double>> accessorFloats(const DataNode& root, int64_t index, 
 // R_node diag(1,-1,-1) gives the OpenCV axes of SceneCamera (the inverse of
 // PromptHMR's mcs_export_cam.py add_camera_animation: R_node = Rcw^T cv_to_gltf).
 // yfov and aspect from cameras[node.camera].perspective. No camera node: an
-// empty camera. `notes` gets what was assumed.
+// empty camera. `notes` gets what was assumed, and names a transform on the
+// camera node's parent as ignored (PromptHMR's RootNode has none).
 Result<SceneCamera> readCamera(const DataNode& root, double fps, int64_t num_frames,
                                const std::string& context, std::vector<std::string>* notes);
 
