@@ -337,8 +337,8 @@ const std::vector<OptionSpec> kOptions = {
        return s->request.track = *c, Status();
      }},
     {"--source-params", nullptr, "global|incam", Applies::Motion, nullptr,
-     "tools that write world and camera parameters (WHAM, GVHMR, TRAM): which to read (default "
-     "global, the world one)",
+     "tools that write world and camera parameters (WHAM, GVHMR, TRAM, PromptHMR): which to read "
+     "(default global, the world one)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--source-params", {"global", "incam"});
        if (!c) return Status(c.error());

@@ -101,7 +101,8 @@ Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& op
   if (!row) return makeError(path + ": " + unmatchedMessage(file->root));
   MotionSet set;
   if (Status s = row->decode(file->root, LayoutInput{path, options}, &set); !s) return s.error();
-  if (set.tracks.empty()) return makeError(path + ": no motion in the file");
+  // One frame of a --motion-sequence may hold no one (Multi-HMR: an image without a detection).
+  if (set.tracks.empty() && !options.frame_file) return makeError(path + ": no motion in the file");
   for (Motion& m : set.tracks) {
     m.name = stemOf(path);
     if (m.source_layout.empty()) m.source_layout = row->name;  // a decode may name a variant

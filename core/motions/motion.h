@@ -122,7 +122,9 @@ struct MotionSet {
 // Every track of the file at `path` (which names it in errors), each named
 // after the file's stem, its frame rate settled (MotionOptions) and its
 // values checked (validate_inputs.h). Errors: unreadable file, no pose data,
-// an unknown layout, wrong shapes, NaN/Inf; one line naming the file.
+// an unknown layout, wrong shapes, NaN/Inf; one line naming the file. A file
+// with no track is an error, except one frame of a --motion-sequence
+// (options.frame_file: a Multi-HMR image without a person), which may be empty.
 Result<MotionSet> loadMotionSet(const std::string& path,
                                 const MotionOptions& options = MotionOptions());
 

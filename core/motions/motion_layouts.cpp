@@ -12,11 +12,14 @@
 #include "core/motions/motion_gvhmr.h"
 #include "core/motions/motion_hamer.h"
 #include "core/motions/motion_layout.h"
+#include "core/motions/motion_mcs.h"
 #include "core/motions/motion_mdm.h"
 #include "core/motions/motion_mhr.h"
 #include "core/motions/motion_motionx.h"
+#include "core/motions/motion_multihmr.h"
 #include "core/motions/motion_phalp.h"
 #include "core/motions/motion_positions.h"
+#include "core/motions/motion_prompthmr.h"
 #include "core/motions/motion_romp.h"
 #include "core/motions/motion_smplcodec.h"
 #include "core/motions/motion_smplerx.h"
@@ -44,6 +47,9 @@ const std::vector<MotionLayout>& motionLayouts() {
       phalpLayout(),   // per-frame dicts with tid, tracked_time, smpl
       tramLayout(),    // pred_rotmat, pred_trans, frame (.npy of tensors)
       rompLayout(),    // .npz members results + sequence_results (ROMP, BEV)
+      promptHmrLayout(),  // people dicts with smplx_world / smplx_cam (results.pkl)
+      multiHmrLayout(),   // rotvec + transl_pelvis (per-image npz)
+      mcsLayout(),        // glTF JSON with MC_scene_description (.mcs)
       easymocapLayout(),  // a JSON list of persons with Rh, Th, poses
       smplerxLayout(),    // exactly SMPLer-X's ten fit keys, before the fit row
       amassLayout(),      // poses, root_orient
@@ -68,7 +74,7 @@ std::vector<std::string> motionFileExtensions() {
   if (containers & kJoblibFile) out.push_back(".joblib");
   if (containers & kTorchFile) out.insert(out.end(), {".pt", ".pth"});
   if (containers & kNpyFile) out.push_back(".npy");
-  if (containers & kJsonFile) out.push_back(".json");
+  if (containers & kJsonFile) out.insert(out.end(), {".json", ".mcs"});  // .mcs: Meshcapade scenes
   return out;
 }
 

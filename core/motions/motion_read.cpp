@@ -1,11 +1,14 @@
 #include "core/motions/motion_read.h"
 
+#include <fstream>
+
 #include "core/io/file_io.h"
 #include "core/io/npy.h"
 #include "core/io/npz.h"
 #include "core/io/tree/data_tree.h"
 #include "core/io/tree/npz_tree.h"
 #include "core/memory_budget.h"
+#include "core/os/path.h"
 
 namespace smpl {
 namespace {
@@ -82,6 +85,13 @@ Result<MotionFile> readNpz(const std::string& path, bool decode) {
   return file;
 }
 
+// A binary glTF starts with the magic "glTF" (glTF 2.0 spec, "GLB File Format").
+bool isBinaryGltf(const std::string& path) {
+  std::ifstream in(os::fsPath(path), std::ios::binary);
+  char magic[4] = {};
+  return in.read(magic, 4) && std::string(magic, 4) == "glTF";
+}
+
 Result<MotionFile> read(const std::string& path, bool decode) {
   // Size bound of what the first bytes show (core/io/input_kind.h), before the
   // file is mapped and walked: a 3 GB pickle or JSON is refused at once.
@@ -89,6 +99,11 @@ Result<MotionFile> read(const std::string& path, bool decode) {
   Result<Container> container = sniffContainer(path);
   if (!container) return container.error();
   if (*container == Container::Npz) return readNpz(path, decode);
+  if (*container == Container::Unknown && isBinaryGltf(path))
+    return makeError(path +
+                     ": a binary glTF (GLB), an exported scene, not a motion file (a Meshcapade "
+                     "scene is JSON text: read PromptHMR's world4d.mcs, not the world4d.glb "
+                     "smpl_rs exports)");
   if (*container == Container::Unknown)
     return makeError(path +
                      ": not a motion file (none of .npz, pickle, joblib, torch .pt, .npy, JSON)");

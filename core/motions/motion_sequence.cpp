@@ -176,6 +176,9 @@ Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions
       p.motion.track = key;
     }
   }
+  if (people.empty())
+    return makeError(dir + ": no person in any of its " + std::to_string(files->size()) + " files",
+                     ErrorKind::Load);
   MotionSet out;
   out.notes = notes;
   char text[200];

@@ -9,7 +9,8 @@ Each case: name, fixture (relative to FIXTURE_DIR; a folder is given to --motion
 args, outputs (suffixes when --track all writes several files, else None), frames (three
 clip-relative frames), notes (substrings stderr must contain), absent (substrings it must not
 contain), source (what the sidecar's motion_source must say, or None), refusal (None or
-{"exit", "message"}).
+{"exit", "message"}), wrong (plausible wrong readings: (label, {flag: value} args replaced or
+{"reading": name}); run_cases.py checks each is >= 1 mm from the right reference at every frame).
 
 expected(case, fixture_dir) -> {"fps", "frames", "num_vertices", "vertices"} (or {suffix: that}).
 equivalent(case, fixture_dir) -> [(suffix, npz arrays)] in our terms (AMASS-style poses (T,3K) in the
@@ -23,7 +24,9 @@ own translation composed as the tool's body-model call composes it, and (A_t, b_
 change: the camera frame's half turn about x (A = diag(1,-1,-1)), a world-from-camera transform
 (TRAM), EasyMocap's Rh/Th followed by Z-up -> Y-up, or the identity.
 """
+import base64
 import glob
+import io
 import json
 import os
 import pickle
@@ -50,7 +53,7 @@ EXPRESSION_COST = (r"the expression is baked with the betas-only skeleton \(fixe
 
 def case(name, fixture, model, frames, notes=(), args=(), outputs=None, absent=(), source=None, refusal=None,
          wrong=()):
-    """`wrong`: plausible wrong readings (clips() variants) the export must be >= 1 mm from."""
+    """`wrong`: plausible wrong readings [(label, change)] (see wrong_expected); each must be >= 1 mm away."""
     return {"name": name, "fixture": fixture, "model": model, "args": list(args), "outputs": outputs,
             "frames": list(frames), "notes": list(notes), "absent": list(absent), "source": source,
             "refusal": refusal, "wrong": list(wrong)}
@@ -103,18 +106,18 @@ CASES = [
     # GVHMR with fingers merged in as Mano2Smpl-X does: absolute finger rotations, not hands_mean.
     case("gvhmr_hands", V + "gvhmr_hands/hmr4d_results.pt", "smplx_small", [0, 11, 23],
          ["read as GVHMR output", "hands from 'left_hand_pose' and 'right_hand_pose'", "flat_hand_mean=True"],
-         absent=["hands at the model's hands_mean"], wrong=["hands ignored"]),
+         absent=["hands at the model's hands_mean"], wrong=[("hands ignored", {"reading": "no_hands"})]),
     case("gvhmr_hands_incam", V + "gvhmr_hands/hmr4d_results.pt", "smplx_small", [0, 11, 23],
          ["camera frame", "hands from 'left_hand_pose'"], args=["--source-params", "incam"]),
     # MHR's converter output for SAM 3D Body (docs/motions.md "SAM 3D Body"): SMPL-X parameters of a
     # flat_hand_mean=True model, identical float32 betas rows, exported with --flat-hand-mean.
     case("mhr_smplx_npz", V + "mhr_smplx/smplx_params.npz", "smplx_small", [0, 2, 5], ["assumed 30 fps"],
-         args=["--flat-hand-mean"], absent=["different rows", "their mean"], wrong=["hands_mean added"]),
+         args=["--flat-hand-mean"], absent=["different rows", "their mean"], wrong=[("hands_mean added", {"reading": "other_hands_mean"})]),
     case("mhr_smplx_pt", V + "mhr_smplx/smplx_params.pt", "smplx_small", [0, 2, 5], ["assumed 30 fps"],
-         args=["--flat-hand-mean"], absent=["different rows", "their mean"], wrong=["hands_mean added"]),
+         args=["--flat-hand-mean"], absent=["different rows", "their mean"], wrong=[("hands_mean added", {"reading": "other_hands_mean"})]),
     # Without the flag the hands are read as smplx's default model does: hands_mean added.
     case("mhr_smplx_default_mean", V + "mhr_smplx/smplx_params.npz", "smplx_small", [0, 2, 5],
-         wrong=["flat hands"]),
+         wrong=[("flat hands", {"reading": "other_hands_mean"})]),
     # Today's reading of GVHMR's global parameters flattened into an npz (an SMPL-X fit: hands at rest).
     case("gvhmr_flat_today", V + "gvhmr/gvhmr_flat.npz", "smplx_small", [0, 11, 23],
          ["assumed 30 fps", "their mean"]),
@@ -176,6 +179,64 @@ CASES = [
     refused("hsmr_poses", V + "not_smpl/HSMR-walk.npz", "smpl_small", "SKEL pose parameters"),
     refused("vibe_no_world", V + "vibe/vibe_output.pkl", "smpl_small", "no world-frame parameters",
             args=["--source-params", "global"]),
+    # PromptHMR results.pkl: people 1 (frames 0-19), 2 (6-29); SMPL-X with absolute hands; world Y up.
+    case("prompthmr_world", V + "prompthmr/results.pkl", "smplx_small", [0, 9, 19],
+         ["read as PromptHMR output", "track 2 of 2 (source frames 6-29, the longest)", "other tracks: 1 (0-19)",
+          "world frame ('smplx_world'", "absolute finger rotations", "scene camera from 'camera_world'",
+          "ignored: camera,", "smplx_cam/rotmat", "assumed 30 fps"],
+         absent=["camera frame"], source={"layout": "prompthmr", "track": "2", "frames": [6, 29]},
+         wrong=[("the other track", {"--track": "1"}), ("smplx_cam instead of smplx_world",
+                                                        {"--source-params": "incam"}),
+                ("hands ignored", {"reading": "no_hands"})]),
+    case("prompthmr_track1", V + "prompthmr/results.pkl", "smplx_small", [0, 7, 19],
+         ["track 1 of 2 (source frames 0-19)"], args=["--track", "1", "--source-fps", "25"],
+         source={"layout": "prompthmr", "track": "1", "frames": [0, 19]},
+         wrong=[("hands ignored", {"reading": "no_hands"})]),
+    case("prompthmr_incam", V + "prompthmr/results.pkl", "smplx_small", [0, 11, 23],
+         ["camera frame", "no finger joints", "hands stay flat"], args=["--source-params", "incam"],
+         absent=["world frame"], wrong=[("smplx_world", {"--source-params": "global"})]),
+    case("prompthmr_all", V + "prompthmr/results.pkl", "smplx_small", [0, 10, 19], ["track 1 of 2", "track 2 of 2"],
+         args=["--track", "all"], outputs=[".track1.glb", ".track2.glb"]),
+    # PromptHMR world4d.mcs (and the same JSON as world4d.glb): bodies 0 (frames 0-19), 1 (6-29), 25 fps.
+    case("mcs", V + "prompthmr/world4d.mcs", "smplx_small", [0, 12, 19],
+         ["read as a Meshcapade scene", "track 1 of 2 (source frames 6-29, the longest)", "other tracks: 0 (0-19)",
+          "scene camera from node 1 (animated, frames 0-29)"], absent=["assumed"],
+         source={"layout": "mcs", "track": "1", "frames": [6, 29]},
+         wrong=[("the other track", {"--track": "0"})]),
+    case("mcs_glb_copy", V + "prompthmr/world4d.glb", "smplx_small", [0, 9, 19], ["read as a Meshcapade scene"],
+         args=["--track", "0"], source={"layout": "mcs", "track": "0", "frames": [0, 19]}),
+    # Multi-HMR: one npz per image, two persons each (rows 0, 1); camera frame; a folder is a sequence.
+    case("multihmr_seq", V + "multihmr", "smplx_small", [0, 5, 11],
+         ["read as Multi-HMR output", "track 0 of 2 (source frames 0-11, the longest)",
+          "transl_pelvis", "ignored: transl, scores, loc, dist", "camera frame", "assumed 30 fps", "their mean",
+          "13 files joined (frames 0-12)", "images without a person contribute no frame"],
+         source={"layout": "multihmr", "track": "0", "frames": [0, 11]},
+         wrong=[("the other person", {"--track": "1"}), ("transl instead of transl_pelvis", {"reading": "transl"}),
+                ("transl_pelvis as the SMPL-X transl", {"reading": "pelvis_as_transl"}),
+                ("hands ignored", {"reading": "no_hands"})]),
+    case("multihmr_one", V + "multihmr/000004.npz", "smplx_small", [0, 0, 0],
+         ["read as Multi-HMR output (2 persons", "track 1 of 2"], args=["--track", "1"],
+         wrong=[("the other person", {"--track": "0"})]),
+    # Hostile PromptHMR / .mcs / Multi-HMR files: one line, exit 2, nothing written.
+    refused("prompthmr_bad_shape", V + "prompthmr_bad/results_shape.pkl", "smplx_small",
+            "people 2: 'smplx_world/pose' has shape (24,160)"),
+    refused("prompthmr_nan", V + "prompthmr_bad/results_nan.pkl", "smplx_small", "NaN"),
+    refused("prompthmr_no_track", V + "prompthmr/results.pkl", "smplx_small", "no track 3 (tracks: 1, 2)",
+            args=["--track", "3"]),
+    refused("mcs_truncated", V + "prompthmr_bad/truncated.mcs", "smplx_small", "base64 data is truncated"),
+    refused("mcs_huge_length", V + "prompthmr_bad/huge_length.mcs", "smplx_small",
+            "buffer 0 declares 1099511627776 bytes"),
+    refused("mcs_nested", V + "prompthmr_bad/nested.mcs", "smplx_small", "nested deeper"),
+    refused("mcs_presence", V + "prompthmr_bad/presence.mcs", "smplx_small",
+            "'frame_presence' [6, 12) spans 6 frames; its body has 24"),
+    refused("mcs_nan_body", V + "prompthmr_bad/nan_body.mcs", "smplx_small", "'bodyPose' contains NaN"),
+    refused("mcs_binary_glb", V + "prompthmr_bad/binary.glb", "smplx_small", "a binary glTF (GLB)"),
+    refused("multihmr_bad_shape", V + "multihmr_bad/rotvec_shape.npz", "smplx_small",
+            "'rotvec' has shape (2,52,3)"),
+    refused("multihmr_inf", V + "multihmr_bad/pelvis_inf.npz", "smplx_small", "'transl_pelvis' contains NaN"),
+    refused("multihmr_persons", V + "multihmr_bad/persons.npz", "smplx_small", "'shape' has shape (1,10)"),
+    refused("multihmr_empty", V + "multihmr_bad/empty.npz", "smplx_small", "no person in this image"),
+    refused("prompthmr_empty", V + "prompthmr_bad/results_empty.pkl", "smplx_small", "no tracked person"),
 ]
 
 
@@ -369,7 +430,7 @@ def gvhmr_clips(case, path, m):
     # Hands merged by Mano2Smpl-X (VincentHu19/Mano2Smpl-X mano2smplx.py; README: "set flat_hand_mean=True
     # in SMPLX"): left_hand_pose / right_hand_pose are the finger rotations themselves, no mean added.
     n = len(p["body_pose"])
-    hands = "left_hand_pose" in p and case.get("variant") != "hands ignored"
+    hands = "left_hand_pose" in p and arg(case, "reading") != "no_hands"
     left = p["left_hand_pose"] if hands else np.tile(m["hands_meanl"], (n, 1))
     right = p["right_hand_pose"] if hands else np.tile(m["hands_meanr"], (n, 1))
     poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], z, z, z, left[i], right[i])
@@ -385,7 +446,7 @@ def mhr_smplx_clips(case, path, m):
     d = gvhmr_load(path) if path.endswith(".pt") else dict(np.load(path))
     p = {k: f64(v) for k, v in d.items()}
     flat = "--flat-hand-mean" in case["args"]
-    if case.get("variant") in ("hands_mean added", "flat hands"):
+    if arg(case, "reading") == "other_hands_mean":
         flat = not flat
     ml, mr = (np.zeros(45), np.zeros(45)) if flat else (m["hands_meanl"], m["hands_meanr"])
     poses = [smplx_pose(m, p["global_orient"][i], p["body_pose"][i], p["jaw_pose"][i], p["leye_pose"][i],
@@ -528,6 +589,90 @@ def amass_clips(case, path):
                              [f64(d["betas"])[:16]], float(d["mocap_framerate"]), Z_UP_TO_Y_UP))]
 
 
+def no_hands(case, pose):
+    """The "hands ignored" wrong reading: the 30 finger joints at rest."""
+    if arg(case, "reading") == "no_hands":
+        pose = np.array(pose)
+        pose[25:] = 0
+    return pose
+
+
+def prompthmr_clips(case, path, m):
+    # yufu-wang/PromptHMR pipeline/world.py world_hps_estimation: people[k]['smplx_world'] = {pose (T,165)
+    # axis-angle in smplx's full_pose order (root, body, jaw, eyes, left, right fingers), shape (T,10),
+    # trans (T,3) SMPL-X transl} in the gravity-aligned Y-up world; 'smplx_cam' (pipeline/phmr_vid.py) =
+    # {pose (T,75) root, body, jaw, eyes; ...} in the camera frame; the SMPL-X is flat_hand_mean=True
+    # (pipeline.py): the finger rotations are absolute (no hands_mean); 'frames' the source frames.
+    data = joblib.load(path)
+    incam = arg(case, "--source-params", "global") == "incam"
+    tracks = {}
+    for pid, person in data["people"].items():
+        t = Track(str(int(pid)))
+        params = person["smplx_cam" if incam else "smplx_world"]
+        for i, f in enumerate(np.asarray(person["frames"]).astype(int)):
+            pose = np.zeros((55, 3))
+            stored = f64(params["pose"][i]).reshape(-1, 3)
+            pose[:len(stored)] = stored
+            t.rows[f] = {"pose": no_hands(case, pose), "transl": f64(params["trans"][i]),
+                         "betas": f64(params["shape"][i])}
+        tracks[t.id] = t
+    return [(sfx, clip_dict("smplx", [r["pose"] for r in tr.clip()], [r["transl"] for r in tr.clip()],
+                            [r["betas"] for r in tr.rows.values()], fps_of(case, 30), frame_change(case, incam)))
+            for sfx, tr in pick_tracks(case, tracks)]
+
+
+def mcs_clips(case, path, m):
+    # yufu-wang/PromptHMR pipeline/mcs_export_cam.py add_smpl_buffers_to_gltf: buffers[i].uri = base64 of
+    # body i's .smpl (Meshcapade/smplcodec codec.py: np.savez_compressed of bodyPose (T,22,3), bodyTranslation,
+    # shapeParameters, frameRate, ...), scenes[0].extensions.MC_scene_description.smpl_bodies[i] =
+    # {frame_presence: [first, end), bufferView: i}; the .smpl has no hands, jaw or eyes (rest).
+    with open(path, encoding="utf-8") as fh:
+        gltf = json.load(fh)
+    desc = gltf["scenes"][gltf.get("scene", 0)]["extensions"]["MC_scene_description"]
+    tracks, fps = {}, None
+    for k, body in enumerate(desc["smpl_bodies"]):
+        buf = gltf["buffers"][gltf["bufferViews"][body["bufferView"]]["buffer"]]
+        smpl = np.load(io.BytesIO(base64.b64decode(buf["uri"].split(",", 1)[1])))
+        t = Track(str(k))
+        fps = fps or float(smpl["frameRate"])
+        for i in range(int(smpl["frameCount"])):
+            pose = np.zeros((55, 3))
+            pose[:22] = f64(smpl["bodyPose"][i])
+            t.rows[body["frame_presence"][0] + i] = {"pose": pose, "transl": f64(smpl["bodyTranslation"][i]),
+                                                      "betas": f64(smpl["shapeParameters"])}
+        tracks[t.id] = t
+    return [(sfx, clip_dict("smplx", [r["pose"] for r in tr.clip()], [r["transl"] for r in tr.clip()],
+                            [r["betas"] for r in tr.rows.values()], fps_of(case, fps), np.eye(3)))
+            for sfx, tr in pick_tracks(case, tracks)]
+
+
+def multihmr_clips(case, path, m):
+    # naver/multi-hmr blocks/smpl_layer.py SMPL_Layer.forward: rotvec (53,3) = global orient, pose[:,1:22]
+    # body, [22:37] left hand, [37:52] right hand, [52:53] jaw; eyes at rest; smplx.create(...,
+    # flat_hand_mean=True): absolute fingers. The body is posed with a zero global orient, turned by R about
+    # its pelvis J_0 and moved so that the pelvis is at transl_pelvis (j3d_cam[:,0]): v = R (v0 - J_0) +
+    # transl_pelvis, i.e. an SMPL-X transl of transl_pelvis - J_0(betas) ("anchor": "pelvis" below).
+    # Camera frame. Persons by row; a folder is one file per image (frame = file stem).
+    files = sorted(glob.glob(os.path.join(path, "*.npz"))) if os.path.isdir(path) else [path]
+    tracks = {}
+    reading = arg(case, "reading")
+    for p in files:
+        frame = int(os.path.splitext(os.path.basename(p))[0]) if os.path.isdir(path) else 0
+        d = np.load(p)
+        for row in range(len(d["rotvec"])):
+            rv = f64(d["rotvec"][row]).reshape(53, 3)
+            pose = smplx_pose(m, rv[0], rv[1:22], rv[52], np.zeros(3), np.zeros(3), rv[22:37], rv[37:52])
+            key = "transl" if reading == "transl" else "transl_pelvis"
+            t = tracks.setdefault(str(row), Track(str(row)))
+            t.rows[frame] = {"pose": no_hands(case, pose), "transl": f64(d[key][row]).reshape(3),
+                             "betas": f64(d["shape"][row])}
+    anchor = None if reading in ("transl", "pelvis_as_transl") else "pelvis"
+    return [(sfx, clip_dict("smplx", [r["pose"] for r in tr.clip()], [r["transl"] for r in tr.clip()],
+                            [r["betas"] for r in tr.rows.values()], fps_of(case, 30), frame_change(case, True),
+                            anchor=anchor))
+            for sfx, tr in pick_tracks(case, tracks)]
+
+
 def clips(case, fixture_dir, m):
     path = os.path.join(fixture_dir, case["fixture"])
     name = case["name"]
@@ -553,6 +698,12 @@ def clips(case, fixture_dir, m):
         return smplerx_clips(case, path, m)
     if name.startswith("amass"):
         return amass_clips(case, path)
+    if name.startswith("prompthmr"):
+        return prompthmr_clips(case, path, m)
+    if name.startswith("mcs"):
+        return mcs_clips(case, path, m)
+    if name.startswith("multihmr"):
+        return multihmr_clips(case, path, m)
     raise ValueError("no reference for case " + name)
 
 
@@ -572,7 +723,10 @@ def shaped(m, betas, expression=None):
 
 
 def anchored_transl(c, m, joints, t):
-    """The tool's translation as an SMPL transl (BEV: minus the posed mid-hip of joints 1 and 2)."""
+    """The tool's translation as an SMPL transl (BEV: minus the posed mid-hip of joints 1 and 2;
+    Multi-HMR: minus the rest pelvis)."""
+    if c["anchor"] == "pelvis":  # the posed pelvis (Multi-HMR transl_pelvis): minus the rest pelvis J_0
+        return c["transl"][t] - joints[0]
     if c["anchor"] != "mid-hip":
         return c["transl"][t]
     r0 = mats(c["pose"][t][0])
@@ -634,3 +788,20 @@ def equivalent(case, fixture_dir):
         result.append((sfx, {"poses": poses.reshape(len(poses), -1), "trans": trans, "betas": c["betas"],
                              "fps": np.array(c["fps"])}))
     return result
+
+
+def wrong_expected(case, fixture_dir, change):
+    """The reference of a plausible wrong reading of the case's file: `change` replaces the case's
+    args ({"--track": "1"}) or names a reading the clip functions know ({"reading": "no_hands"})."""
+    c = dict(case)
+    args = list(case["args"])
+    for flag, value in change.items():
+        if flag in args:
+            args[args.index(flag) + 1] = value
+        else:
+            args += [flag, value]
+    c["args"] = args
+    c["outputs"] = None
+    if "--track" in change and arg(case, "--track") == "all":
+        c["args"][c["args"].index("--track") + 1] = change["--track"]
+    return expected(c, fixture_dir)

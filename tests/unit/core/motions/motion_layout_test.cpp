@@ -43,6 +43,28 @@ std::vector<DataNode> shapesOf(const std::vector<std::string>& keys) {
   return {flat, dicts, by_id, list};
 }
 
+// {"scenes": [{"extensions": {"MC_scene_description": {}}}]}: a Meshcapade scene.
+DataNode mcsShape() {
+  DataNode desc;
+  desc.kind = DataNode::Kind::Dict;
+  DataNode ext;
+  ext.kind = DataNode::Kind::Dict;
+  ext.keys = {"MC_scene_description"};
+  ext.children = {desc};
+  DataNode scene;
+  scene.kind = DataNode::Kind::Dict;
+  scene.keys = {"extensions"};
+  scene.children = {ext};
+  DataNode scenes;
+  scenes.kind = DataNode::Kind::List;
+  scenes.children = {scene};
+  DataNode root;
+  root.kind = DataNode::Kind::Dict;
+  root.keys = {"scenes"};
+  root.children = {scenes};
+  return root;
+}
+
 TEST(MotionLayouts, RowsAreNamedOnceAndReadWhatTheyMatch) {
   std::set<std::string> seen;
   for (const MotionLayout& row : motionLayouts()) {
@@ -53,8 +75,12 @@ TEST(MotionLayouts, RowsAreNamedOnceAndReadWhatTheyMatch) {
       continue;
     }
     // A file holding exactly the row's keys is that row's (nothing earlier steals it).
+    // The .mcs row decides by a nested path (scenes[0].extensions.MC_scene_description):
+    // its shape is built here.
+    std::vector<DataNode> shapes = shapesOf(row.keys);
+    if (std::string(row.name) == "mcs") shapes.push_back(mcsShape());
     bool matched = false;
-    for (const DataNode& root : shapesOf(row.keys)) {
+    for (const DataNode& root : shapes) {
       if (!row.matches(root)) continue;
       matched = true;
       const MotionLayout* found = findLayout(root, row.containers & -row.containers);
@@ -98,9 +124,9 @@ TEST(MotionLayouts, APoseKeyHoldingADictIsRefused) {
 
 TEST(MotionLayouts, BatchExtensionsComeFromTheContainers) {
   const std::vector<std::string> ext = motionFileExtensions();
-  EXPECT_EQ(
-      std::set<std::string>(ext.begin(), ext.end()),
-      (std::set<std::string>{".npz", ".smpl", ".pkl", ".joblib", ".pt", ".pth", ".npy", ".json"}));
+  EXPECT_EQ(std::set<std::string>(ext.begin(), ext.end()),
+            (std::set<std::string>{".npz", ".smpl", ".pkl", ".joblib", ".pt", ".pth", ".npy",
+                                   ".json", ".mcs"}));
 }
 
 TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
