@@ -139,6 +139,21 @@ def check_source(case, path, sfx):
     return ["motion_source.%s is %r, expected %r" % (k, got.get(k), v) for k, v in want.items() if got.get(k) != v]
 
 
+def check_wrong_readings(mod, case, a, refs):
+    """The case module's plausible misreadings (wrong_readings: {name: vertices per case frame}) must
+    each be >= 1 mm from the reference at some frame, so matching the reference rules them out."""
+    if not hasattr(mod, "wrong_readings"):
+        return []
+    problems = []
+    for name, verts in mod.wrong_readings(case, a.fixtures).items():
+        d = max(float(np.linalg.norm(np.asarray(v) - np.asarray(r), axis=1).max())
+                for v, r in zip(verts, refs["vertices"]))
+        print("    sensitivity: %-10s %.2f mm from the reference" % (name, 1000 * d))
+        if d < 1e-3:
+            problems.append("the misreading %r is only %.3g m from the reference (needs >= 1 mm)" % (name, d))
+    return problems
+
+
 def run_case(mod, case, a, work):
     """(worst error, [problems])."""
     for p in leftovers(work, case["name"]):
@@ -146,7 +161,8 @@ def run_case(mod, case, a, work):
     model = os.path.join(a.fixtures, "models", case["model"] + ".npz")
     motion = os.path.join(a.fixtures, case["fixture"])
     outs = outputs_of(case, work)
-    cmd, run = export(a.exe, model, motion, os.path.join(work, case["name"] + ".glb"), case["args"])
+    args = [x.replace("{fixtures}", a.fixtures) for x in case["args"]]  # fixture paths in options
+    cmd, run = export(a.exe, model, motion, os.path.join(work, case["name"] + ".glb"), args)
     if case["refusal"]:
         return 0.0, check_refusal(case, run, work)
     if run.returncode != 0:
@@ -156,6 +172,7 @@ def run_case(mod, case, a, work):
     worst = 0.0
     if case["outputs"] and os.path.exists(os.path.join(work, case["name"] + ".glb")):
         problems.append("%s.glb written besides the per-track outputs" % case["name"])
+    problems += check_wrong_readings(mod, case, a, refs)
     for sfx, path in outs:
         ref = refs if sfx is None else refs[sfx]
         if not os.path.exists(path):
