@@ -354,6 +354,15 @@ const std::vector<OptionSpec> kOptions = {
      "hands_mean "
      "is not added (the authors' default adds it)",
      [](V, S* s) { return s->request.flat_hand_mean = true, Status(); }},
+    {"--hands", nullptr, "FILE", Applies::Single, nullptr,
+     "MANO hand tracks (HaMeR, WiLoR; a folder: per-frame files) drive the fingers of the SMPL-X "
+     "/ SMPL-H --motion, frame by frame (repeatable: left and right from one or two files; a "
+     "frame without a hand keeps the body's)",
+     [](V v, S* s) { return s->request.hands.push_back(v), Status(); }, Hashed::Content},
+    {"--hands-wrist", nullptr, nullptr, Applies::Single, nullptr,
+     "with --hands: the wrists too, from the tracks' global_orient (Mano2Smpl-X); body and hands "
+     "in one camera frame (--source-params incam)",
+     [](V, S* s) { return s->request.hands_wrist = true, Status(); }},
     {"--fps", nullptr, "F", Applies::Motion, nullptr,
      "resample to F frames per second (slerp/lerp; default: the motion's rate)",
      [](V v, S* s) { return numberInto(v, "--fps", &s->request.fps); }},

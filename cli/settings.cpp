@@ -73,7 +73,7 @@ Status takeOption(int argc, const char* const* argv, int* i, Settings* s) {
     value = argv[++*i];
   }
   const std::string name = o->name;  // aliases count as their option
-  if (name != "--motion" && given(*s, name.c_str()))
+  if (name != "--motion" && name != "--hands" && given(*s, name.c_str()))  // repeatable
     return usageError("option " + name + " given twice");
   s->given_options.emplace_back(name, value);
   return o->apply(value, s);

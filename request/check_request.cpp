@@ -75,6 +75,22 @@ Status checkMorphOptions(const ExportRequest& r) {
   return Status();
 }
 
+// --hands drives one body clip; --hands-wrist needs it.
+Status checkHandOptions(const ExportRequest& r) {
+  if (r.hands_wrist && r.hands.empty()) return usage("--hands-wrist needs --hands FILE");
+  if (r.hands.empty()) return Status();
+  if (r.hands.size() > 2)
+    return usage("--hands: " + std::to_string(r.hands.size()) +
+                 " files; give at most two (the left and the right hand)");
+  if (r.motions.size() != 1)
+    return usage(
+        "--hands drives the fingers of one body clip: give one --motion or "
+        "--motion-sequence");
+  if (r.track.kind == TrackChoice::Kind::All)
+    return usage("--hands drives one body: give --track ID (or longest), not --track all");
+  return Status();
+}
+
 Status checkConflicts(const ExportRequest& r) {
   if (r.model.empty()) return usage("missing --model PATH (use --model builtin for the demo body)");
   if (!r.betas.empty() && !r.betas_file.empty())
@@ -96,6 +112,7 @@ Status checkConflicts(const ExportRequest& r) {
         "--origin floor)");
   if (!r.motion_sequence.empty() && r.motions.size() != 1)
     return usage("--motion-sequence DIR is the run's one motion: it conflicts with --motion");
+  if (Status st = checkHandOptions(r); !st) return st;
   return checkMorphOptions(r);
 }
 

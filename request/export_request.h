@@ -33,6 +33,8 @@ struct ExportRequest {
   SourceParams source_params = SourceParams::Default;  // --source-params global|incam
   std::optional<double> source_fps;    // --source-fps R, fps in [1, 1000]; none: the stored rate
   bool flat_hand_mean = false;         // --flat-hand-mean: fit hands are flat-hand relative
+  std::vector<std::string> hands;      // --hands FILE|DIR, at most 2: MANO tracks, the fingers
+  bool hands_wrist = false;            // --hands-wrist: the wrists from the hand tracks too
   std::vector<double> betas;           // --betas v,v,...: |v| <= 1000, at most the model's B
   std::string betas_file;              // --betas-file FILE: .npy, .npz (key 'betas') or .json
   bool betas_from_motion = false;      // --betas-from-motion: the first motion must carry betas

@@ -77,25 +77,37 @@ Result<ContentHash> producerBase(const ExportRequest& s) {
   return h;
 }
 
-std::string producerHash(ContentHash base, const std::vector<std::string>& motions) {
-  for (const std::string& m : motions) {
-    std::error_code ec;
-    if (fs::is_directory(os::fsPath(m), ec)) {  // --motion-sequence DIR: each file's name and size
-      std::vector<std::string> files;
-      for (auto it = fs::directory_iterator(os::fsPath(m), ec);
-           !ec && it != fs::directory_iterator(); it.increment(ec)) {
-        std::error_code e2;
-        const auto size = it->is_regular_file(e2) ? it->file_size(e2) : 0;
-        files.push_back(os::utf8(it->path().filename()) + " " + std::to_string(size));
-      }
-      std::sort(files.begin(), files.end());
-      base.add("sequence " + baseName(m));
-      for (const std::string& f : files) base.add(f);
-      continue;
+namespace {
+
+// One motion input by identity: "<tag> <name> <size>", or for a folder
+// (--motion-sequence DIR, --hands DIR) its name and each file's name and size.
+void addMotionInput(const char* tag, const char* folder_tag, const std::string& m,
+                    ContentHash* base) {
+  std::error_code ec;
+  if (fs::is_directory(os::fsPath(m), ec)) {
+    std::vector<std::string> files;
+    for (auto it = fs::directory_iterator(os::fsPath(m), ec); !ec && it != fs::directory_iterator();
+         it.increment(ec)) {
+      std::error_code e2;
+      const auto size = it->is_regular_file(e2) ? it->file_size(e2) : 0;
+      files.push_back(os::utf8(it->path().filename()) + " " + std::to_string(size));
     }
-    const auto size = fs::file_size(os::fsPath(m), ec);
-    base.add("motion " + baseName(m) + " " + (ec ? std::string("?") : std::to_string(size)));
+    std::sort(files.begin(), files.end());
+    base->add(std::string(folder_tag) + " " + baseName(m));
+    for (const std::string& f : files) base->add(f);
+    return;
   }
+  const auto size = fs::file_size(os::fsPath(m), ec);
+  base->add(std::string(tag) + " " + baseName(m) + " " +
+            (ec ? std::string("?") : std::to_string(size)));
+}
+
+}  // namespace
+
+std::string producerHash(ContentHash base, const std::vector<std::string>& motions,
+                         const std::vector<std::string>& hands) {
+  for (const std::string& m : motions) addMotionInput("motion", "sequence", m, &base);
+  for (const std::string& h : hands) addMotionInput("hands", "hands folder", h, &base);
   return base.hex();
 }
 

@@ -30,7 +30,9 @@ namespace smpl {
 // Reads the model once (1 MB at a time). Error: the unreadable input file.
 Result<ContentHash> producerBase(const ExportRequest& request);
 
-// The hash of one output: `base` plus its motions' base names and sizes.
-std::string producerHash(ContentHash base, const std::vector<std::string>& motions);
+// The hash of one output: `base` plus its motions' and --hands files' base
+// names and sizes (a folder: each file's name and size).
+std::string producerHash(ContentHash base, const std::vector<std::string>& motions,
+                         const std::vector<std::string>& hands = {});
 
 }  // namespace smpl

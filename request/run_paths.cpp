@@ -136,6 +136,7 @@ RunPaths runPaths(const ExportRequest& r, const std::vector<std::string>& outs,
                   const std::vector<std::string>& motions) {
   RunPaths paths;
   paths.inputs = motions;
+  paths.inputs.insert(paths.inputs.end(), r.hands.begin(), r.hands.end());
   if (r.model != "builtin" && isDirectory(r.model))
     addModelFolder(r.model, &paths.inputs);
   else if (r.model != "builtin")

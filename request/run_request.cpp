@@ -22,6 +22,7 @@
 #include "request/hand_side.h"
 #include "request/motion_notes.h"
 #include "request/producer.h"
+#include "request/request_hands.h"
 #include "request/request_motions.h"
 #include "request/request_options.h"
 #include "request/run_paths.h"
@@ -70,7 +71,7 @@ Error exportFailure(const std::string& out, const Error& e, const std::string& i
 
 // The motions decoded once, the model picked with the first (mirrored for a
 // hand of the other side: hand_side.h), the model's checks, then the fit
-// hands through the model's basis.
+// hands through the model's basis and the --hands tracks into the first.
 struct Loaded {
   std::vector<Motion> motions;
   ModelPick pick;
@@ -101,6 +102,12 @@ Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSou
   for (size_t i = 0; i < r.motions.size(); ++i)
     if (Status st = resolveMotionHands(model, r, r.motions[i], &loaded.motions[i]); !st)
       return fail(ErrorKind::Load, "loading", r.motions[i], st.message());
+  if (!r.hands.empty()) {
+    std::string about;
+    if (Status st = applyRequestHands(model, r, r.motions.front(), &loaded.motions.front(), &about);
+        !st)
+      return fail(ErrorKind::Load, "loading", about, st.message());
+  }
   return loaded;
 }
 
@@ -184,7 +191,7 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
   if (producer.empty()) {
     Result<ContentHash> base = producerBase(r);
     if (!base) return fail(ErrorKind::Load, "loading", r.model, base.message());
-    producer = producerHash(*base, r.motions);
+    producer = producerHash(*base, r.motions, r.hands);
   }
   const std::string buffer_path = gltfBufferPath(r, r.out);
   Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, buffer_path));

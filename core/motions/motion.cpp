@@ -130,6 +130,7 @@ void releaseFrames(Motion* m) {
   std::vector<Eigen::Vector3d>().swap(m->translation);
   std::vector<Eigen::Matrix3d>().swap(m->world_rotation);
   std::vector<Eigen::Vector3d>().swap(m->world_translation);
+  std::vector<bool>().swap(m->held);
   m->dmpls.resize(0, 0);
   m->expression.resize(0, 0);
   m->charge.release();

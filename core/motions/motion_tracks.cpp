@@ -118,6 +118,9 @@ Status assembleTrack(const std::vector<int64_t>& frames, const std::string& path
   reorderMatrix(rows, &m->dmpls);
   m->first_frame = first;
   m->held_frames = static_cast<int64_t>(rows.size() - n);
+  m->held.clear();
+  if (m->held_frames > 0)
+    for (size_t i = 0; i < rows.size(); ++i) m->held.push_back(i > 0 && rows[i] == rows[i - 1]);
   if (m->held_frames > 0)
     m->notes.push_back("track " + printable(m->track, 64) +
                        ": source frames without a detection: " + std::to_string(m->held_frames) +

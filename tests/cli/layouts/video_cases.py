@@ -44,6 +44,7 @@ import model_math  # noqa: E402
 CAMERA_TO_UP = np.diag([1.0, -1.0, -1.0])  # --up -y: (x, y, z) -> (x, -y, -z)
 Z_UP_TO_Y_UP = np.array([[1.0, 0, 0], [0, 0, 1], [0, -1, 0]])  # --up z: -90 degrees about x
 V = "layouts/video/"
+HANDS = V + "hands/"
 # The closing note of an export with an animated expression (the exporter's wording,
 # exporter/animation.cpp clipNotes; docs/motions.md, SMPLer-X); its number is checked against
 # authors_expression_cost_mm (run_cases.py: `numbers` of the reference).
@@ -118,6 +119,28 @@ CASES = [
     # Without the flag the hands are read as smplx's default model does: hands_mean added.
     case("mhr_smplx_default_mean", V + "mhr_smplx/smplx_params.npz", "smplx_small", [0, 2, 5],
          wrong=[("flat hands", {"reading": "other_hands_mean"})]),
+    # --hands: HaMeR tracks drive GVHMR's fingers (docs/motions.md "Combining hand tracks"); a folder of
+    # per-image outputs holds both hands (tracks 0 left, 1 right); "{fixtures}" is the fixture folder.
+    case("hands_fingers", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23],
+         [HANDS + "hamer: track 0: the left hand's fingers (absolute MANO rotations",
+          HANDS + "hamer: track 1: the right hand's fingers", "its translation, betas and rate are not used",
+          HANDS + "hamer: read as HaMeR output"],
+         args=["--hands", "{fixtures}/" + HANDS + "hamer"], absent=["keep the body clip's hand", "assumed 30 fps;"]),
+    case("hands_two_files", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23],
+         [HANDS + "left.npz: the left hand's fingers", HANDS + "right.npz: the right hand's fingers"],
+         args=["--source-params", "incam", "--hands", "{fixtures}/" + HANDS + "right.npz",
+               "--hands", "{fixtures}/" + HANDS + "left.npz"]),
+    case("hands_wrist", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23],
+         ["the left hand's wrist and fingers", "the right hand's wrist and fingers", "Mano2Smpl-X"],
+         args=["--source-params", "incam", "--hands", "{fixtures}/" + HANDS + "hamer", "--hands-wrist"]),
+    # No left hand at frames 7, 21-23, no file at frame 10: those frames keep GVHMR's hands (hands_mean).
+    case("hands_gap", V + "gvhmr/hmr4d_results.pt", "smplx_small", [7, 10, 15],
+         ["left hand's fingers", "5 of 24 frames have no frame of this track and keep the body clip's hand",
+          "1 of 24 frames have no frame of this track"],
+         args=["--hands", "{fixtures}/" + HANDS + "hamer_gap"], absent=["each holds the previous one"]),
+    case("hands_gap_wrist", V + "gvhmr/hmr4d_results.pt", "smplx_small", [6, 10, 21],
+         ["the left hand's wrist and fingers", "5 of 24 frames"],
+         args=["--source-params", "incam", "--hands", "{fixtures}/" + HANDS + "hamer_gap", "--hands-wrist"]),
     # Today's reading of GVHMR's global parameters flattened into an npz (an SMPL-X fit: hands at rest).
     case("gvhmr_flat_today", V + "gvhmr/gvhmr_flat.npz", "smplx_small", [0, 11, 23],
          ["assumed 30 fps", "their mean"]),
@@ -237,6 +260,31 @@ CASES = [
     refused("multihmr_persons", V + "multihmr_bad/persons.npz", "smplx_small", "'shape' has shape (1,10)"),
     refused("multihmr_empty", V + "multihmr_bad/empty.npz", "smplx_small", "no person in this image"),
     refused("prompthmr_empty", V + "prompthmr_bad/results_empty.pkl", "smplx_small", "no tracked person"),
+    # --hands refusals: exit 2, one line naming the file, nothing written.
+    refused("hands_length_mismatch", V + "gvhmr/hmr4d_results.pt", "smplx_small",
+            "right_short.npz: 20 hand frames for the body clip's 24",
+            args=["--hands", "{fixtures}/" + HANDS + "right_short.npz"]),
+    refused("hands_frames_beyond", V + "gvhmr/hmr4d_results.pt", "smplx_small",
+            "hamer_long: track 1: source frames 0-25 are not all in the body clip's 0-23",
+            args=["--hands", "{fixtures}/" + HANDS + "hamer_long"]),
+    refused("hands_nan", V + "gvhmr/hmr4d_results.pt", "smplx_small",
+            "right_nan.npz: 'hand_pose' contains NaN or infinite values",
+            args=["--hands", "{fixtures}/" + HANDS + "right_nan.npz"]),
+    refused("hands_hostile_pickle", V + "gvhmr/hmr4d_results.pt", "smplx_small", "refusing pickle global",
+            args=["--hands", "{fixtures}/" + V + "hostile/wham_output.pkl"]),
+    refused("hands_body_file", V + "gvhmr/hmr4d_results.pt", "smplx_small",
+            "hmr4d_results.pt: not a hand track (a smplx motion)",
+            args=["--hands", "{fixtures}/" + V + "gvhmr/hmr4d_results.pt"]),
+    refused("hands_two_left", V + "gvhmr/hmr4d_results.pt", "smplx_small", "a second left hand",
+            args=["--hands", "{fixtures}/" + HANDS + "left.npz", "--hands", "{fixtures}/" + HANDS + "hamer"]),
+    refused("hands_smpl_body", V + "wham/wham_output.pkl", "smplx_small",
+            "wham_output.pkl: --hands drives the fingers of an SMPL-X or SMPL-H body clip; this clip is smpl",
+            args=["--hands", "{fixtures}/" + HANDS + "right.npz"]),
+    refused("hands_smpl_model", V + "gvhmr/hmr4d_results.pt", "smpl_small", "has no finger joints",
+            args=["--hands", "{fixtures}/" + HANDS + "right.npz"]),
+    refused("hands_wrist_world", V + "gvhmr/hmr4d_results.pt", "smplx_small",
+            "--hands-wrist needs the body clip in the camera frame of the hand track",
+            args=["--hands", "{fixtures}/" + HANDS + "right.npz", "--hands-wrist"]),
 ]
 
 
@@ -453,6 +501,78 @@ def mhr_smplx_clips(case, path, m):
                         p["reye_pose"][i], p["left_hand_pose"][i] + ml, p["right_hand_pose"][i] + mr)
              for i in range(len(p["body_pose"]))]
     return [(None, clip_dict("smplx", poses, p["transl"], p["betas"], fps_of(case, 30), np.eye(3)))]
+# --hands (docs/motions.md "Combining hand tracks"): Mano2Smpl-X (VincentHu19/Mano2Smpl-X mano2smplx.py)
+# as written there: the fingers are HaMeR's hand_pose as they are for a right hand and M R M
+# (M = diag(-1,1,1)) for a left one; with the wrist, its local rotation is
+# inv(global rotation of the elbow from the SMPL-X pose's parent chain) @ global_orient (M G M on the
+# left). The chain is each side's own elbow (the script's right-hand line reuses joint 18, the left
+# elbow: a slip that would give the right wrist the left arm's frame).
+MIRROR = np.diag([-1.0, 1.0, 1.0])
+SMPLX_PARENTS = [-1, 0, 0, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 9, 9, 12, 13, 14, 16, 17, 18, 19]
+
+
+def hand_paths(case, fixture_dir):
+    a = case["args"]
+    return [a[i + 1].replace("{fixtures}", fixture_dir) for i in range(len(a)) if a[i] == "--hands"]
+
+
+def hamer_frames_of(path):
+    """{is_right: {frame: (16,3,3) right-MANO rotations as HaMeR stores them}}: a folder of per-image
+    pickles (frame = file stem, one hand per side), or one npz of one hand through time (frame = row)."""
+    out = {False: {}, True: {}}
+    if os.path.isdir(path):
+        for p in sorted(glob.glob(os.path.join(path, "*.pkl"))):
+            with open(p, "rb") as fh:
+                d = pickle.load(fh)
+            params = d["pred_mano_params"]
+            rots = np.concatenate([f64(params["global_orient"]), f64(params["hand_pose"])], 1)
+            for i, right in enumerate(np.asarray(d["right"]) > 0.5):
+                out[bool(right)][int(os.path.basename(p).split(".")[0])] = rots[i]
+        return out
+    d = np.load(path)
+    rots = np.concatenate([f64(d["global_orient"]), f64(d["hand_pose"])], 1)
+    for i, right in enumerate(np.asarray(d["is_right"]) > 0.5):
+        out[bool(right)][i] = rots[i]
+    return out
+
+
+def elbow_global(pose, joint):
+    """Mano2Smpl-X compute_global_rotation: the product of the local rotations from the root down."""
+    g = np.eye(3)
+    while joint != -1:
+        g = mats(pose[joint]) @ g
+        joint = SMPLX_PARENTS[joint]
+    return g
+
+
+def hands_clips(case, fixture_dir, m):
+    """GVHMR's clip (gvhmr_clips) with the --hands tracks put in; the case's "reading" names a plausible
+    misreading (HANDS_WRONG, for the sensitivity check): "hands_ignored", "hands_swapped" (each track on
+    the other side), "hands_mirrored" (the left hand's rotations as stored, not M R M), "no_wrist"
+    (--hands-wrist not applied)."""
+    wrong = arg(case, "reading")
+    c = gvhmr_clips(case, os.path.join(fixture_dir, case["fixture"]), m)[0][1]
+    wrist = "--hands-wrist" in case["args"] and wrong != "no_wrist"
+    if wrong == "hands_ignored":
+        return [(None, c)]
+    body = c["pose"].copy()  # the elbows' chains come from the body's own pose
+    for hand_path in hand_paths(case, fixture_dir):
+        for right, frames in hamer_frames_of(hand_path).items():
+            side = (not right) if wrong == "hands_swapped" else right
+            for f, rots in frames.items():
+                own = rots if right or wrong == "hands_mirrored" else MIRROR @ rots @ MIRROR
+                first = 40 if side else 25
+                c["pose"][f][first:first + 15] = axis_angle(own[1:])
+                if wrist:
+                    c["pose"][f][21 if side else 20] = axis_angle(elbow_global(body[f], 19 if side else 18).T @ own[0])
+    return [(None, c)]
+
+
+def hands_wrong(case):
+    """The --hands cases' plausible misreadings as (label, change) pairs (see wrong_expected)."""
+    names = ["hands_ignored", "hands_swapped", "hands_mirrored"]
+    names += ["no_wrist"] if "--hands-wrist" in case["args"] else []
+    return [(n.replace("_", " "), {"reading": n}) for n in names]
 
 
 def gvhmr_flat_clips(case, path, m):
@@ -684,6 +804,8 @@ def clips(case, fixture_dir, m):
         return phalp_clips(case, path)
     if name.startswith("mhr_smplx"):
         return mhr_smplx_clips(case, path, m)
+    if name.startswith("hands"):
+        return hands_clips(case, fixture_dir, m)
     if name.startswith("gvhmr_flat"):
         return gvhmr_flat_clips(case, path, m)
     if name.startswith("gvhmr"):
@@ -805,3 +927,8 @@ def wrong_expected(case, fixture_dir, change):
     if "--track" in change and arg(case, "--track") == "all":
         c["args"][c["args"].index("--track") + 1] = change["--track"]
     return expected(c, fixture_dir)
+
+
+for _c in CASES:
+    if _c["name"].startswith("hands") and not _c["refusal"]:
+        _c["wrong"] = hands_wrong(_c)

@@ -128,6 +128,21 @@ TEST(CheckRequest, EachRangeAndConflictHasItsMessage) {
       {[](ExportRequest* r) { r->threads = 1025; }, "--threads: expected 1..1024, got '1025'"},
       {[](ExportRequest* r) { r->dmpl = "d.npz", r->dmpl_count = 0; },
        "--dmpl-count: expected N >= 1, got '0'"},
+      {[](ExportRequest* r) { r->hands_wrist = true; }, "--hands-wrist needs --hands FILE"},
+      {[](ExportRequest* r) { r->hands = {"h.pkl"}; },
+       "--hands drives the fingers of one body clip: give one --motion or --motion-sequence"},
+      {[](ExportRequest* r) {
+         r->motions = {"a.pt", "b.pt"}, r->hands = {"h.pkl"};
+       },
+       "--hands drives the fingers of one body clip: give one --motion or --motion-sequence"},
+      {[](ExportRequest* r) {
+         r->motions = {"a.pt"}, r->hands = {"l.npz", "r.npz", "x.npz"};
+       },
+       "--hands: 3 files; give at most two (the left and the right hand)"},
+      {[](ExportRequest* r) {
+         r->motions = {"a.pt"}, r->hands = {"h"}, r->track.kind = TrackChoice::Kind::All;
+       },
+       "--hands drives one body: give --track ID (or longest), not --track all"},
   };
   for (const Case& c : cases) {
     ExportRequest r = valid();

@@ -51,8 +51,13 @@ TEST(MotionTracks, RowsAreOrderedAndGapsHoldThePreviousDetection) {
   EXPECT_EQ(m.held_frames, 3);
   const int rows[] = {1, 1, 2, 2, 2, 0};  // frame 3 -> row 1, 4 holds it, 5 -> row 2, ...
   for (int f = 0; f < 6; ++f) EXPECT_EQ(m.translation[f].x(), rows[f]) << f;
+  const std::vector<bool> held = {false, true, false, true, true, false};  // no detection
+  EXPECT_EQ(m.held, held);
   EXPECT_TRUE(
       hasNote(m, "track 4: source frames without a detection: 3 (each holds the previous one)"));
+  Motion whole = track("2", 2);
+  ASSERT_TRUE(assembleTrack({4, 5}, "f.pkl", &whole).ok());
+  EXPECT_TRUE(whole.held.empty());  // every frame a detection
   Motion twice = track("1", 2);
   Status st = assembleTrack({7, 7}, "f.pkl", &twice);
   ASSERT_FALSE(st.ok());
