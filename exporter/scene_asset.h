@@ -23,11 +23,12 @@ struct SceneBody {
   std::string track;   // the track id it was made from ("" for a file without ids)
   double start = 0.0;  // seconds on the scene timeline of the clip's time 0
   int64_t first_frame = 0, end_frame = 0;  // source frames shown, [first, end)
-  // Visibility as STEP keys of the body node's scale (1 shown, 0
-  // hidden): key i holds from times[i] to times[i + 1]. Empty: shown
-  // throughout (no scale channel). Keys sit half a source frame before the
-  // first shown and the first hidden frame, so a player sampling at frame
-  // times never lands on a key (float32 times).
+  // Visibility as STEP keys of the body node's scale (1 shown, 0 hidden:
+  // outside [first_frame, end_frame) and on frames without a detection):
+  // key i holds from times[i] to times[i + 1]. Empty: shown throughout (no
+  // scale channel). After the key at 0, keys sit half a source frame before
+  // each change, so a player sampling at frame times never lands on a key
+  // (float32 times).
   std::vector<double> visibility_times;
   std::vector<float> visibility;
 };

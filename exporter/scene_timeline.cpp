@@ -12,23 +12,30 @@ namespace {
 // with a note: glTF requires yfov > 0.
 constexpr double kDefaultYfov = M_PI / 3.0;
 
-// The STEP keys that show `body` over [first, end) of a scene spanning
-// [scene_first, scene_end), half a frame before each change.
-void setVisibility(int64_t scene_first, int64_t scene_end, double fps, SceneBody* body) {
-  if (body->first_frame > scene_first) {
-    body->visibility_times.push_back(0.0);
-    body->visibility.push_back(0.0f);
-    body->visibility_times.push_back((double(body->first_frame - scene_first) - 0.5) / fps);
-    body->visibility.push_back(1.0f);
+// Whether `body` is shown on source frame f: inside its clip and detected there.
+bool shownAt(const SceneBody& body, const std::vector<bool>& detected, int64_t f) {
+  if (f < body.first_frame || f >= body.end_frame) return false;
+  const size_t i = size_t(f - body.first_frame);
+  return i >= detected.size() || detected[i];
+}
+
+// The STEP keys that show `body` on its detected frames of a scene spanning
+// [scene_first, scene_end): the value at time 0, then one key half a frame
+// before each change. None when it is shown throughout.
+void setVisibility(int64_t scene_first, int64_t scene_end, double fps,
+                   const std::vector<bool>& detected, SceneBody* body) {
+  bool shown = shownAt(*body, detected, scene_first);
+  std::vector<double> times = {0.0};
+  std::vector<float> values = {shown ? 1.0f : 0.0f};
+  for (int64_t f = scene_first + 1; f < scene_end; ++f) {
+    if (shownAt(*body, detected, f) == shown) continue;
+    shown = !shown;
+    times.push_back((double(f - scene_first) - 0.5) / fps);
+    values.push_back(shown ? 1.0f : 0.0f);
   }
-  if (body->end_frame < scene_end) {
-    if (body->visibility.empty()) {
-      body->visibility_times.push_back(0.0);
-      body->visibility.push_back(1.0f);
-    }
-    body->visibility_times.push_back((double(body->end_frame - scene_first) - 0.5) / fps);
-    body->visibility.push_back(0.0f);
-  }
+  if (values.size() == 1 && values[0] == 1.0f) return;  // shown throughout: no channel
+  body->visibility_times = std::move(times);
+  body->visibility = std::move(values);
 }
 
 bool isRotation(const Eigen::Matrix3d& r) {
@@ -83,6 +90,7 @@ Result<SceneAsset> composeScene(const std::string& name, std::vector<SceneBodyIn
                           ? 0
                           : bodies.front().asset.animations.front().source.first_frame;
   scene.end_frame = scene.first_frame;
+  std::vector<std::vector<bool>> detected;
   for (SceneBodyInput& in : bodies) {
     if (in.asset.animations.size() != 1)
       return makeError(context + ": body '" + in.asset.name + "' has " +
@@ -94,6 +102,7 @@ Result<SceneAsset> composeScene(const std::string& name, std::vector<SceneBodyIn
     body.first_frame = source.first_frame;
     body.end_frame = source.end_frame;
     body.asset = std::move(in.asset);
+    detected.push_back(std::move(in.detected));
     scene.first_frame = std::min(scene.first_frame, body.first_frame);
     scene.end_frame = std::max(scene.end_frame, body.end_frame);
     scene.bodies.push_back(std::move(body));
@@ -107,9 +116,10 @@ Result<SceneAsset> composeScene(const std::string& name, std::vector<SceneBodyIn
     if (!clip) return clip.error();
     scene.camera = std::move(*clip);
   }
-  for (SceneBody& body : scene.bodies) {
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    SceneBody& body = scene.bodies[i];
     body.start = double(body.first_frame - scene.first_frame) / fps;
-    setVisibility(scene.first_frame, scene.end_frame, fps, &body);
+    setVisibility(scene.first_frame, scene.end_frame, fps, detected[i], &body);
   }
   return scene;
 }

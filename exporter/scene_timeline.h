@@ -4,7 +4,8 @@
 //
 // The timeline runs at the source rate all tracks share, from the earliest
 // source frame of any track (or of the camera) to the latest. A body is
-// shown over its track's frames [first, end) and hidden elsewhere: its
+// shown over its track's frames [first, end) where the track has a detection
+// and hidden elsewhere (before, after, and in a gap of the track): its
 // body node's scale is 0 there (STEP keys, SceneBody), which collapses
 // the whole skinned mesh to one point in every glTF client (a plain TRS
 // scale; KHR_node_visibility is not read by Blender 3.4's importer).
@@ -25,6 +26,10 @@ namespace smpl {
 struct SceneBodyInput {
   Asset asset;
   std::string track;
+  // Per source frame from the clip's first (Motion::detected): false where
+  // the track has no detection (the clip holds the previous one there); the
+  // body is hidden on those frames too. Empty: every frame.
+  std::vector<bool> detected = {};
 };
 
 // The scene `name` of `bodies` (moved in, in the file's track order) at

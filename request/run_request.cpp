@@ -440,7 +440,7 @@ Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, M
     stage->set("exporting", r.out, ErrorKind::Export);
     Result<Asset> asset = sceneBody(r, inputs, models, stage, track, &report);
     if (!asset) return asset.error();
-    bodies.push_back(SceneBodyInput{std::move(*asset), track.track});
+    bodies.push_back(SceneBodyInput{std::move(*asset), track.track, track.detected});
     releaseFrames(&track);
   }
   const Motion& first = set->tracks.front();

@@ -65,6 +65,10 @@ struct Motion {
   std::string track;           // the person or track id in a multi-person file; "" if it has one
   int64_t first_frame = 0;     // source frame number of frames[0] (a track that starts later)
   int64_t held_frames = 0;     // frames without a detection, holding the previous one (tracks)
+  // Per frame of a track with held frames: true where the file has a
+  // detection, false where the frame holds the previous one (a --scene
+  // export hides the body there). Empty: every frame is a detection.
+  std::vector<bool> detected;
   // Per-frame frame change applied to the whole posed body about the world
   // origin, before the world turn: v -> world_rotation[f] v + world_translation[f]
   // (EasyMocap's Rh/Th, TRAM's camera-to-world). Empty: identity. The bake

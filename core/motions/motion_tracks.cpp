@@ -118,6 +118,10 @@ Status assembleTrack(const std::vector<int64_t>& frames, const std::string& path
   reorderMatrix(rows, &m->dmpls);
   m->first_frame = first;
   m->held_frames = static_cast<int64_t>(rows.size() - n);
+  if (m->held_frames > 0) {
+    m->detected.assign(rows.size(), false);
+    for (size_t i = 0; i < n; ++i) m->detected[size_t(frames[order[i]] - first)] = true;
+  }
   if (m->held_frames > 0)
     m->notes.push_back("track " + printable(m->track, 64) +
                        ": source frames without a detection: " + std::to_string(m->held_frames) +

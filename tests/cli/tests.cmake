@@ -137,7 +137,7 @@ set_tests_properties(cli.output_streams PROPERTIES LABELS cli)
 # forward pass (video_cases.py) where each body is present, hidden where absent, with the
 # sensitivity checks (another track's betas, a one-frame shift); web.scene: three.js plays the
 # same file; blender.scene: Blender's importer; validator.scene: the Khronos validator.
-foreach(layout wham vibe)
+foreach(layout wham vibe phalp)
   add_test(NAME cli.scene.${layout}
     COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout})

@@ -235,6 +235,25 @@ TEST(GltfScene, BodyShownThroughoutHasNoScaleChannel) {
     EXPECT_NE(ch.target_path, "scale");
 }
 
+TEST(GltfScene, BodyIsHiddenOnFramesWithoutADetection) {
+  // Frames 0..5 of a scene with a second body on 0..7; frames 2 and 3 are held, not detected.
+  std::vector<SceneBodyInput> bodies;
+  bodies.push_back(body("body_0", "0", 0, 6));
+  bodies.back().detected = {true, true, false, false, true, true};
+  bodies.push_back(body("body_1", "1", 0, 8));
+  Result<SceneAsset> scene =
+      composeScene("gap", std::move(bodies), kFps, SceneCamera(), Eigen::Matrix3d::Identity(), "f");
+  ASSERT_TRUE(scene.ok()) << scene.message();
+  const SceneBody& b = scene->bodies[0];
+  EXPECT_EQ(b.visibility, (std::vector<float>{1, 0, 1, 0}));
+  ASSERT_EQ(b.visibility_times.size(), 4u);
+  EXPECT_EQ(b.visibility_times[0], 0.0);
+  EXPECT_DOUBLE_EQ(b.visibility_times[1], 1.5 / kFps);
+  EXPECT_DOUBLE_EQ(b.visibility_times[2], 3.5 / kFps);
+  EXPECT_DOUBLE_EQ(b.visibility_times[3], 5.5 / kFps);
+  EXPECT_TRUE(scene->bodies[1].visibility.empty());
+}
+
 TEST(GltfScene, CameraWithoutFieldOfViewGetsTheDefaultAndANote) {
   SceneCamera cam = camera();
   cam.yfov = 0.0;
