@@ -93,6 +93,13 @@ int run(int argc, char** argv, Stage* stage) {
   if (os::isTerminal(2) && !s.quiet) request.progress = drawProgress;
   if (!s.quiet) request.skin_error_poses = kSkinErrorPoses;
   stage->set("exporting", request.out, kExitExport);
+  if (request.scene) {  // every person in one output
+    Result<ExportReport> result = runSceneExport(request, &models);
+    if (!result) return report(result.message(), exitCodeFor(result.kind()));
+    printNotes(*result, s.quiet);
+    if (!s.quiet) printSummary(request.out, *result);
+    return kExitOk;
+  }
   if (request.track.kind == TrackChoice::Kind::All) {  // one output per person
     Result<std::vector<ExportReport>> results = runTrackExports(request, &models);
     if (!results) return report(results.message(), exitCodeFor(results.kind()));

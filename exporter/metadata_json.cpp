@@ -190,9 +190,50 @@ std::vector<RecordedOutput> recordOutputs(const std::vector<FileContent>& output
   return records;
 }
 
-std::string sidecarJson(const Asset& asset, const std::string& producer_hash,
-                        const std::vector<FileContent>& outputs) {
-  Json o = metadataObject(asset);
+namespace {
+
+// The scene's own entry: its timeline, each body's place on it, the camera.
+Json sceneObject(const SceneAsset& scene) {
+  Json o = Json::object();
+  o["name"] = scene.name;
+  o["fps"] = scene.fps;
+  o["first_frame"] = scene.first_frame;
+  o["end_frame"] = scene.end_frame;
+  Json bodies = Json::array();
+  for (const SceneBody& b : scene.bodies) {
+    Json entry = Json::object();
+    entry["name"] = b.asset.name;
+    entry["track"] = b.track;
+    entry["first_frame"] = b.first_frame;
+    entry["end_frame"] = b.end_frame;
+    entry["start"] = b.start;
+    entry["hidden_by"] = b.visibility.empty() ? "none" : "body_scale_step";
+    bodies.push_back(std::move(entry));
+  }
+  o["bodies"] = std::move(bodies);
+  if (scene.camera.present()) {
+    Json camera = Json::object();
+    camera["name"] = "camera";
+    camera["frames"] = scene.camera.times.size();
+    camera["yfov"] = scene.camera.yfov;
+    if (scene.camera.aspect > 0) camera["aspect"] = scene.camera.aspect;
+    o["camera"] = std::move(camera);
+  }
+  return o;
+}
+
+Json sceneMetadataObject(const SceneAsset& scene) {
+  Json o = Json::object();
+  o["scene"] = sceneObject(scene);
+  Json bodies = Json::array();
+  for (const SceneBody& b : scene.bodies) bodies.push_back(metadataObject(b.asset));
+  o["bodies"] = std::move(bodies);
+  return o;
+}
+
+// `o` with the sidecar's "producer" entry added last.
+std::string withProducer(Json o, const std::string& producer_hash,
+                         const std::vector<FileContent>& outputs) {
   Json producer = Json::object();
   producer["hash"] = producer_hash;
   if (!outputs.empty()) {
@@ -208,6 +249,20 @@ std::string sidecarJson(const Asset& asset, const std::string& producer_hash,
   }
   o["producer"] = std::move(producer);
   return dump(o);
+}
+
+}  // namespace
+
+std::string sidecarJson(const Asset& asset, const std::string& producer_hash,
+                        const std::vector<FileContent>& outputs) {
+  return withProducer(metadataObject(asset), producer_hash, outputs);
+}
+
+std::string sceneMetadataJson(const SceneAsset& scene) { return dump(sceneMetadataObject(scene)); }
+
+std::string sceneSidecarJson(const SceneAsset& scene, const std::string& producer_hash,
+                             const std::vector<FileContent>& outputs) {
+  return withProducer(sceneMetadataObject(scene), producer_hash, outputs);
 }
 
 std::vector<RecordedOutput> recordedOutputsOf(const std::string& sidecar) {

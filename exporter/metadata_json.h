@@ -9,6 +9,7 @@
 
 #include "core/io/file_io.h"
 #include "exporter/asset.h"
+#include "exporter/scene_asset.h"
 
 namespace smpl {
 
@@ -34,6 +35,19 @@ std::vector<RecordedOutput> recordOutputs(const std::vector<FileContent>& output
 // the ones this sidecar describes.
 std::string sidecarJson(const Asset& asset, const std::string& producer_hash,
                         const std::vector<FileContent>& outputs = {});
+
+// The metadata of a --scene file (scene_asset.h), in the glTF's
+// asset.extras.smpl and scenes[0].extras.smpl:
+//   {"scene": {"name", "fps", "first_frame", "end_frame",     the shared timeline (source frames)
+//              "bodies": [{"name", "track", "first_frame", "end_frame",
+//                          "start" (seconds), "hidden_by": "body_scale_step" | "none"}],
+//              "camera": {"name", "frames", "yfov", "aspect"}},  when the file has one
+//    "bodies": [metadataJson of each body, in the same order]}
+std::string sceneMetadataJson(const SceneAsset& scene);
+
+// The sidecar of a --scene file: sceneMetadataJson plus "producer" as sidecarJson.
+std::string sceneSidecarJson(const SceneAsset& scene, const std::string& producer_hash,
+                             const std::vector<FileContent>& outputs = {});
 
 // The output files a sidecar records; empty when absent or malformed (an old
 // or damaged sidecar: rebuild).

@@ -139,6 +139,36 @@ Status checkCount(int value, int available, const char* option, const char* what
 
 }  // namespace
 
+// --scene: every track of one motion file in one file, in the file's world
+// and on its timeline, so nothing may pick, cut or move a body on its own.
+Status checkSceneOptions(const ExportRequest& r, const WriterFormat& format) {
+  if (!r.scene) return Status();
+  if (!format.writer || !format.writer->writesScenes())
+    return usage("--scene: " + format.name +
+                 " output cannot hold several bodies on one timeline; write .glb or .gltf");
+  if (r.motions.size() != 1)
+    return usage("--scene: give one --motion (or --motion-sequence) holding the tracks; got " +
+                 std::to_string(r.motions.size()));
+  if (r.track.kind == TrackChoice::Kind::Id)
+    return usage("--scene exports every track; --track " + r.track.id +
+                 " picks one: give one or the other");
+  if (r.track.kind == TrackChoice::Kind::All)
+    return usage(
+        "--scene writes every track into one file; --track all writes one file per track: give "
+        "one or the other");
+  if (r.first_frame != 0 || r.end_frame >= 0)
+    return usage("--scene exports the file's whole timeline: --frames is not supported with it");
+  if (r.root_bone || r.origin == Origin::Floor)
+    return usage(
+        "--scene keeps every body in the file's world: --origin floor and --root-bone (which "
+        "raise each body by its own rest height) are not supported with it");
+  if (r.in_place)
+    return usage(
+        "--scene keeps every body in the file's world: --root-motion in-place is not supported "
+        "with it");
+  return Status();
+}
+
 Status checkRequestOptions(const ExportRequest& r) {
   if (Status st = checkRanges(r); !st) return st;
   return checkConflicts(r);
@@ -171,6 +201,7 @@ Status checkRequest(const ExportRequest& r) {
   if (format->single_clip && r.motions.size() > 1)
     return usage("--motion: " + format->name + " output holds one motion; got " +
                  std::to_string(r.motions.size()) + " (one output per motion: --motion-dir)");
+  if (Status st = checkSceneOptions(r, *format); !st) return st;
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }
 

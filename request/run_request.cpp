@@ -11,11 +11,13 @@
 
 #include "core/heap_trim.h"
 #include "core/io/file_io.h"
+#include "core/io/name_component.h"
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 #include "core/models/betas_file.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
+#include "exporter/scene_timeline.h"
 #include "request/check_request.h"
 #include "request/dmpl_job.h"
 #include "request/error_line.h"
@@ -184,17 +186,22 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, Loaded* 
   return asset;
 }
 
-// Serialise and commit the output, its buffer and its sidecar (renamed
-// last: the commit record, file_io.h).
-Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer& writer) {
-  std::string producer = r.producer_hash;
-  if (producer.empty()) {
-    Result<ContentHash> base = producerBase(r);
-    if (!base) return fail(ErrorKind::Load, "loading", r.model, base.message());
-    producer = producerHash(*base, r.motions, r.hands);
-  }
-  const std::string buffer_path = gltfBufferPath(r, r.out);
-  Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, buffer_path));
+// The producer hash of the request's output (request/producer.h).
+Result<std::string> producerOf(const ExportRequest& r) {
+  if (!r.producer_hash.empty()) return r.producer_hash;
+  Result<ContentHash> base = producerBase(r);
+  if (!base) return fail(ErrorKind::Load, "loading", r.model, base.message());
+  return producerHash(*base, r.motions, r.hands);
+}
+
+// Commit the serialised output, its buffer and its sidecar (renamed last:
+// the commit record, file_io.h); `sidecar` makes the sidecar's text from
+// the producer hash and the files it records.
+template <class Sidecar>
+Result<size_t> commitFiles(const ExportRequest& r, const std::string& buffer_path,
+                           Result<Writer::Files> files, Sidecar sidecar) {
+  Result<std::string> producer = producerOf(r);
+  if (!producer) return producer.error();
   if (!files) return exportFailure(r.out, files.error(), "");
   std::vector<FileContent> contents = {
       FileContent{r.out, files->bytes.data(), files->bytes.size(), files->tailParts()}};
@@ -202,11 +209,20 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
     contents.push_back(FileContent{buffer_path, files->buffer.data(), files->buffer.size()});
   // The sidecar records the size and SHA-256 of each file written with it
   // (batch mode checks them, metadata_json.h).
-  const std::string sidecar = sidecarJson(asset, producer, contents);
-  contents.push_back(FileContent{r.out + ".smpl.json", sidecar.data(), sidecar.size()});
+  const std::string text = sidecar(*producer, contents);
+  contents.push_back(FileContent{r.out + ".smpl.json", text.data(), text.size()});
   if (Status st = writeFilesTogether(contents); !st)
     return fail(ErrorKind::Write, "saving", r.out, st.message());
   return files->size() + files->buffer.size();
+}
+
+// Serialise and commit the output, its buffer and its sidecar.
+Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer& writer) {
+  const std::string buffer_path = gltfBufferPath(r, r.out);
+  return commitFiles(r, buffer_path, writer.serializeFiles(asset, writerOptionsOf(r, buffer_path)),
+                     [&](const std::string& producer, const std::vector<FileContent>& contents) {
+                       return sidecarJson(asset, producer, contents);
+                     });
 }
 
 Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
@@ -353,6 +369,124 @@ Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelS
     reports.push_back(std::move(*one));
   }
   return reports;
+}
+
+namespace {
+
+// The name of the body of track `id`: --name for a file without track ids,
+// else --name + "_" + the id as one safe name component (core/io/name_component.h).
+std::string bodyName(const std::string& name, const std::string& id) {
+  return id.empty() ? name : name + "_" + safeNameComponent(id);
+}
+
+// Every track of the request's one motion, decoded once, and the file's camera.
+Result<MotionSet> sceneTracks(const ExportRequest& r, Stage* stage) {
+  const std::string& path = r.motions.front();
+  stage->set("loading", path, ErrorKind::Load);
+  Result<MotionSet> set = decodeMotionSet(path, r);
+  if (!set) return fail(ErrorKind::Load, "loading", path, set.message());
+  SceneCamera camera = std::move(set->camera);
+  TrackChoice all;
+  all.kind = TrackChoice::Kind::All;
+  Result<std::vector<Motion>> tracks = selectTracks(std::move(*set), all, path);
+  if (!tracks) return fail(ErrorKind::Load, "loading", path, tracks.message());
+  for (const Motion& m : *tracks)
+    if (m.fps != tracks->front().fps)
+      return fail(ErrorKind::Load, "loading", path,
+                  "tracks '" + printable(tracks->front().track, 64) + "' and '" +
+                      printable(m.track, 64) + "' have different frame rates (" +
+                      std::to_string(tracks->front().fps) + " and " + std::to_string(m.fps) +
+                      " fps): a scene has one timeline");
+  MotionSet out;
+  out.tracks = std::move(*tracks);
+  out.camera = std::move(camera);
+  return out;
+}
+
+// One body of the scene: the one-body export's load and build (loadJob,
+// buildJob) of `track` under the body's name, its notes into `report`.
+Result<Asset> sceneBody(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
+                        Stage* stage, const Motion& track, ExportReport* report) {
+  ExportRequest job = r;
+  job.name = bodyName(r.name, track.track);
+  Result<Loaded> loaded = loadJob(job, inputs, models, stage, &track);
+  if (!loaded) return loaded.error();
+  ExportReport body;
+  Result<Asset> asset = buildJob(job, inputs, &*loaded, &body);
+  if (!asset) return asset.error();
+  for (Motion& m : loaded->motions) releaseFrames(&m);
+  asset->corrective_refit = CorrectiveRefit();  // no skinning error is measured for a scene
+  for (const std::string& note : body.notes)    // file notes repeat on every track: once
+    if (std::find(report->notes.begin(), report->notes.end(), note) == report->notes.end())
+      report->notes.push_back(note);
+  if (report->model_path.empty()) report->model_path = loaded->pick.path;
+  if (report->model_note.empty()) report->model_note = loaded->pick.note;
+  report->vertices += static_cast<int>(asset->mesh.positions.rows());
+  report->joints += static_cast<int>(asset->skeleton.names.size());
+  report->morph_targets += static_cast<int>(asset->mesh.morph_targets.size());
+  report->max_influences = asset->metadata.max_influences;
+  report->options = body.options;
+  return asset;
+}
+
+Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
+                              Stage* stage) {
+  const auto start = std::chrono::steady_clock::now();
+  const Writer* writer = writerForPath(r.out);
+  if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
+  if (r.clean_temporaries)
+    removeStaleTemps(dirName(r.out), {baseName(r.out), baseName(r.out) + ".smpl.json",
+                                      baseName(gltfBufferPath(r, r.out))});
+  Result<MotionSet> set = sceneTracks(r, stage);
+  if (!set) return set.error();
+  ExportReport report;
+  report.out = r.out;
+  report.betas_note = inputs.betas_note;
+  std::vector<SceneBodyInput> bodies;
+  for (Motion& track : set->tracks) {
+    stage->set("exporting", r.out, ErrorKind::Export);
+    Result<Asset> asset = sceneBody(r, inputs, models, stage, track, &report);
+    if (!asset) return asset.error();
+    std::vector<bool> detected(track.held.size());
+    for (size_t i = 0; i < detected.size(); ++i) detected[i] = !track.held[i];
+    bodies.push_back(SceneBodyInput{std::move(*asset), track.track, std::move(detected)});
+    releaseFrames(&track);
+  }
+  const Motion& first = set->tracks.front();
+  Result<SceneAsset> scene = composeScene(first.name, std::move(bodies), first.fps, set->camera,
+                                          worldTurn(r.up, first.world), r.motions.front());
+  if (!scene) return fail(ErrorKind::Load, "loading", r.motions.front(), scene.message());
+  for (const std::string& note : scene->notes) report.notes.push_back(note);
+  returnFreedHeap();
+  const std::string buffer_path = gltfBufferPath(r, r.out);
+  Result<size_t> bytes = commitFiles(
+      r, buffer_path, writer->serializeSceneFiles(*scene, writerOptionsOf(r, buffer_path)),
+      [&](const std::string& producer, const std::vector<FileContent>& contents) {
+        return sceneSidecarJson(*scene, producer, contents);
+      });
+  if (!bytes) return bytes.error();
+  std::string ids;
+  for (const SceneBody& b : scene->bodies) ids += (ids.empty() ? "" : ", ") + b.asset.name;
+  report.notes.push_back("scene: " + std::to_string(scene->bodies.size()) + " bodies (" +
+                         printable(ids, 400) + ") on frames " + std::to_string(scene->first_frame) +
+                         ".." + std::to_string(scene->end_frame - 1) +
+                         (scene->camera.present() ? ", and the camera" : ", no camera"));
+  report.bytes = *bytes;
+  report.frames = static_cast<int>(scene->end_frame - scene->first_frame);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace
+
+Result<ExportReport> runSceneExport(const ExportRequest& r, ModelSource* models) {
+  if (Status st = beginRun(r); !st) return st.error();
+  if (Status st = checkRunPaths(runPaths(r, {r.out}, r.motions)); !st) return usage(st.message());
+  Result<RunInputs> inputs = loadRunInputs(r, models);
+  if (!inputs) return inputs.error();
+  Stage stage;
+  stage.set("exporting", r.out, ErrorKind::Export);
+  return guarded<ExportReport>(&stage, [&] { return runScene(r, *inputs, models, &stage); });
 }
 
 Result<ExportReport> runExportRequest(const ExportRequest& r, ModelSource* models) {

@@ -70,6 +70,14 @@ Result<ExportReport> runExportJob(const ExportRequest& request, const RunInputs&
 Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& request,
                                                   ModelSource* models);
 
+// --scene: every track of the one motion (decoded once) a skinned body of
+// one file, each built as a one-body export builds it under the name
+// <--name>_<track id> (exporter/scene_timeline.h composeScene: the shared
+// timeline, hidden outside its frames; the file's camera when it has one);
+// written with its sidecar as one export is. Errors as runExportRequest; a
+// format that cannot hold a scene is refused by checkRequest.
+Result<ExportReport> runSceneExport(const ExportRequest& request, ModelSource* models);
+
 // One export: beginRun, checkRunPaths(runPaths(request, {out}, motions))
 // before any work, loadRunInputs, runExportJob.
 Result<ExportReport> runExportRequest(const ExportRequest& request, ModelSource* models);

@@ -10,6 +10,7 @@
 #include "core/byte_span.h"
 #include "core/result.h"
 #include "exporter/asset.h"
+#include "exporter/scene_asset.h"
 
 namespace smpl {
 
@@ -64,6 +65,16 @@ struct Writer {
     Result<std::string> bytes = serialize(asset, options);
     if (!bytes) return bytes.error();
     return Files{std::move(*bytes), std::string()};
+  }
+  // Whether the format holds a whole --scene (several skinned bodies on one
+  // timeline, a camera): serializeSceneFiles is implemented.
+  virtual bool writesScenes() const { return false; }
+  // The files of `scene` (scene_asset.h), as serializeFiles. Default: an
+  // error naming the format (the request refuses such formats first).
+  virtual Result<Files> serializeSceneFiles(const SceneAsset& scene,
+                                            const WriterOptions& options) const {
+    (void)scene, (void)options;
+    return makeError(std::string(name()) + " writer: cannot hold a scene of several bodies");
   }
 };
 

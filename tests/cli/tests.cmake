@@ -131,3 +131,29 @@ set_tests_properties(cli.readme_samples_by_hand PROPERTIES LABELS cli TIMEOUT 90
 add_test(NAME cli.output_streams
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/output_streams_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.output_streams PROPERTIES LABELS cli)
+
+# --scene (docs/file-contract.md "Scene files"): every track of a multi-person file as one GLB,
+# played by tests/cli/scene_check.py's own numpy glTF player and compared with the layouts' numpy
+# forward pass (video_cases.py) where each body is present, hidden where absent, with the
+# sensitivity checks (another track's betas, a one-frame shift); web.scene: three.js plays the
+# same file; blender.scene: Blender's importer; validator.scene: the Khronos validator.
+foreach(layout wham vibe phalp)
+  add_test(NAME cli.scene.${layout}
+    COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+            --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout})
+  set_tests_properties(cli.scene.${layout} PROPERTIES LABELS cli)
+endforeach()
+add_test(NAME web.scene.wham
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --layout wham --work ${CMAKE_CURRENT_BINARY_DIR}/scene_web
+          --web-src ${PROJECT_SOURCE_DIR}/tests/web)
+set_tests_properties(web.scene.wham PROPERTIES LABELS web)
+add_test(NAME blender.scene.wham
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --layout wham --work ${CMAKE_CURRENT_BINARY_DIR}/scene_blender
+          --blender ${SMPL_BLENDER})
+set_tests_properties(blender.scene.wham PROPERTIES LABELS blender TIMEOUT 600)
+add_test(NAME validator.scene.wham
+  COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js
+          ${CMAKE_CURRENT_BINARY_DIR}/scene_wham/wham_scene.glb)
+set_tests_properties(validator.scene.wham PROPERTIES DEPENDS cli.scene.wham LABELS validator)

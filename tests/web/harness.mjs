@@ -25,6 +25,11 @@ function arrayBuffer(file) {
   return b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength);
 }
 
+/** three's GLTFLoader on a .glb (meshopt decoder set): the loader's result {scene, animations, ...}. */
+export function loadGltf(file) {
+  return new Promise((resolve, reject) => new GLTFLoader().setMeshoptDecoder(MeshoptDecoder).parse(arrayBuffer(file), '', resolve, reject));
+}
+
 /**
  * Load a .glb or .fbx: {format, root, mesh, metadata, animations, unitFactor}.
  * FBX metadata comes from the sidecar <file>.smpl.json and the group is
@@ -34,7 +39,7 @@ export async function loadAsset(file) {
   const format = path.extname(file).slice(1).toLowerCase();
   let root, metadata, animations, unitFactor = 1;
   if (format === 'glb') {
-    const gltf = await new Promise((resolve, reject) => new GLTFLoader().setMeshoptDecoder(MeshoptDecoder).parse(arrayBuffer(file), '', resolve, reject));
+    const gltf = await loadGltf(file);
     root = gltf.scene;
     metadata = driver.metadataFromGltf(gltf);
     animations = gltf.animations;

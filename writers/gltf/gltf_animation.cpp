@@ -16,19 +16,6 @@ namespace smpl {
 namespace gltf {
 namespace {
 
-void addChannel(tinygltf::Animation& anim, int input, int output, int node, const char* path) {
-  tinygltf::AnimationSampler sampler;
-  sampler.input = input;
-  sampler.output = output;
-  sampler.interpolation = "LINEAR";
-  anim.samplers.push_back(sampler);
-  tinygltf::AnimationChannel channel;
-  channel.sampler = int(anim.samplers.size()) - 1;
-  channel.target_node = node;
-  channel.target_path = path;
-  anim.channels.push_back(channel);
-}
-
 // Rotation keys (x, y, z, w): float, or with --quantize-animation normalised
 // SHORT (core glTF 2.0 animation samplers: c = round(32767 q), decoded
 // max(c / 32767, -1)); with --meshopt the quantised keys are meshopt's
@@ -77,10 +64,26 @@ int addMorphWeights(GltfBuild& b, const MorphWeightTrack& track, bool quantize) 
 
 }  // namespace
 
-Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool quantize) {
-  tinygltf::Animation anim;
-  anim.name = clip.name;
-  const std::vector<float> times(clip.times.begin(), clip.times.end());
+void addChannel(tinygltf::Animation& anim, int input, int output, int node, const char* path,
+                const char* interpolation) {
+  tinygltf::AnimationSampler sampler;
+  sampler.input = input;
+  sampler.output = output;
+  sampler.interpolation = interpolation;
+  anim.samplers.push_back(sampler);
+  tinygltf::AnimationChannel channel;
+  channel.sampler = int(anim.samplers.size()) - 1;
+  channel.target_node = node;
+  channel.target_path = path;
+  anim.channels.push_back(channel);
+}
+
+Status addClipChannels(GltfBuild& b, const AnimationClip& clip, const BodyNodes& nodes,
+                       double start, bool quantize, tinygltf::Animation* out) {
+  tinygltf::Animation& anim = *out;
+  std::vector<float> times;
+  times.reserve(clip.times.size());
+  for (double t : clip.times) times.push_back(float(t + start));
   const int input = addFloats(b, times, TINYGLTF_TYPE_SCALAR, 0, true);
   for (size_t k = 0; k < clip.rotations.size(); ++k) {
     const RotationTrack& track = clip.rotations[k];
@@ -95,8 +98,8 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool
     const float* keys = track.empty() ? nullptr : track.front().coeffs().data();
     if (unit && !quantize) {
       addChannel(anim, input,
-                 addFloats(b, keys, 4 * track.size(), TINYGLTF_TYPE_VEC4, 0, false, true), int(k),
-                 "rotation");
+                 addFloats(b, keys, 4 * track.size(), TINYGLTF_TYPE_VEC4, 0, false, true),
+                 nodes.joint_base + int(k), "rotation");
       continue;
     }
     std::vector<float> xyzw;  // normalised (a hand-made clip) or to be quantised
@@ -105,24 +108,35 @@ Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool
       const double n = c.norm();
       for (int i = 0; i < 4; ++i) xyzw.push_back(unit ? q.coeffs()[i] : float(c[i] / n));
     }
-    addChannel(anim, input, addRotations(b, xyzw, quantize), int(k), "rotation");
+    addChannel(anim, input, addRotations(b, xyzw, quantize), nodes.joint_base + int(k), "rotation");
   }
   if (!clip.root_translation.empty()) {
     std::vector<float> xyz;
     for (const Eigen::Vector3d& p : clip.root_translation)
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
-    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), 0, "translation");
+    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), nodes.joint_base,
+               "translation");
   }
   for (size_t k = 1; k < clip.joint_translations.size(); ++k) {  // DMPL joints, root bone
     if (clip.joint_translations[k].empty()) continue;            // at its rest offset
     std::vector<float> xyz;
     for (const Eigen::Vector3d& p : clip.joint_translations[k])
       xyz.insert(xyz.end(), {float(p.x()), float(p.y()), float(p.z())});
-    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false), int(k), "translation");
+    addChannel(anim, input, addFloats(b, xyz, TINYGLTF_TYPE_VEC3, 0, false),
+               nodes.joint_base + int(k), "translation");
   }
   if (clip.morph_weights.size() > 0) {  // T x 0 without morph targets: no channel
-    addChannel(anim, input, addMorphWeights(b, clip.morph_weights, quantize), mesh_node, "weights");
+    addChannel(anim, input, addMorphWeights(b, clip.morph_weights, quantize), nodes.mesh_node,
+               "weights");
   }
+  return Status::success();
+}
+
+Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool quantize) {
+  tinygltf::Animation anim;
+  anim.name = clip.name;
+  Status st = addClipChannels(b, clip, BodyNodes{0, mesh_node}, 0.0, quantize, &anim);
+  if (!st) return st;
   b.model.animations.push_back(anim);
   return Status::success();
 }

@@ -72,17 +72,46 @@ bool wideIndices(size_t v_count);
 Status addMesh(GltfBuild& b, const Asset& asset, const WriterOptions& options);
 
 // --- gltf_skeleton.cpp ---
-// Joint nodes 0..K-1 in model order with their rest translations (metres),
-// the mesh node K (a scene root, as the validator requires of skinned
-// meshes), skin 0 (inverse bind matrices translation(-J_k)) and scene 0,
-// whose extras.smpl holds kScenePlaceholder.
+// Where one body's nodes are: joints joint_base .. joint_base + K - 1 in
+// model order (joint_base is the skeleton root), then its mesh node.
+struct BodyNodes {
+  int joint_base = 0;
+  int mesh_node = 0;
+};
+// One body appended: its joint nodes with their rest translations (metres),
+// its mesh node (a scene root, as the validator requires of skinned meshes;
+// it names the mesh the next addMesh adds) and its skin (inverse bind
+// matrices translation(-J_k); named after the asset when `named_skin`).
+BodyNodes addBodyNodes(GltfBuild& b, const Asset& asset, bool named_skin);
+// Scene 0 `name` with `roots`, whose extras.smpl holds kScenePlaceholder.
+void addScene(GltfBuild& b, const std::string& name, const std::vector<int>& roots);
+// The one-body file: addBodyNodes (nodes 0..K-1, mesh node K, skin 0) and
+// scene 0 with roots {0, K}.
 void addNodesAndSkin(GltfBuild& b, const Asset& asset);
 
 // --- gltf_animation.cpp ---
-// One animation of `clip` (times in seconds; LINEAR samplers), morph weights
-// on node `mesh_node`; `quantize`: normalised integer keys where the values
-// allow (--quantize-animation). Errors: a zero or non-finite rotation.
+// A sampler (`interpolation`: "LINEAR" or "STEP") and its channel on `path` of `node`.
+void addChannel(tinygltf::Animation& anim, int input, int output, int node, const char* path,
+                const char* interpolation = "LINEAR");
+// The channels of `clip` on the body at `nodes` (times in seconds plus
+// `start`; LINEAR samplers), morph weights on its mesh node; `quantize`:
+// normalised integer keys where the values allow (--quantize-animation).
+// Errors: a zero or non-finite rotation.
+Status addClipChannels(GltfBuild& b, const AnimationClip& clip, const BodyNodes& nodes,
+                       double start, bool quantize, tinygltf::Animation* anim);
+// One animation of `clip` on the one-body file's nodes (joints from 0,
+// morph weights on node `mesh_node`), as addClipChannels.
 Status addAnimation(GltfBuild& b, const AnimationClip& clip, int mesh_node, bool quantize);
+
+// --- gltf_scene.cpp ---
+// The model of a --scene file (exporter/scene_asset.h): per body, in order,
+// its body node (named after it, parent of its skeleton root), then its
+// joint nodes, mesh node and mesh (both named <body>_mesh), skin, morph targets
+// as one-body files have them (addBodyNodes, addMesh); one animation holding
+// every body's clip at its start, the STEP scale keys on the body node that
+// hide it outside its frames, and the camera node's keys; the camera node
+// last. Errors: those of the stages.
+Status addSceneContent(GltfBuild& b, const SceneAsset& scene, const WriterOptions& options);
 
 // --- gltf_container.cpp ---
 // A placeholder's string value (without its quotes).

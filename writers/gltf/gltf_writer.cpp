@@ -26,6 +26,7 @@ namespace {
 using gltf::addAnimation;  // the stages (gltf_stages.h)
 using gltf::addMesh;
 using gltf::addNodesAndSkin;
+using gltf::addSceneContent;
 using gltf::glbHead;
 using gltf::kBufferPlaceholder;
 using gltf::kMetadataPlaceholder;
@@ -55,28 +56,22 @@ size_t estimatedBufferBytes(const Asset& a, const WriterOptions& options) {
 
 constexpr size_t kMaxBufferBytes = 0xF0000000u;  // GLB lengths are uint32
 
-Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b,
-                  MeshoptJson* meshopt) {
-  Status st = validateAsset(asset);  // the same rules for every writer (exporter/validate_asset.h)
-  if (!st) return st;
-
+// The asset header every file has; the metadata placeholder in asset.extras.
+void startModel(GltfBuild& b, const std::string& exporter_version, size_t reserve,
+                const WriterOptions& options) {
   tinygltf::Model& model = b.model;
-  b.bin.reserve(estimatedBufferBytes(asset, options));
+  b.bin.reserve(reserve);
   b.meshopt = options.meshopt;
   model.asset.version = "2.0";
-  const std::string version = asset.metadata.exporter_version.empty()
-                                  ? SMPL_EXPORT_VERSION
-                                  : asset.metadata.exporter_version;
+  const std::string version = exporter_version.empty() ? SMPL_EXPORT_VERSION : exporter_version;
   model.asset.generator = "smpl-export " + version;
   model.asset.extras = tinygltf::Value(
       tinygltf::Value::Object{{"smpl", tinygltf::Value(placeholderText(kMetadataPlaceholder))}});
+}
 
-  addNodesAndSkin(b, asset);
-  st = addMesh(b, asset, options);
-  for (const AnimationClip& clip : asset.animations)
-    if (st)
-      st = addAnimation(b, clip, int(asset.skeleton.names.size()), options.quantize_animation);
-  if (!st) return st;
+// After the content: meshopt, the buffer's padding, size check and placeholder.
+Status finishModel(GltfBuild& b, MeshoptJson* meshopt) {
+  tinygltf::Model& model = b.model;
   if (b.meshopt) requireExtension(model, "EXT_meshopt_compression");
   Result<MeshoptJson> compressed = compressMeshoptViews(b);
   if (!compressed) return compressed.error();
@@ -90,6 +85,61 @@ Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b
   model.buffers.resize(1);
   model.buffers[0].name = placeholderText(kBufferPlaceholder);
   return Status::success();
+}
+
+Status buildModel(const Asset& asset, const WriterOptions& options, GltfBuild& b,
+                  MeshoptJson* meshopt) {
+  Status st = validateAsset(asset);  // the same rules for every writer (exporter/validate_asset.h)
+  if (!st) return st;
+  startModel(b, asset.metadata.exporter_version, estimatedBufferBytes(asset, options), options);
+  addNodesAndSkin(b, asset);
+  st = addMesh(b, asset, options);
+  for (const AnimationClip& clip : asset.animations)
+    if (st)
+      st = addAnimation(b, clip, int(asset.skeleton.names.size()), options.quantize_animation);
+  if (!st) return st;
+  return finishModel(b, meshopt);
+}
+
+Status buildSceneModel(const SceneAsset& scene, const WriterOptions& options, GltfBuild& b,
+                       MeshoptJson* meshopt) {
+  if (scene.bodies.empty()) return makeError("glTF writer: a scene without bodies");
+  size_t reserve = 4096;
+  for (const SceneBody& body : scene.bodies)
+    reserve += estimatedBufferBytes(body.asset, options) + body.visibility.size() * 16;
+  reserve += scene.camera.times.size() * 32;
+  startModel(b, scene.bodies.front().asset.metadata.exporter_version, reserve, options);
+  if (Status st = addSceneContent(b, scene, options); !st) return st;
+  return finishModel(b, meshopt);
+}
+
+// The files of a built model with `metadata` over its placeholders.
+Result<Writer::Files> filesOf(GltfBuild& b, const MeshoptJson& meshopt, const std::string& metadata,
+                              const WriterOptions& options) {
+  const size_t buffer_size = b.bufferSize();
+  const std::string byte_length = "\"byteLength\":" + std::to_string(buffer_size);
+  const bool external = !options.binary && !options.buffer_uri.empty();
+  if (!options.binary) {  // a .gltf: the buffer in one piece
+    b.bin = withSplices(b.bin, b.splices);
+    b.splices.clear();
+  }
+  if (!options.binary && !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
+    b.model.buffers[0].name.clear();
+    b.model.buffers[0].data.assign(b.bin.begin(), b.bin.end());
+    std::string().swap(b.bin);
+  }
+  Result<std::string> json = serializeJson(b.model, options.binary);
+  if (!json) return json.error();
+  Status st = spliceMeshoptJson(*json, meshopt, !options.binary);
+  if (st) st = spliceMetadata(*json, metadata);
+  if (st && options.binary)
+    st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder), byte_length);
+  if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, buffer_size);
+  if (!st) return st.error();
+  if (options.binary)
+    return Writer::Files{glbHead(std::move(*json), buffer_size), "", std::move(b.bin),
+                         std::move(b.splices)};
+  return Writer::Files{std::move(*json), external ? std::move(b.bin) : std::string()};
 }
 
 class GltfWriter : public Writer {
@@ -109,32 +159,18 @@ class GltfWriter : public Writer {
     MeshoptJson meshopt;
     Status st = buildModel(asset, options, b, &meshopt);
     if (!st) return st.error();
-    const size_t buffer_size = b.bufferSize();
-    const std::string byte_length = "\"byteLength\":" + std::to_string(buffer_size);
-    const bool external = !options.binary && !options.buffer_uri.empty();
-    if (!options.binary) {  // a .gltf: the buffer in one piece
-      b.bin = withSplices(b.bin, b.splices);
-      b.splices.clear();
-    }
-    if (!options.binary &&
-        !external) {  // .gltf, one file: tinygltf embeds the buffer as a data URI
-      b.model.buffers[0].name.clear();
-      b.model.buffers[0].data.assign(b.bin.begin(), b.bin.end());
-      std::string().swap(b.bin);
-    }
-    Result<std::string> json = serializeJson(b.model, options.binary);
-    if (!json) return json.error();
-    st = spliceMeshoptJson(*json, meshopt, !options.binary);
-    if (st) st = spliceMetadata(*json, metadataJson(asset));
-    if (st && options.binary)
-      st = splice(*json, "\"byteLength\":0,\"name\":" + std::string(kBufferPlaceholder),
-                  byte_length);
-    if (st && external) st = pointBufferAt(json.value(), options.buffer_uri, buffer_size);
+    return filesOf(b, meshopt, metadataJson(asset), options);
+  }
+
+  bool writesScenes() const override { return true; }
+
+  Result<Files> serializeSceneFiles(const SceneAsset& scene,
+                                    const WriterOptions& options) const override {
+    GltfBuild b;
+    MeshoptJson meshopt;
+    Status st = buildSceneModel(scene, options, b, &meshopt);
     if (!st) return st.error();
-    if (options.binary)
-      return Files{glbHead(std::move(*json), buffer_size), "", std::move(b.bin),
-                   std::move(b.splices)};
-    return Files{std::move(*json), external ? std::move(b.bin) : std::string()};
+    return filesOf(b, meshopt, sceneMetadataJson(scene), options);
   }
 };
 

@@ -1,0 +1,74 @@
+"""Headless-Blender check of a --scene GLB (docs/file-contract.md "Scene files"): Blender's own
+glTF importer loads every body (one armature named after the body and one skinned mesh
+<body>_mesh each),
+plays the one animation, and the evaluated mesh of each body is compared with numpy's forward pass
+(written by tests/cli/scene_check.py --expected-out: per body the scene frames checked, the
+expected vertices where the body is present, "hidden" where it is absent, its rest mesh for the
+vertex map).
+
+  blender -b --factory-startup --python-exit-code 1 --python blender_scene.py -- \
+      --asset scene.glb --expected scene.glb.expected.json [--tol 1e-5]
+
+Present: max vertex error <= tol. Hidden: the body's vertices on one point (spread <= 1e-6 m),
+which is what scale 0 on the body node (the armature object) gives in Blender. Exit status 0 only if every check
+passes.
+"""
+import argparse
+import json
+import os
+import sys
+
+import bpy
+import numpy as np
+
+sys.dont_write_bytecode = True  # run from the source tree: leave no __pycache__ there
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_harness as harness  # noqa: E402  (numpy patch, checks, exit status)
+import blender_roundtrip as rt  # noqa: E402  (world_to_model, evaluated_vertices, vertex_map)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--asset", required=True)
+    ap.add_argument("--expected", required=True)
+    ap.add_argument("--tol", type=float, default=1e-5)
+    args = ap.parse_args(harness.script_args())
+    with open(args.expected, encoding="utf-8") as fh:
+        ref = json.load(fh)
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    scene = bpy.context.scene
+    scene.render.fps, scene.render.fps_base = int(round(ref["fps"])), 1.0
+    bpy.ops.import_scene.gltf(filepath=args.asset)
+    arms = sorted(o.name for o in bpy.data.objects if o.type == "ARMATURE")
+    meshes = {o.name: o for o in bpy.data.objects if o.type == "MESH"}
+    harness.check(arms == sorted(ref["bodies"]), "armatures %s for bodies %s" % (arms, sorted(ref["bodies"])))
+    cameras = [o for o in bpy.data.objects if o.type == "CAMERA"]
+    harness.check(len(cameras) == (1 if ref.get("camera") else 0), "%d cameras" % len(cameras))
+    worst = 0.0
+    for name, body in sorted(ref["bodies"].items()):
+        obj = meshes.get(name + "_mesh")
+        if not harness.check(obj is not None, "no mesh object %s (have %s)" % (name, sorted(meshes))):
+            continue
+        # The map reads the rest mesh through the object's world matrix, which the armature's
+        # scale 0 collapses while the body is hidden: take it at a frame where it is shown.
+        shown = [f for f, v in zip(body["frames"], body["vertices"]) if v != "hidden"]
+        scene.frame_set(shown[0] - ref["first_frame"])
+        index, _ = rt.vertex_map(obj, np.array(body["rest"]))
+        for frame, want in zip(body["frames"], body["vertices"]):
+            scene.frame_set(frame - ref["first_frame"])  # the importer keys time t at frame t * fps
+            bpy.context.view_layer.update()
+            got = rt.evaluated_vertices(obj)
+            if want == "hidden":
+                spread = float(np.ptp(got, axis=0).max())
+                print("blender %s frame %d hidden spread_m %.3e" % (name, frame, spread))
+                harness.check(spread <= 1e-6, "%s frame %d: not hidden (spread %.3g m)" % (name, frame, spread))
+                continue
+            err = float(np.abs(got - np.array(want)[index]).max())
+            worst = max(worst, err)
+            print("blender %s frame %d max_err_m %.3e" % (name, frame, err))
+            harness.check(err <= args.tol, "%s frame %d: max vertex error %.3g m > %g" % (name, frame, err, args.tol))
+    print("blender scene worst max_err_m %.3e" % worst)
+
+
+if __name__ == "__main__":
+    harness.run(main)
