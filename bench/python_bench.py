@@ -8,7 +8,8 @@
    lbs() when it is importable (or --smplx-checkout DIR, a checkout of github.com/vchoutas/smplx),
    else `torch_lbs` below, a line-for-line port of vchoutas/smplx smplx/lbs.py lbs() (commit
    1265df7b: blend_shapes, vertices2joints, batch_rodrigues, batch_rigid_transform, the skinning
-   matmuls), float32 on the CPU with torch's default threads, BATCH frames per call, no grad.
+   matmuls), float32 on the CPU on every core (torch.set_num_threads: model.forward uses every
+   core too), BATCH frames per call, no grad; the two are timed in turn, best of REPEAT.
    Both produce (T,V,3) vertices and (T,K,3) joints in float32; the best of REPEAT runs.
 2. se.export against the smpl-export process on the same request (the stand-in and its motion,
    --frames 0:EXPORT_FRAMES, GLB): the CLI's whole-process wall time vs se.load_model +
@@ -100,13 +101,16 @@ def lbs_function(checkout):
         return torch_lbs, "torch_lbs (port of vchoutas/smplx smplx/lbs.py lbs())"
 
 
-def best_of(repeat, work):
-    best = None
+def best_of(repeat, *works):
+    """The best wall time of each of `works` over `repeat` rounds, run in turn within a round so
+    that a machine shared with other work loads both sides alike."""
+    best = [None] * len(works)
     for _ in range(repeat):
-        start = time.perf_counter()
-        work()
-        seconds = time.perf_counter() - start
-        best = seconds if best is None else min(best, seconds)
+        for i, work in enumerate(works):
+            start = time.perf_counter()
+            work()
+            seconds = time.perf_counter() - start
+            best[i] = seconds if best[i] is None else min(best[i], seconds)
     return best
 
 
@@ -118,9 +122,9 @@ def bench_forward(se, model_path, frames, batch, repeat, checkout):
     poses = (rng.uniform(-1.0, 1.0, (frames, k, 3)) / np.sqrt(3.0)).astype(np.float32)
     betas = rng.normal(0, 1, 10).astype(np.float32)
     model.forward(betas, poses[:2])  # warm-up (posedirs packed once per model)
-    ours = best_of(repeat, lambda: model.forward(betas, poses))
 
     lbs, which = lbs_function(checkout)
+    torch.set_num_threads(os.cpu_count() or 1)  # as many as model.forward uses (every core)
     n = data["v_template"].shape[0]
     kintree = data["kintree_table"].astype(np.int64)
     parents = torch.tensor([-1] + list(kintree[0, 1:]), dtype=torch.long)
@@ -140,7 +144,7 @@ def bench_forward(se, model_path, frames, batch, repeat, checkout):
                 lbs(tbetas[:p.shape[0]], p, v_template, shapedirs, posedirs, j_regressor, parents, weights)
 
     run_torch()  # warm-up
-    theirs = best_of(repeat, run_torch)
+    ours, theirs = best_of(repeat, lambda: model.forward(betas, poses), run_torch)
     with torch.no_grad():  # same vertices (float32 both: within float rounding)
         v_t, _ = lbs(tbetas[:4], tposes[:4], v_template, shapedirs, posedirs, j_regressor, parents, weights)
     v_o, _ = model.forward(betas, poses[:4])
@@ -156,13 +160,13 @@ def bench_export(se, exe, model_path, motion_path, frames, repeat, work):
     args = [exe, "--model", model_path, "--motion", motion_path, "--frames", f"0:{frames}",
             "--out", out, "--quiet"]
     subprocess.run(args, check=True)  # warm-up (page cache)
-    cli = best_of(repeat, lambda: subprocess.run(args, check=True))
     expected = open(out, "rb").read()
     got = []
-    cold = best_of(repeat, lambda: got.append(se.export(se.load_model(model_path), motion=motion_path,
-                                                        frames=f"0:{frames}")))
     model = se.load_model(model_path)
-    warm = best_of(repeat, lambda: se.export(model, motion=motion_path, frames=f"0:{frames}"))
+    cli, cold, warm = best_of(
+        repeat, lambda: subprocess.run(args, check=True),
+        lambda: got.append(se.export(se.load_model(model_path), motion=motion_path, frames=f"0:{frames}")),
+        lambda: se.export(model, motion=motion_path, frames=f"0:{frames}"))
     assert got[-1] == expected, "se.export and the CLI wrote different bytes"
     print(f"export {frames} frames SMPL-X GLB ({len(expected) / 1e6:.1f} MB): CLI process "
           f"{cli * 1e3:.0f} ms, se.load_model + se.export {cold * 1e3:.0f} ms, se.export on a "

@@ -20,20 +20,25 @@ def test_threads_export_the_same_bytes(se):
     smpl = se.load_model(MODELS / "smpl_small.npz")
     jobs = [(model, str(AMASS), "glb"), (model, str(AMASS), "fbx"), (model, None, "bvh"),
             (smpl, str(VIDEO / "wham" / "wham_output.pkl"), "glb")]
-    expected = [se.export(m, motion=x, format=f) for m, x, f in jobs]
+    frames = {"frames": "0:40"}  # short clips: the test is about concurrency, not length
+
+    def one(m, x, f):
+        return se.export(m, motion=x, format=f, **(frames if x else {}))
+
+    expected = [one(*job) for job in jobs]
     results = {}
     errors = []
 
     def work(i):
         try:
-            m, x, f = jobs[i % len(jobs)]
-            results[i] = se.export(m, motion=x, format=f)
+            m = jobs[i % len(jobs)][0]
+            results[i] = one(*jobs[i % len(jobs)])
             v, _ = m.forward(None, np.zeros((3, len(m.joint_names), 3)))
             assert v.shape[0] == 3
         except Exception as e:  # reported below
             errors.append(e)
 
-    threads = [threading.Thread(target=work, args=(i,)) for i in range(12)]
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(8)]
     for t in threads:
         t.start()
     for t in threads:
@@ -57,8 +62,8 @@ def test_gil_is_released_while_exporting(se):
     t = threading.Thread(target=ticker)
     t.start()
     before = len(ticks)
-    for _ in range(3):
-        se.export(model, motion=str(AMASS), format="fbx")
+    for _ in range(2):
+        se.export(model, motion=str(AMASS), format="fbx", frames="0:60")
     done.set()
     t.join()
     assert len(ticks) - before > 5
