@@ -5,6 +5,7 @@
 
 #include "core/io/name_component.h"
 #include "core/motions/motion_fit.h"
+#include "core/motions/motion_layout.h"
 #include "core/motions/motion_sequence.h"
 #include "core/os/path.h"
 
@@ -41,6 +42,21 @@ Result<Motion> decodeMotion(const std::string& path, const ExportRequest& r) {
   TrackChoice choice = r.track;
   if (choice.kind == TrackChoice::Kind::All) choice.kind = TrackChoice::Kind::Longest;
   Result<std::vector<Motion>> picked = selectTracks(std::move(*set), choice, path);
+  if (!picked) return picked.error();
+  return std::move(picked->front());
+}
+
+Result<Motion> decodeMotionTree(DataNode root, const std::string& name, const ExportRequest& r) {
+  ++decoded;
+  bool flat = root.isDict();  // np.savez of it: an .npz
+  for (const DataNode& child : root.children) flat = flat && child.isArray();
+  const unsigned containers = flat ? kNpzFile : kAnyContainer & ~kNpzFile;
+  Result<MotionSet> set =
+      loadMotionSetFromTree(std::move(root), containers, name, motionOptionsOf(r));
+  if (!set) return set.error();
+  TrackChoice choice = r.track;
+  if (choice.kind == TrackChoice::Kind::All) choice.kind = TrackChoice::Kind::Longest;
+  Result<std::vector<Motion>> picked = selectTracks(std::move(*set), choice, name);
   if (!picked) return picked.error();
   return std::move(picked->front());
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/body_model.h"
+#include "core/data_node.h"
 #include "core/motions/motion.h"
 #include "core/motions/motion_tracks.h"
 #include "core/result.h"
@@ -26,6 +27,13 @@ Result<MotionSet> decodeMotionSet(const std::string& path, const ExportRequest& 
 // The one track the request's --track picks (longest or an id; `all` is the
 // caller's: one export per track), with its notes. Errors: an unknown id.
 Result<Motion> decodeMotion(const std::string& path, const ExportRequest& request);
+
+// The same for a motion given as data (the Python module's dict of arrays,
+// core/motions/motion.h loadMotionSetFromTree): `root` read as np.savez of it
+// when it is a flat dict of arrays (as `.npz`), else as a torch.save'd or
+// pickled tree; `name` names it in errors and is the clip's name (its stem).
+Result<Motion> decodeMotionTree(DataNode root, const std::string& name,
+                                const ExportRequest& request);
 
 // Fit hand poses (PCA coefficients, hands_mean) through `model`'s basis, with
 // the request's --flat-hand-mean (core/motions/motion_fit.h resolveFitHands).

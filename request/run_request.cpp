@@ -81,10 +81,13 @@ struct Loaded {
 };
 
 Result<Loaded> loadJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
-                       Stage* stage, const Motion* given) {
+                       Stage* stage, std::vector<Motion> given) {
   Loaded loaded;
-  if (given) loaded.motions.push_back(*given);  // a track of --track all, decoded by the caller
-  for (size_t i = given ? 1 : 0; i < r.motions.size(); ++i) {  // exceptions: "exporting <out>"
+  // The first motions decoded by the caller: a track of --track all, or the
+  // Python module's motions (read from memory).
+  loaded.motions = std::move(given);
+  for (size_t i = loaded.motions.size(); i < r.motions.size();
+       ++i) {  // exceptions: "exporting <out>"
     const std::string& path = r.motions[i];
     Result<Motion> m = decodeMotion(path, r);
     if (!m) return fail(ErrorKind::Load, "loading", path, m.message());
@@ -186,6 +189,19 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, Loaded* 
   return asset;
 }
 
+// The output file's bytes in memory, as writeFilesTogether would write them:
+// the serialised head, then the tail parts (a GLB's BIN chunk, splices).
+Result<size_t> keepJob(const ExportRequest& r, const Asset& asset, const Writer& writer,
+                       std::string* memory) {
+  Result<Writer::Files> files = writer.serializeFiles(asset, writerOptionsOf(r, ""));
+  if (!files) return exportFailure(r.out, files.error(), "");
+  *memory = std::move(files->bytes);
+  memory->reserve(files->size());
+  for (const ByteSpan& part : files->tailParts())
+    memory->append(static_cast<const char*>(part.data), part.size);
+  return memory->size();
+}
+
 // The producer hash of the request's output (request/producer.h).
 Result<std::string> producerOf(const ExportRequest& r) {
   if (!r.producer_hash.empty()) return r.producer_hash;
@@ -216,8 +232,11 @@ Result<size_t> commitFiles(const ExportRequest& r, const std::string& buffer_pat
   return files->size() + files->buffer.size();
 }
 
-// Serialise and commit the output, its buffer and its sidecar.
-Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer& writer) {
+// Serialise and commit the output, its buffer and its sidecar; with
+// `memory`, keep the output there instead (nothing is written, no sidecar).
+Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer& writer,
+                        std::string* memory) {
+  if (memory) return keepJob(r, asset, writer, memory);
   const std::string buffer_path = gltfBufferPath(r, r.out);
   return commitFiles(r, buffer_path, writer.serializeFiles(asset, writerOptionsOf(r, buffer_path)),
                      [&](const std::string& producer, const std::vector<FileContent>& contents) {
@@ -226,14 +245,15 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
 }
 
 Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
-                            Stage* stage, const Motion* given = nullptr) {
+                            Stage* stage, std::vector<Motion> given = {},
+                            std::string* memory = nullptr) {
   const auto start = std::chrono::steady_clock::now();
   const Writer* writer = writerForPath(r.out);
   if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
-  if (r.clean_temporaries)
+  if (r.clean_temporaries && !memory)
     removeStaleTemps(dirName(r.out), {baseName(r.out), baseName(r.out) + ".smpl.json",
                                       baseName(gltfBufferPath(r, r.out))});
-  Result<Loaded> loaded = loadJob(r, inputs, models, stage, given);
+  Result<Loaded> loaded = loadJob(r, inputs, models, stage, std::move(given));
   if (!loaded) return loaded.error();
   ExportReport report;
   report.out = r.out;
@@ -254,7 +274,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
   if (!measure) asset->corrective_refit = CorrectiveRefit();
   returnFreedHeap();
-  Result<size_t> bytes = writeJob(r, *asset, *writer);
+  Result<size_t> bytes = writeJob(r, *asset, *writer, memory);
   if (!bytes) return bytes.error();
   if (measure) {  // after the write, without the clips: a long clip's tracks are gone first
     asset->animations.clear();
@@ -364,7 +384,7 @@ Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelS
     job.out = outs[i];
     stage.set("exporting", job.out, ErrorKind::Export);
     Result<ExportReport> one = guarded<ExportReport>(
-        &stage, [&] { return runJob(job, *inputs, models, &stage, &(*tracks)[i]); });
+        &stage, [&] { return runJob(job, *inputs, models, &stage, {(*tracks)[i]}); });
     if (!one) return one.error();
     reports.push_back(std::move(*one));
   }
@@ -496,6 +516,43 @@ Result<ExportReport> runExportRequest(const ExportRequest& r, ModelSource* model
   Result<RunInputs> inputs = loadRunInputs(r, models);
   if (!inputs) return inputs.error();
   return runExportJob(r, *inputs, models);
+}
+
+namespace {
+
+// The checks and inputs of runExportRequest, then the job on the caller's
+// motions; the path guard only when a file is written.
+Result<ExportReport> runDecoded(const ExportRequest& r, std::vector<Motion> motions,
+                                ModelSource* models, std::string* memory) {
+  if (Status st = beginRun(r); !st) return st.error();
+  if (motions.size() > r.motions.size()) return usage("more decoded motions than motion names");
+  if (!memory)
+    if (Status st = checkRunPaths(runPaths(r, {r.out}, r.motions)); !st) return usage(st.message());
+  Result<RunInputs> inputs = loadRunInputs(r, models);
+  if (!inputs) return inputs.error();
+  Stage stage;
+  stage.set("exporting", r.out, ErrorKind::Export);
+  return guarded<ExportReport>(
+      &stage, [&] { return runJob(r, *inputs, models, &stage, std::move(motions), memory); });
+}
+
+}  // namespace
+
+Result<ExportedBytes> exportToMemory(const ExportRequest& r, std::vector<Motion> motions,
+                                     ModelSource* models) {
+  if (const WriterFormat* format = writerFormatForPath(r.out);
+      format && format->external_buffer && !r.gltf_embed)
+    return usage(r.out + ": a .gltf held in memory needs --gltf-embed (its buffer is a file)");
+  ExportedBytes out;
+  Result<ExportReport> report = runDecoded(r, std::move(motions), models, &out.bytes);
+  if (!report) return report.error();
+  out.report = std::move(*report);
+  return out;
+}
+
+Result<ExportReport> exportDecoded(const ExportRequest& r, std::vector<Motion> motions,
+                                   ModelSource* models) {
+  return runDecoded(r, std::move(motions), models, nullptr);
 }
 
 }  // namespace smpl

@@ -82,4 +82,27 @@ Result<ExportReport> runSceneExport(const ExportRequest& request, ModelSource* m
 // before any work, loadRunInputs, runExportJob.
 Result<ExportReport> runExportRequest(const ExportRequest& request, ModelSource* models);
 
+// Exports whose first motions are already decoded (the Python module,
+// python/: motions read from memory or read once and exported many times):
+// `motions[i]` is the decoded request.motions[i] (which names it in errors,
+// notes and the producer hash); the request's other motions are read as
+// runExportRequest reads them. Otherwise the same steps and errors.
+//
+// exportToMemory keeps the output instead of writing it: request.out names
+// the format only (its extension), no path is guarded or written and no
+// sidecar is made (it describes files on disk); `bytes` are the bytes the
+// CLI writes to request.out. A .gltf needs --gltf-embed (its buffer is a
+// second file). Usage error (exit 1): a .gltf without it.
+struct ExportedBytes {
+  std::string bytes;
+  ExportReport report;
+};
+Result<ExportedBytes> exportToMemory(const ExportRequest& request, std::vector<Motion> motions,
+                                     ModelSource* models);
+
+// The same, written as runExportRequest writes it (path guard, output and
+// sidecar committed together).
+Result<ExportReport> exportDecoded(const ExportRequest& request, std::vector<Motion> motions,
+                                   ModelSource* models);
+
 }  // namespace smpl

@@ -33,6 +33,9 @@ ALLOWED = {
                 "exporter", "writers"],
     "cli": ["core", "core/math", "core/io", "core/models", "core/motions", "core/demo", "exporter", "writers",
             "request"],
+    # The Python module: a front end beside cli/, whose option parser it reuses.
+    "python": ["core", "core/math", "core/io", "core/models", "core/motions", "core/demo", "exporter",
+               "writers", "request", "cli"],
     "tools": ["core", "core/math", "core/io", "core/models", "core/motions", "core/demo", "exporter",
               "writers", "writers/gltf", "writers/fbx", "request", "tools/bench"],
     "tools/bench": ["core", "core/math", "core/io", "core/models", "core/motions", "core/demo", "exporter",

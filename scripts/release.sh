@@ -15,6 +15,11 @@
 # the installed files are built; ccache makes a rebuild nearly free).
 #   smpl-export-wasm-<version>.tgz           the WebAssembly npm package (scripts/build-wasm.sh;
 #                                   node CLI `smpl-export`, one thread, no Draco)
+#   smpl_export-<version>-cp3XX-cp3XX-linux_x86_64.whl  the Python module (docs/python.md):
+#                                   `pip wheel` with Debian's setuptools and wheel, offline (no
+#                                   build isolation, no index: python3-build would do the same
+#                                   with --no-isolation, one package more); setup.py builds the
+#                                   extension with CMake in build-wheel/ (Release, ccache)
 # --windows, --npm and --all are accepted (every artifact is always built).
 #   scripts/release.sh [--windows] [--npm] [--all]
 set -euo pipefail
@@ -76,6 +81,14 @@ scripts/build-wasm.sh >build-windows-deps/wasm-build.log 2>&1 || {
 # npm pack writes the UPM tarball layout (package/...); the Unity package has no scripts to run.
 (cd unity && npm pack --silent --pack-destination "$dist" >/dev/null)
 
+# The Python wheel: the extension from build-wheel/ (a dynamic Release build: a Python
+# extension is a shared object, unlike the static CLI), the shim and its stubs.
+SMPL_BUILD_DIR=$PWD/build-wheel /usr/bin/python3 -m pip wheel --no-build-isolation --no-index \
+  --no-deps -w "$dist" . >build-windows-deps/wheel.log 2>&1 || {
+  tail -20 build-windows-deps/wheel.log >&2
+  echo "release.sh: the Python wheel failed (build-windows-deps/wheel.log)" >&2
+  exit 1
+}
 (cd "$dist" && sha256sum -- * >SHA256SUMS)
 echo "dist/:"
 (cd "$dist" && ls -l | tail -n +2)

@@ -8,6 +8,7 @@
 #include "core/io/file_io.h"
 #include "core/joint_names.h"
 #include "core/motions/motion_internal.h"
+#include "core/motions/motion_layout.h"
 #include "core/motions/motion_read.h"
 #include "core/motions/validate_motion.h"
 
@@ -92,15 +93,12 @@ std::string stemOf(const std::string& path) {
   return name.substr(0, name.rfind('.'));
 }
 
-}  // namespace
-
-Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& options) {
-  Result<MotionFile> file = readMotionFile(path);
-  if (!file) return file.error();
-  const MotionLayout* row = file->layout;
-  if (!row) return makeError(path + ": " + unmatchedMessage(file->root));
+// The row's decode of `root`, then each track's name, rate, world note and checks.
+Result<MotionSet> decodeFile(const DataNode& root, const MotionLayout* row, const std::string& path,
+                             const MotionOptions& options) {
+  if (!row) return makeError(path + ": " + unmatchedMessage(root));
   MotionSet set;
-  if (Status s = row->decode(file->root, LayoutInput{path, options}, &set); !s) return s.error();
+  if (Status s = row->decode(root, LayoutInput{path, options}, &set); !s) return s.error();
   // One frame of a --motion-sequence may hold no one (Multi-HMR: an image without a detection).
   if (set.tracks.empty() && !options.frame_file) return makeError(path + ": no motion in the file");
   for (Motion& m : set.tracks) {
@@ -115,6 +113,32 @@ Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& op
     if (Status st = checkMotionValues(&m, path); !st) return st.error();
   }
   return set;
+}
+
+}  // namespace
+
+Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& options) {
+  Result<MotionFile> file = readMotionFile(path);
+  if (!file) return file.error();
+  return decodeFile(file->root, file->layout, path, options);
+}
+
+Result<MotionSet> loadMotionSetFromTree(DataNode root, unsigned containers, const std::string& path,
+                                        const MotionOptions& options) {
+  const MotionLayout* row = root.isDict() ? findLayout(root, containers) : nullptr;
+  if (row && containers == kNpzFile) {  // an .npz decodes only the row's keys, in its order
+    DataNode keys;
+    keys.kind = DataNode::Kind::Dict;
+    for (const std::string& key : row->keys)
+      for (size_t i = root.keys.size(); i-- > 0;)  // the last of a repeated key, as get()
+        if (root.keys[i] == key) {
+          keys.keys.push_back(key);
+          keys.children.push_back(std::move(root.children[i]));
+          break;
+        }
+    root = std::move(keys);
+  }
+  return decodeFile(root, row, path, options);
 }
 
 Result<Motion> loadMotion(const std::string& path, const MotionOptions& options) {

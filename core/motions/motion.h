@@ -20,6 +20,7 @@
 
 #include "core/array.h"
 #include "core/body_model.h"
+#include "core/data_node.h"
 #include "core/math/forward.h"
 #include "core/memory_budget.h"
 #include "core/motions/scene_camera.h"
@@ -130,6 +131,16 @@ struct MotionSet {
 // (options.frame_file: a Multi-HMR image without a person), which may be empty.
 Result<MotionSet> loadMotionSet(const std::string& path,
                                 const MotionOptions& options = MotionOptions());
+
+// The same for a motion given as data, not as a file (the Python module's
+// dict of arrays): `root` as a container reader builds it (a Dict; leaves
+// widened to double, core/data_node.h), `containers` the ContainerBits
+// (motion_layout.h) it may stand for: kNpzFile for a flat dict of arrays (the
+// row's keys are decoded, as from np.savez of that dict), others for a
+// nested one (a torch.save'd dict). `path` names it in errors and names the
+// tracks (its stem). Same rows, decode, rate and checks as loadMotionSet.
+Result<MotionSet> loadMotionSetFromTree(DataNode root, unsigned containers, const std::string& path,
+                                        const MotionOptions& options = MotionOptions());
 
 // The file's first track, with the file's notes first among its notes.
 Result<Motion> loadMotion(const std::string& path, const MotionOptions& options = MotionOptions());
