@@ -383,8 +383,11 @@ Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelS
     ExportRequest job = r;
     job.out = outs[i];
     stage.set("exporting", job.out, ErrorKind::Export);
-    Result<ExportReport> one = guarded<ExportReport>(
-        &stage, [&] { return runJob(job, *inputs, models, &stage, {(*tracks)[i]}); });
+    Result<ExportReport> one = guarded<ExportReport>(&stage, [&] {
+      std::vector<Motion> given;
+      given.push_back(std::move((*tracks)[i]));
+      return runJob(job, *inputs, models, &stage, std::move(given));
+    });
     if (!one) return one.error();
     reports.push_back(std::move(*one));
   }
@@ -426,10 +429,12 @@ Result<MotionSet> sceneTracks(const ExportRequest& r, Stage* stage) {
 // One body of the scene: the one-body export's load and build (loadJob,
 // buildJob) of `track` under the body's name, its notes into `report`.
 Result<Asset> sceneBody(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
-                        Stage* stage, const Motion& track, ExportReport* report) {
+                        Stage* stage, Motion track, ExportReport* report) {
   ExportRequest job = r;
   job.name = bodyName(r.name, track.track);
-  Result<Loaded> loaded = loadJob(job, inputs, models, stage, &track);
+  std::vector<Motion> given;
+  given.push_back(std::move(track));
+  Result<Loaded> loaded = loadJob(job, inputs, models, stage, std::move(given));
   if (!loaded) return loaded.error();
   ExportReport body;
   Result<Asset> asset = buildJob(job, inputs, &*loaded, &body);
@@ -462,19 +467,22 @@ Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, M
   ExportReport report;
   report.out = r.out;
   report.betas_note = inputs.betas_note;
+  // The scene's name, rate and world come from the first track (the tracks move into their bodies).
+  const std::string name = set->tracks.front().name;
+  const double fps = set->tracks.front().fps;
+  const auto world = set->tracks.front().world;
   std::vector<SceneBodyInput> bodies;
   for (Motion& track : set->tracks) {
     stage->set("exporting", r.out, ErrorKind::Export);
-    Result<Asset> asset = sceneBody(r, inputs, models, stage, track, &report);
-    if (!asset) return asset.error();
     std::vector<bool> detected(track.held.size());
     for (size_t i = 0; i < detected.size(); ++i) detected[i] = !track.held[i];
-    bodies.push_back(SceneBodyInput{std::move(*asset), track.track, std::move(detected)});
-    releaseFrames(&track);
+    const std::string id = track.track;
+    Result<Asset> asset = sceneBody(r, inputs, models, stage, std::move(track), &report);
+    if (!asset) return asset.error();
+    bodies.push_back(SceneBodyInput{std::move(*asset), id, std::move(detected)});
   }
-  const Motion& first = set->tracks.front();
-  Result<SceneAsset> scene = composeScene(first.name, std::move(bodies), first.fps, set->camera,
-                                          worldTurn(r.up, first.world), r.motions.front());
+  Result<SceneAsset> scene = composeScene(name, std::move(bodies), fps, set->camera,
+                                          worldTurn(r.up, world), r.motions.front());
   if (!scene) return fail(ErrorKind::Load, "loading", r.motions.front(), scene.message());
   for (const std::string& note : scene->notes) report.notes.push_back(note);
   returnFreedHeap();

@@ -65,6 +65,7 @@ FILES = {
     "vibe_output.pkl": "layouts/video/vibe/vibe_output.pkl",
     "demo_video.pkl": "layouts/video/phalp/demo_video.pkl",
     "hmr4d_results.pt": "layouts/video/gvhmr/hmr4d_results.pt",
+    "results.pkl": "layouts/video/prompthmr/results.pkl",
     "results/seq": "layouts/video/tram/seq",
     "video_results.npz": "layouts/video/romp/video_results.npz",
     "output/smpl": "layouts/video/easymocap/smpl",

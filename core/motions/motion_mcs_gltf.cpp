@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/io/base64.h"
+#include "core/math/rotation.h"
 
 namespace smpl {
 namespace mcs {
@@ -96,7 +97,7 @@ Eigen::VectorXd sample(const Channel& c, double t, double frame_time) {
   const double w = (t - c.times[k - 1]) / (c.times[k] - c.times[k - 1]);
   if (c.width != 4) return (1 - w) * key(k - 1) + w * key(k);
   const Eigen::Quaterniond q =
-      quaternion(&c.values[(k - 1) * 4]).slerp(w, quaternion(&c.values[k * 4]));
+      slerp(quaternion(&c.values[(k - 1) * 4]), w, quaternion(&c.values[k * 4]));
   Eigen::VectorXd out(4);
   out << q.x(), q.y(), q.z(), q.w();
   return out;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/io/printable.h"
+#include "core/math/libm.h"
 #include "core/motions/motion_internal.h"
 #include "core/motions/motion_tracks.h"
 #include "core/motions/motion_video_rows.h"
@@ -154,7 +155,7 @@ Status readCamera(const DataNode& root, const LayoutInput& in, bool world, Motio
   const std::vector<double> focal = scalars(*cam, "img_focal", 1),
                             centre = scalars(*cam, "img_center", 2);
   if (!focal.empty() && !centre.empty()) {
-    c.yfov = 2.0 * std::atan(centre[1] / focal[0]);
+    c.yfov = 2.0 * libm::atan(centre[1] / focal[0]);
     c.aspect = centre[0] / centre[1];
   }
   out->notes.push_back(world ? "scene camera from 'camera_world' (Rcw, Tcw; " + std::to_string(n) +

@@ -33,7 +33,9 @@ import model_math  # noqa: E402  (tests/roundtrip, on the path through video_cas
 TOLERANCE = 1e-5
 SENSITIVITY = 1e-3
 FIXTURES = {"wham": "layouts/video/wham/wham_output.pkl", "vibe": "layouts/video/vibe/vibe_output.pkl",
-            "phalp": "layouts/video/phalp/demo_video.pkl"}
+            "phalp": "layouts/video/phalp/demo_video.pkl", "prompthmr": "layouts/video/prompthmr/results.pkl"}
+MODELS = {"prompthmr": "smplx_small"}  # the family the tool writes; smpl_small otherwise
+CAMERA_TOLERANCE = 1e-5  # metres (position), and the largest entry of a rotation matrix's difference
 FAILED = []
 
 
@@ -184,6 +186,8 @@ def detections(layout, path):
     """The source frames of each track id's detections, as the tools store them: WHAM and VIBE
     frame_ids; PHALP per frame `tid` with tracked_time 0 (a detection) at frame `time`."""
     data = joblib.load(path)
+    if layout == "prompthmr":  # yufu-wang/PromptHMR pipeline/world.py: people[id]['frames']
+        return {str(int(k)): set(int(f) for f in np.asarray(p["frames"])) for k, p in data["people"].items()}
     if layout == "phalp":
         out = {}
         for frame in data.values():
@@ -194,7 +198,75 @@ def detections(layout, path):
     return {str(int(k)): set(int(f) for f in np.asarray(v["frame_ids"])) for k, v in data.items()}
 
 
-def expected_clients(refs, detected, first, end, fps, m, weights):
+# glTF cameras look down their local -z with +y up (glTF 2.0 spec, "Cameras"); OpenCV's (PromptHMR's)
+# look down +z with +y down: the same axes turned by diag(1, -1, -1).
+OPENCV_TO_GLTF = np.diag([1.0, -1.0, -1.0])
+
+
+def expected_camera(layout, path):
+    """{frame: (3x3 camera-to-world rotation in glTF camera axes, centre)} and (yfov, aspect) of the
+    file's camera, from the tool's own fields: PromptHMR pipeline/world.py camera_world Rwc (the camera's
+    axes in the world), Twc (its centre), img_focal and img_center in pixels. None for a file without one.
+    Also the plausible wrong readings (Rcw / Tcw taken as camera-to-world; the OpenCV axes kept)."""
+    if layout != "prompthmr":
+        return None
+    cam = joblib.load(path)["camera_world"]
+    rwc, twc = np.asarray(cam["Rwc"], float), np.asarray(cam["Twc"], float)
+    rcw, tcw = np.asarray(cam["Rcw"], float), np.asarray(cam["Tcw"], float)
+    right = {f: (rwc[f] @ OPENCV_TO_GLTF, twc[f]) for f in range(len(rwc))}
+    wrong = {"Rcw/Tcw as camera-to-world": {f: (rcw[f] @ OPENCV_TO_GLTF, tcw[f]) for f in range(len(rwc))},
+             "OpenCV axes kept": {f: (rwc[f], twc[f]) for f in range(len(rwc))}}
+    focal, centre = float(cam["img_focal"]), np.asarray(cam["img_center"], float)
+    return {"frames": right, "wrong": wrong, "yfov": 2 * np.arctan(centre[1] / focal),
+            "aspect": centre[0] / centre[1]}
+
+
+def check_camera(player, want, first, end, fps):
+    """The file's camera node played at every scene frame against `want` (expected_camera)."""
+    doc = player.doc
+    nodes = [i for i, n in enumerate(doc["nodes"]) if "camera" in n]
+    if want is None:
+        check(not nodes, "a camera node in a file without a camera")
+        return
+    if not nodes:
+        check(False, "no camera node")
+        return
+    node = nodes[0]
+    persp = doc["cameras"][doc["nodes"][node]["camera"]].get("perspective", {})
+    check(abs(persp.get("yfov", 0) - want["yfov"]) <= 1e-6 and abs(persp.get("aspectRatio", 0) - want["aspect"]) <= 1e-6,
+          "camera yfov/aspect %s, expected %.6f / %.6f" % (persp, want["yfov"], want["aspect"]))
+    worst, gaps = 0.0, {k: 0.0 for k in want["wrong"]}
+    for f in range(first, end):
+        if f not in want["frames"]:
+            continue
+        world, _ = player.world_matrices((f - first) / fps)
+        got_r, got_c = world[node][:3, :3], world[node][:3, 3]
+        r, c = want["frames"][f]
+        worst = max(worst, float(np.abs(got_r - r).max()), float(np.abs(got_c - c).max()))
+        for k, frames in want["wrong"].items():
+            wr, wc = frames[f]
+            gaps[k] = max(gaps[k], float(np.abs(got_r - wr).max()), float(np.abs(got_c - wc).max()))
+    print("camera: %d frames, max_err %.3e (rotation entries, metres); yfov %.6f aspect %.6f"
+          % (len(want["frames"]), worst, persp.get("yfov", 0), persp.get("aspectRatio", 0)))
+    check(worst <= CAMERA_TOLERANCE, "camera off by %.3g" % worst)
+    for k, gap in gaps.items():
+        print("camera: wrong reading %-28s %.3e away" % (k + ":", gap))
+        check(gap >= SENSITIVITY, "camera: the wrong reading %r is only %.3g away" % (k, gap))
+
+
+def camera_for_clients(want, first, end):
+    """The camera per checked scene frame as the clients see it: its centre, view direction (local -z)
+    and up (local +y) in the file's axes."""
+    if want is None:
+        return False
+    frames = [f for f in sorted({first, (first + end) // 2, end - 1}) if f in want["frames"]]
+    return {"frames": frames,
+            "position": [want["frames"][f][1].tolist() for f in frames],
+            "direction": [(-want["frames"][f][0][:, 2]).tolist() for f in frames],
+            "up": [want["frames"][f][0][:, 1].tolist() for f in frames]}
+
+
+def expected_clients(refs, detected, first, end, fps, m, weights, camera=False):
     """What the three.js and Blender checks compare with: per body (named body_<id>) its rest mesh,
     a few scene frames (its first, middle and last detection, the scene's first and last frame and
     the first frame of a gap where it is absent) with numpy's vertices or "hidden"."""
@@ -211,12 +283,12 @@ def expected_clients(refs, detected, first, end, fps, m, weights):
             "frames": frames,
             "vertices": [video_cases.vertices(c, m, f - start, weights).tolist() if f in present else "hidden"
                          for f in frames]}
-    return {"fps": fps, "first_frame": first, "end_frame": end, "camera": False, "bodies": bodies}
+    return {"fps": fps, "first_frame": first, "end_frame": end, "camera": camera, "bodies": bodies}
 
 
 def client(cmd, what):
     run = subprocess.run(cmd, capture_output=True, text=True)
-    lines = [line for line in run.stdout.splitlines() if "max_err_m" in line or "spread" in line or "FAIL" in line]
+    lines = [line for line in run.stdout.splitlines() if "max_err" in line or "spread" in line or "FAIL" in line]
     print("\n".join("%s: %s" % (what, line.strip()) for line in lines))
     check(run.returncode == 0, "%s check failed (exit %d): %s" % (
         what, run.returncode, " | ".join((run.stdout + run.stderr).strip().splitlines()[-15:])))
@@ -267,7 +339,8 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
     fixture = os.path.join(a.fixtures, FIXTURES[a.layout])
-    model_path = os.path.join(a.fixtures, "models", "smpl_small.npz")
+    model_name = MODELS.get(a.layout, "smpl_small")
+    model_path = os.path.join(a.fixtures, "models", model_name + ".npz")
     out = os.path.join(a.work, a.layout + "_scene.glb")
     for p in (out, out + ".smpl.json"):
         if os.path.exists(p):
@@ -281,9 +354,9 @@ def main():
         sys.exit("FAIL: exit %d: %s" % (run.returncode, run.stderr.strip()))
     check("scene: " in run.stderr, "no scene note on stderr: %r" % run.stderr[-400:])
 
-    m = video_cases.load_model(a.fixtures, "smpl_small")
+    m = video_cases.load_model(a.fixtures, model_name)
     weights = model_math.prune(m["weights"], 4)
-    case = {"name": a.layout + "_scene", "fixture": FIXTURES[a.layout], "model": "smpl_small",
+    case = {"name": a.layout + "_scene", "fixture": FIXTURES[a.layout], "model": model_name,
             "args": ["--track", "all"], "outputs": None, "frames": [], "expression": None}
     refs = {sfx[len(".track"):-len(".glb")]: c for sfx, c in video_cases.clips(case, a.fixtures, m)}
     detected = detections(a.layout, fixture)
@@ -346,7 +419,9 @@ def main():
         check(swapped >= SENSITIVITY, "%s: the other track's betas only %.3g m away" % (name, swapped))
         check(shifted >= SENSITIVITY, "%s: a one-frame shift only %.3g m away" % (name, shifted))
     print("worst max_err_m %.3e over %d bodies" % (worst, len(ids)))
-    expected = expected_clients(refs, detected, first, end, fps, m, weights)
+    camera = expected_camera(a.layout, fixture)
+    check_camera(player, camera, first, end, fps)
+    expected = expected_clients(refs, detected, first, end, fps, m, weights, camera_for_clients(camera, first, end))
     with open(out + ".expected.json", "w", encoding="utf-8") as fh:
         json.dump(expected, fh)
     if a.web_src:

@@ -137,23 +137,28 @@ set_tests_properties(cli.output_streams PROPERTIES LABELS cli)
 # forward pass (video_cases.py) where each body is present, hidden where absent, with the
 # sensitivity checks (another track's betas, a one-frame shift); web.scene: three.js plays the
 # same file; blender.scene: Blender's importer; validator.scene: the Khronos validator.
-foreach(layout wham vibe phalp)
+foreach(layout wham vibe phalp prompthmr)
   add_test(NAME cli.scene.${layout}
     COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout})
   set_tests_properties(cli.scene.${layout} PROPERTIES LABELS cli)
 endforeach()
-add_test(NAME web.scene.wham
-  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
-          --fixtures ${SMPL_FIXTURE_DIR} --layout wham --work ${CMAKE_CURRENT_BINARY_DIR}/scene_web
-          --web-src ${PROJECT_SOURCE_DIR}/tests/web)
-set_tests_properties(web.scene.wham PROPERTIES LABELS web)
-add_test(NAME blender.scene.wham
-  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
-          --fixtures ${SMPL_FIXTURE_DIR} --layout wham --work ${CMAKE_CURRENT_BINARY_DIR}/scene_blender
-          --blender ${SMPL_BLENDER})
-set_tests_properties(blender.scene.wham PROPERTIES LABELS blender TIMEOUT 600)
-add_test(NAME validator.scene.wham
-  COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js
-          ${CMAKE_CURRENT_BINARY_DIR}/scene_wham/wham_scene.glb)
-set_tests_properties(validator.scene.wham PROPERTIES DEPENDS cli.scene.wham LABELS validator)
+# PromptHMR: two SMPL-X people and the moving camera (position, view direction, up) in every client.
+foreach(layout wham prompthmr)
+  add_test(NAME web.scene.${layout}
+    COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+            --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_web_${layout}
+            --web-src ${PROJECT_SOURCE_DIR}/tests/web)
+  set_tests_properties(web.scene.${layout} PROPERTIES LABELS web)
+  add_test(NAME blender.scene.${layout}
+    COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+            --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_blender_${layout}
+            --blender ${SMPL_BLENDER})
+  set_tests_properties(blender.scene.${layout} PROPERTIES LABELS blender TIMEOUT 600)
+endforeach()
+foreach(layout wham prompthmr)
+  add_test(NAME validator.scene.${layout}
+    COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js
+            ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout}/${layout}_scene.glb)
+  set_tests_properties(validator.scene.${layout} PROPERTIES DEPENDS cli.scene.${layout} LABELS validator)
+endforeach()

@@ -67,7 +67,24 @@ def main():
             worst = max(worst, err)
             print("blender %s frame %d max_err_m %.3e" % (name, frame, err))
             harness.check(err <= args.tol, "%s frame %d: max vertex error %.3g m > %g" % (name, frame, err, args.tol))
+    if ref.get("camera") and cameras:
+        check_camera(scene, cameras[0], ref)
     print("blender scene worst max_err_m %.3e" % worst)
+
+
+def check_camera(scene, camera, ref):
+    """The camera object at each expected frame: its world position, view direction (Blender's
+    cameras look down local -z, as glTF's) and up (+y), brought to the file's axes, against numpy's."""
+    want = ref["camera"]
+    for i, frame in enumerate(want["frames"]):
+        scene.frame_set(frame - ref["first_frame"])
+        bpy.context.view_layer.update()
+        mw = np.array(camera.matrix_world)
+        got = [mw[:3, 3], -mw[:3, 2] / np.linalg.norm(mw[:3, 2]), mw[:3, 1] / np.linalg.norm(mw[:3, 1])]
+        err = max(float(np.abs(rt.world_to_model(g[None, :])[0] - np.array(w[i])).max())
+                  for g, w in zip(got, [want["position"], want["direction"], want["up"]]))
+        print("blender camera frame %d max_err %.3e" % (frame, err))
+        harness.check(err <= 1e-5, "camera frame %d: position/direction/up off by %.3g" % (frame, err))
 
 
 if __name__ == "__main__":

@@ -5,7 +5,8 @@
 // of the expected file written by tests/cli/scene_check.py (numpy's forward
 // pass): within --tol where the body is present, on one point where it is
 // hidden (scale 0 on its body node). A camera in the file must load as a
-// PerspectiveCamera named "camera".
+// PerspectiveCamera named "camera"; with an expected camera, its world
+// position, view direction (-z) and up (+y) at the expected frames.
 //
 //   node three_scene_test.mjs --asset scene.glb --expected scene.glb.expected.json [--tol 1e-5]
 //
@@ -74,7 +75,29 @@ test(`${name}: every body of the scene played by AnimationMixer vs numpy`, async
       checked++;
     });
   }
+  if (ref.camera) checkCamera(ref, cameras[0], mixer, action);
   console.log(`glb ${name} worst max_err_m ${worst.toExponential(3)} over ${checked} body frames`);
   assert.ok(checked > 0, 'no present frame checked');
   assert.ok(worst <= tol, `${name}: max vertex error ${worst} m > ${tol} m`);
 });
+
+// The camera object after AnimationMixer at each expected frame: position, view direction (three's
+// cameras look down local -z, as glTF's) and up, against numpy's in the file's axes.
+function checkCamera(ref, camera, mixer, action) {
+  const { frames, position, direction, up } = ref.camera;
+  const p = new h.THREE.Vector3(), d = new h.THREE.Vector3(), u = new h.THREE.Vector3(), q = new h.THREE.Quaternion();
+  frames.forEach((frame, i) => {
+    action.reset().play();
+    mixer.setTime((frame - ref.first_frame) / ref.fps);
+    camera.updateMatrixWorld(true);
+    camera.getWorldPosition(p);
+    camera.getWorldDirection(d);
+    u.set(0, 1, 0).applyQuaternion(camera.getWorldQuaternion(q));
+    const err = Math.max(...[p, d, u].flatMap((v, k) => {
+      const want = [position, direction, up][k][i];
+      return [Math.abs(v.x - want[0]), Math.abs(v.y - want[1]), Math.abs(v.z - want[2])];
+    }));
+    console.log(`glb camera frame ${frame} max_err ${err.toExponential(3)}`);
+    assert.ok(err <= 1e-5, `camera frame ${frame}: position/direction/up off by ${err}`);
+  });
+}
