@@ -33,8 +33,9 @@ import model_math  # noqa: E402  (tests/roundtrip, on the path through video_cas
 TOLERANCE = 1e-5
 SENSITIVITY = 1e-3
 FIXTURES = {"wham": "layouts/video/wham/wham_output.pkl", "vibe": "layouts/video/vibe/vibe_output.pkl",
-            "phalp": "layouts/video/phalp/demo_video.pkl", "prompthmr": "layouts/video/prompthmr/results.pkl"}
-MODELS = {"prompthmr": "smplx_small"}  # the family the tool writes; smpl_small otherwise
+            "phalp": "layouts/video/phalp/demo_video.pkl", "prompthmr": "layouts/video/prompthmr/results.pkl",
+            "mcs": "layouts/video/prompthmr/world4d.mcs"}
+MODELS = {"prompthmr": "smplx_small", "mcs": "smplx_small"}  # the family the tool writes; smpl_small otherwise
 CAMERA_TOLERANCE = 1e-5  # metres (position), and the largest entry of a rotation matrix's difference
 FAILED = []
 
@@ -185,6 +186,11 @@ class Player:
 def detections(layout, path):
     """The source frames of each track id's detections, as the tools store them: WHAM and VIBE
     frame_ids; PHALP per frame `tid` with tracked_time 0 (a detection) at frame `time`."""
+    if layout == "mcs":  # MC_scene_description smpl_bodies[i].frame_presence = [first, end)
+        with open(path, encoding="utf-8") as fh:
+            gltf = json.load(fh)
+        bodies = gltf["scenes"][gltf.get("scene", 0)]["extensions"]["MC_scene_description"]["smpl_bodies"]
+        return {str(i): set(range(*b["frame_presence"])) for i, b in enumerate(bodies)}
     data = joblib.load(path)
     if layout == "prompthmr":  # yufu-wang/PromptHMR pipeline/world.py: people[id]['frames']
         return {str(int(k)): set(int(f) for f in np.asarray(p["frames"])) for k, p in data["people"].items()}
@@ -208,9 +214,11 @@ def expected_camera(layout, path):
     file's camera, from the tool's own fields: PromptHMR pipeline/world.py camera_world Rwc (the camera's
     axes in the world), Twc (its centre), img_focal and img_center in pixels. None for a file without one.
     Also the plausible wrong readings (Rcw / Tcw taken as camera-to-world; the OpenCV axes kept)."""
-    if layout != "prompthmr":
+    if layout not in ("prompthmr", "mcs"):
         return None
-    cam = joblib.load(path)["camera_world"]
+    # PromptHMR writes world4d.mcs from the same camera_world (pipeline/mcs_export_cam.py): the
+    # fixture's .mcs sits beside the results.pkl it was made from.
+    cam = joblib.load(os.path.join(os.path.dirname(path), "results.pkl"))["camera_world"]
     rwc, twc = np.asarray(cam["Rwc"], float), np.asarray(cam["Twc"], float)
     rcw, tcw = np.asarray(cam["Rcw"], float), np.asarray(cam["Tcw"], float)
     right = {f: (rwc[f] @ OPENCV_TO_GLTF, twc[f]) for f in range(len(rwc))}

@@ -137,19 +137,22 @@ set_tests_properties(cli.output_streams PROPERTIES LABELS cli)
 # forward pass (video_cases.py) where each body is present, hidden where absent, with the
 # sensitivity checks (another track's betas, a one-frame shift); web.scene: three.js plays the
 # same file; blender.scene: Blender's importer; validator.scene: the Khronos validator.
-foreach(layout wham vibe phalp prompthmr)
+foreach(layout wham vibe phalp prompthmr mcs)
   add_test(NAME cli.scene.${layout}
     COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout})
   set_tests_properties(cli.scene.${layout} PROPERTIES LABELS cli)
 endforeach()
-# PromptHMR: two SMPL-X people and the moving camera (position, view direction, up) in every client.
-foreach(layout wham prompthmr)
+# PromptHMR (results.pkl and its world4d.mcs): two SMPL-X people and the moving camera (position, view
+# direction, up) in every client.
+foreach(layout wham prompthmr mcs)
   add_test(NAME web.scene.${layout}
     COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_web_${layout}
             --web-src ${PROJECT_SOURCE_DIR}/tests/web)
   set_tests_properties(web.scene.${layout} PROPERTIES LABELS web)
+endforeach()
+foreach(layout wham prompthmr)
   add_test(NAME blender.scene.${layout}
     COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_blender_${layout}
