@@ -25,6 +25,8 @@ CASES = [  # (label, motion file, model fixture, reading options)
     ("motionx", GENERATION / "motionx" / "smplx322_walk.npy", "smplx_small", {}),
     ("beat2", GENERATION / "beat2" / "2_scott_0_1_1_output.npz", "smplx_small", {}),
     ("smplifyx", GENERATION / "fits" / "smplifyx_000.pkl", "smplx_small", {"up": "y"}),
+    ("prompthmr", VIDEO / "prompthmr" / "results.pkl", "smplx_small", {"track": "1"}),
+    ("mcs", VIDEO / "prompthmr" / "world4d.mcs", "smplx_small", {"track": "0"}),
 ]
 
 
