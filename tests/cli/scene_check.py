@@ -275,7 +275,7 @@ def camera_for_clients(want, first, end):
 
 
 def expected_clients(refs, detected, first, end, fps, m, weights, camera=False):
-    """What the three.js and Blender checks compare with: per body (named body_<id>) its rest mesh,
+    """What the three.js, Babylon.js and Blender checks compare with: per body (named body_<id>) its rest mesh,
     a few scene frames (its first, middle and last detection, the scene's first and last frame and
     the first frame of a gap where it is absent) with numpy's vertices or "hidden"."""
     bodies = {}
@@ -343,6 +343,7 @@ def main():
     ap.add_argument("--layout", default="wham", choices=sorted(FIXTURES))
     ap.add_argument("--work", default="/tmp/scene_check")
     ap.add_argument("--web-src", help="tests/web: also play the scene in three.js (three_scene_test.mjs)")
+    ap.add_argument("--babylon-src", help="tests/web: also play the scene in Babylon.js (babylon_scene_test.mjs)")
     ap.add_argument("--blender", help="a Blender binary: also play it in Blender (tests/roundtrip/blender_scene.py)")
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)
@@ -435,6 +436,9 @@ def main():
     if a.web_src:
         client(["node", os.path.join(a.web_src, "three_scene_test.mjs"), "--asset", out,
                 "--expected", out + ".expected.json", "--tol", str(TOLERANCE)], "three.js")
+    if a.babylon_src:
+        client(["node", os.path.join(a.babylon_src, "babylon_scene_test.mjs"), "--asset", out,
+                "--expected", out + ".expected.json", "--tol", str(TOLERANCE)], "Babylon.js")
     if a.blender:
         client([a.blender, "-b", "--factory-startup", "--python-exit-code", "1", "--python",
                 os.path.join(HERE, "..", "roundtrip", "blender_scene.py"), "--", "--asset", out,

@@ -136,7 +136,8 @@ set_tests_properties(cli.output_streams PROPERTIES LABELS cli)
 # played by tests/cli/scene_check.py's own numpy glTF player and compared with the layouts' numpy
 # forward pass (video_cases.py) where each body is present, hidden where absent, with the
 # sensitivity checks (another track's betas, a one-frame shift); web.scene: three.js plays the
-# same file; blender.scene: Blender's importer; validator.scene: the Khronos validator.
+# same file; web.scene.babylon: Babylon.js; blender.scene: Blender's importer; validator.scene: the
+# Khronos validator.
 foreach(layout wham vibe phalp prompthmr mcs)
   add_test(NAME cli.scene.${layout}
     COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
@@ -151,6 +152,14 @@ foreach(layout wham prompthmr mcs)
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_web_${layout}
             --web-src ${PROJECT_SOURCE_DIR}/tests/web)
   set_tests_properties(web.scene.${layout} PROPERTIES LABELS web)
+endforeach()
+# Babylon.js (web/'s devDependencies): the same expected file played by its glTF loader and AnimationGroup.
+foreach(layout wham prompthmr)
+  add_test(NAME web.scene.babylon.${layout}
+    COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+            --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_babylon_${layout}
+            --babylon-src ${PROJECT_SOURCE_DIR}/tests/web)
+  set_tests_properties(web.scene.babylon.${layout} PROPERTIES LABELS web)
 endforeach()
 foreach(layout wham prompthmr)
   add_test(NAME blender.scene.${layout}

@@ -1,5 +1,6 @@
 // Babylon.js facts for the README's engine notes and docs/file-contract.md,
-// measured by hand, not part of CTest (Babylon is not a dependency of web/):
+// measured by hand, not part of CTest (it predates Babylon in web/'s devDependencies, which
+// tests/web/babylon_scene_test.mjs uses; this script still installs its own copy):
 // a mesh with JOINTS_1 loads with 8 bone influencers, default morph weights
 // become the targets' influences, quantized (KHR_mesh_quantization, normalized
 // int16, stored as d_n / s_n) and sparse morph targets decode to the plain
