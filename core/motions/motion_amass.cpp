@@ -43,7 +43,8 @@ Result<Array> joinSplitPoses(const DataNode& d, const std::string& path) {
 // no SMPL-family layout has 46 values per frame.
 constexpr int64_t kSkelPoseParameters = 46;
 
-// poses -> per-frame rotations; accepts (T,3J), (T,J,3) and (T,J,3,3).
+}  // namespace
+
 Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
   const auto& s = poses.shape;
   const bool matrices = s.size() == 4 && s[2] == 3 && s[3] == 3;
@@ -70,6 +71,8 @@ Status decodeRotations(const Array& poses, const std::string& path, Motion* m) {
         poses.data.data() + f * stride, static_cast<int>(j), 0, &m->frames[f]);
   return Status();
 }
+
+namespace {
 
 // AMASS `dmpls` (T,D): soft-tissue coefficients (core/models/dmpl.h). Needed
 // only with a DMPL basis, so a malformed array does not fail the load: the

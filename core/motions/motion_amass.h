@@ -11,11 +11,19 @@
 //   mocap_frame* rate, `gender` or the split keys) is a Z-up capture world.
 #pragma once
 
+#include <string>
+
 #include "core/motions/motion_layout.h"
 
 namespace smpl {
 
 // The table row (core/motions/motion_layout.h): matches `poses` or `root_orient`.
 const MotionLayout& amassLayout();
+
+// `poses` (T,3J) or (T,J,3) axis-angle, or (T,J,3,3) rotation matrices, into
+// m->frames in the model's joint order, and m->layout from J. Shared with the
+// bare pose array row (motion_bare_poses.h), which reads its array the same
+// way. Errors name path and 'poses'; a (T,46) array is refused as SKEL's.
+Status decodeRotations(const Array& poses, const std::string& path, Motion* m);
 
 }  // namespace smpl

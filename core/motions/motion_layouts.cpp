@@ -6,6 +6,7 @@
 #include "core/io/printable.h"
 #include "core/motions/motion_aist.h"
 #include "core/motions/motion_amass.h"
+#include "core/motions/motion_bare_poses.h"
 #include "core/motions/motion_beat2.h"
 #include "core/motions/motion_easymocap.h"
 #include "core/motions/motion_fit.h"
@@ -37,6 +38,7 @@ const std::vector<MotionLayout>& motionLayouts() {
       smplCodecLayout(),  // bodyPose (.smpl)
       motionxLayout(),    // a (T,322) / (T,172) array (.npy)
       positionsLayout(),  // joint positions (refused): (T,22,3) arrays, MDM results.npy
+      barePosesLayout(),  // a bare (T,3K) / (T,K,3) / (T,K,3,3) pose array, after Motion-X's widths
       mdmLayout(),        // motion + thetas (MDM smpl_params .npy)
       aistLayout(),       // smpl_poses
       vposerLayout(),  // latent_pose, pose_embedding, latent (refused) before AMASS's root_orient

@@ -23,6 +23,8 @@ CASES = [  # (label, motion file, model fixture, reading options)
     ("bev", VIDEO / "bev" / "video_results.npz", "smpl_small", {}),
     ("mdm", GENERATION / "mdm" / "sample00_rep00_smpl_params.npy", "smpl_small", {}),
     ("motionx", GENERATION / "motionx" / "smplx322_walk.npy", "smplx_small", {}),
+    ("bare_poses", GENERATION / "bare" / "example_smplx_poses.npy", "smplx_small", {}),
+    ("bare_poses_pt", GENERATION / "bare" / "smplh_poses.pt", "smplh_small", {}),
     ("beat2", GENERATION / "beat2" / "2_scott_0_1_1_output.npz", "smplx_small", {}),
     ("smplifyx", GENERATION / "fits" / "smplifyx_000.pkl", "smplx_small", {"up": "y"}),
     ("prompthmr", VIDEO / "prompthmr" / "results.pkl", "smplx_small", {"track": "1"}),

@@ -1,7 +1,7 @@
 """Layout cases of the motion-generation tools (docs/motions.md, "Motion-generation tools,
 hand and camera-frame fits"):
 Motion-X smplx_322, MDM smpl_params / results, HumanML3D joints, HaMeR hands, BEAT2 /
-EMAGE, camera-frame fits, VPoser latents and an unknown layout. The fixtures are written by
+EMAGE, camera-frame fits, VPoser latents, bare pose arrays and an unknown layout. The fixtures are written by
 tests/fixtures/make_generation_layouts.py into FIXTURE_DIR/layouts/generation/.
 
 CASES: one dict per case, the format every layouts/*_cases.py shares:
@@ -16,6 +16,10 @@ CASES: one dict per case, the format every layouts/*_cases.py shares:
   notes     substrings stderr (the notes) must contain
   refusal   None, or {"exit": 2, "message": substring of the one stderr line,
             "forbid": substrings that line must not contain}
+  wrong     optional; [(label, change)]: plausible wrong readings of the file, each of which
+            must be >= 1 mm from the right one (run_cases.py check_wrong_readings calls
+            wrong_expected(case, fixture_dir, change); change {"reading": name} is read by the
+            case's decoder)
 
 expected(case, fixture_dir) -> {"fps", "frames", "num_vertices", "vertices"} (Y-up metres,
 weights pruned to 4 influences as --skin-weights truncated --max-influences 4 exports them),
@@ -53,6 +57,7 @@ CAMERA_TO_Y_UP = np.diag([1.0, -1.0, -1.0])  # --up -y: half turn about x, (x,y,
 VPOSER = "a VPoser latent: decode it with VPoser first"
 G = "layouts/generation/"  # make_generation_layouts.py writes FIXTURE_DIR/layouts/generation/
 POSITIONS = "joint positions, no rotations: fit a body first, e.g. with SMPLify"
+BARE_TRANSPOSED = ("(T,K,3) read as (T,3,K)", {"reading": "transposed"})
 
 CASES = [
     # Motion-X smplx_322 (.npy (T,322) float32): Y-up world, 30 fps (documented), flat hands.
@@ -128,6 +133,33 @@ CASES = [
     {"name": "smplifyx_camera_translation", "fixture": G + "fits/smplifyx_000.pkl",
      "model": "smplx_small", "args": [], "outputs": None, "frames": [0, 0, 0],
      "notes": ["--up -y"], "refusal": None},
+    # Bare pose arrays: one numeric array, read as AMASS reads `poses`; no trans, no betas,
+    # Y up, 30 fps assumed. The SMPL-X one as MHR's example_smplx_poses.npy (flat hands).
+    {"name": "bare_smplx_example", "fixture": G + "bare/example_smplx_poses.npy",
+     "model": "smplx_small", "args": [], "outputs": None, "frames": [0, 3, 7],
+     "notes": ["a bare pose array (8,165): read as SMPL-X poses (55 joints, axis-angle) in the "
+               "model's joint order; no translation or betas in the file", "assumed 30 fps"],
+     "refusal": None,
+     "wrong": [("hands_mean added to the hands", {"reading": "hands_mean_added"}),
+               ("(T,3K) read as (T,3,K)", {"reading": "transposed"})]},
+    {"name": "bare_smpl_triples", "fixture": G + "bare/smpl_poses.npy",
+     "model": "smpl_small", "args": [], "outputs": None, "frames": [0, 5, 11],
+     "notes": ["read as SMPL poses (24 joints, axis-angle)", "assumed 30 fps"],
+     "refusal": None, "wrong": [BARE_TRANSPOSED]},
+    {"name": "bare_smplh_matrices_pt", "fixture": G + "bare/smplh_poses.pt",
+     "model": "smplh_small", "args": [], "outputs": None, "frames": [0, 4, 9],
+     "notes": ["read as SMPL-H poses (52 joints, rotation matrices)", "assumed 30 fps"],
+     "refusal": None,
+     "wrong": [("matrices transposed (column-major)", {"reading": "matrices_transposed"})]},
+    {"name": "bare_joint_positions", "fixture": G + "bare/joints.npy",
+     "model": "smpl_small", "args": [], "outputs": None, "frames": None, "notes": [],
+     "refusal": {"exit": 2, "message": "joint positions (constant bone lengths), not rotations: "
+                                       "fit a body first, e.g. with SMPLify",
+                 "forbid": ["shape file"]}},
+    {"name": "bare_odd_width", "fixture": G + "bare/odd.npy",
+     "model": "smpl_small", "args": [], "outputs": None, "frames": None, "notes": [],
+     "refusal": {"exit": 2, "message": "holds array (8,99) at the top level; not a motion layout",
+                 "forbid": ["shape file"]}},
     # Honest refusals.
     {"name": "smplifyx_vposer", "fixture": G + "fits/smplifyx_vposer_000.pkl",
      "model": "smplx_small", "args": [], "outputs": None, "frames": None, "notes": [],
@@ -478,6 +510,48 @@ def smplifyx(case, fixture_dir, model):
             "expression": None, "fps": 30.0}
 
 
+# ---- Bare pose arrays --------------------------------------------------------------------------
+
+def load_array(path):
+    """The file's one array: np.load for .npy, torch.load for torch.save of a tensor."""
+    if path.endswith(".pt"):
+        import torch
+        return torch.load(path, map_location="cpu", weights_only=True).numpy().astype(np.float64)
+    return np.load(path, allow_pickle=False).astype(np.float64)
+
+
+def bare(case, fixture_dir, model):
+    """A bare pose array, read as AMASS's `poses` (human_body_prior BodyModel: full_pose in the
+    model's joint order, SMPL-X root, body 1-21, jaw, eyes, left hand 25-39, right 40-54;
+    hands absolute as MHR's tools/smpl_mhr_conversion/example.py poses them with
+    smplx.SMPLX(flat_hand_mean=True)): (T,3K) and (T,K,3) axis-angle, (T,K,3,3) row-major
+    matrices (R[i][j] at [..., i, j]). No translation, no betas, 30 fps assumed. Wrong
+    readings (case["reading"]): hands_mean_added (flat_hand_mean=False), transposed (the
+    numbers of a frame taken as (3,K)), matrices_transposed (column-major matrices)."""
+    data = load_array(os.path.join(fixture_dir, case["fixture"]))
+    t, k = data.shape[0], len(model["parents"])
+    reading = case.get("reading")
+    if data.ndim == 4:
+        rots = data.swapaxes(-1, -2) if reading == "matrices_transposed" else data
+    else:
+        aa = data.reshape(t, 3, k).transpose(0, 2, 1) if reading == "transposed" \
+            else data.reshape(t, k, 3)
+        if reading == "hands_mean_added":
+            aa = with_hands_mean(aa, model)
+        rots = aa_rots(aa)
+    return {"rots": rots, "trans": np.zeros((t, 3)), "betas": np.zeros(1), "expression": None,
+            "fps": 30.0}
+
+
+def wrong_expected(case, fixture_dir, change):
+    """The reference of a plausible wrong reading of the case's file: change {"reading": name}
+    names a reading the case's decoder knows (bare: hands_mean_added, transposed,
+    matrices_transposed)."""
+    c = dict(case)
+    c.update(change)
+    return expected(c, fixture_dir)
+
+
 # ---- Expected vertices ------------------------------------------------------------------------
 
 def decoded(case, fixture_dir, model):
@@ -503,6 +577,8 @@ def decoded(case, fixture_dir, model):
         d, up = camera_fit(case, fixture_dir, model), "y"
     elif name.startswith("smplifyx"):
         d, up = smplifyx(case, fixture_dir, model), "-y"
+    elif name.startswith("bare"):
+        d, up = bare(case, fixture_dir, model), "y"
     else:
         raise KeyError("no decoder for case " + name)
     return d, up

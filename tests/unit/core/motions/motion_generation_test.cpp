@@ -153,7 +153,8 @@ TEST(GenerationLayouts, DetectionByShapeAndKeys) {
   };
   EXPECT_EQ(found(leaf(numbers({4, 322}, std::vector<double>(4 * 322))), kNpyFile), "motionx");
   EXPECT_EQ(found(leaf(numbers({4, 172}, std::vector<double>(4 * 172))), kNpyFile), "motionx");
-  EXPECT_EQ(found(leaf(numbers({4, 165}, std::vector<double>(4 * 165))), kNpyFile), "none");
+  EXPECT_EQ(found(leaf(numbers({4, 165}, std::vector<double>(4 * 165))), kNpyFile), "bare_poses");
+  EXPECT_EQ(found(leaf(numbers({4, 99}, std::vector<double>(4 * 99))), kNpyFile), "none");
   EXPECT_EQ(found(leaf(numbers({4, 22, 3}, std::vector<double>(4 * 66))), kNpyFile), "positions");
   EXPECT_EQ(found(leaf(numbers({4, 21, 3}, std::vector<double>(4 * 63))), kNpyFile), "positions");
   EXPECT_EQ(found(leaf(numbers({4, 263}, std::vector<double>(4 * 263))), kNpyFile), "positions");

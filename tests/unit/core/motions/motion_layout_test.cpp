@@ -70,8 +70,10 @@ TEST(MotionLayouts, RowsAreNamedOnceAndReadWhatTheyMatch) {
   for (const MotionLayout& row : motionLayouts()) {
     EXPECT_TRUE(seen.insert(row.name).second) << row.name;
     EXPECT_NE(row.containers, 0u) << row.name;
-    if (row.keys.empty()) {  // a row that reads a root array (Motion-X), never a dict's keys
-      EXPECT_EQ(row.containers, static_cast<unsigned>(kNpyFile)) << row.name;
+    if (row.keys.empty()) {  // a row that reads a root array (Motion-X, bare poses), never a
+                             // dict's keys: an .npz or JSON root is never one array
+      EXPECT_NE(row.containers & kNpyFile, 0u) << row.name;
+      EXPECT_EQ(row.containers & (kNpzFile | kJsonFile), 0u) << row.name;
       continue;
     }
     // A file holding exactly the row's keys is that row's (nothing earlier steals it).
