@@ -5,7 +5,10 @@ namespace smpl {
 const DataNode* DataNode::get(std::string_view key) const {
   if (kind != Kind::Dict) return nullptr;
   for (size_t i = keys.size(); i-- > 0;)
-    if (keys[i] == key) return &children[i];
+    if (keys[i] == key) {
+      children[i].read = true;
+      return &children[i];
+    }
   return nullptr;
 }
 

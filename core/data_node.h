@@ -36,12 +36,17 @@ struct DataNode {
   Array array;
   std::vector<std::string> keys;
   std::vector<DataNode> children;
+  // Set when a reader fetched this node by key (get, leaf): after a layout's
+  // decode, a pose-like leaf never fetched is named in an "ignored" note
+  // (core/motions/unread_keys.h) instead of being dropped in silence.
+  mutable bool read = false;
 
   bool isDict() const { return kind == Kind::Dict; }
   bool isList() const { return kind == Kind::List; }
   bool isArray() const { return kind == Kind::Array; }
   // The child of a Dict named `key` (the last one, as a Python dict keeps the
   // last value of a repeated key), or nullptr (also for a List or a leaf).
+  // Marks the child it returns as read.
   const DataNode* get(std::string_view key) const;
   // get(key) when it is an Array leaf, else nullptr.
   const Array* leaf(std::string_view key) const;

@@ -2,6 +2,7 @@
 // (motion_layout.h), its decode, then the frame rate and the value checks.
 #include "core/motions/motion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +11,7 @@
 #include "core/motions/motion_internal.h"
 #include "core/motions/motion_layout.h"
 #include "core/motions/motion_read.h"
+#include "core/motions/unread_keys.h"
 #include "core/motions/validate_motion.h"
 
 namespace smpl {
@@ -94,11 +96,22 @@ std::string stemOf(const std::string& path) {
 }
 
 // The row's decode of `root`, then each track's name, rate, world note and checks.
-Result<MotionSet> decodeFile(const DataNode& root, const MotionLayout* row, const std::string& path,
+// Every note of the file and of its tracks.
+std::vector<std::string> allNotes(const MotionSet& set) {
+  std::vector<std::string> notes = set.notes;
+  for (const Motion& m : set.tracks) notes.insert(notes.end(), m.notes.begin(), m.notes.end());
+  return notes;
+}
+
+Result<MotionSet> decodeFile(const DataNode& root, const MotionLayout* row,
+                             const std::vector<UndecodedMember>& undecoded, const std::string& path,
                              const MotionOptions& options) {
   if (!row) return makeError(path + ": " + unmatchedMessage(root));
   MotionSet set;
+  clearReadMarks(root);  // the rows' `matches` fetched keys too
   if (Status s = row->decode(root, LayoutInput{path, options}, &set); !s) return s.error();
+  if (std::string note = unreadKeysNote(root, undecoded, row->name, allNotes(set)); !note.empty())
+    set.notes.push_back(note);
   // One frame of a --motion-sequence may hold no one (Multi-HMR: an image without a detection).
   if (set.tracks.empty() && !options.frame_file) return makeError(path + ": no motion in the file");
   for (Motion& m : set.tracks) {
@@ -120,13 +133,17 @@ Result<MotionSet> decodeFile(const DataNode& root, const MotionLayout* row, cons
 Result<MotionSet> loadMotionSet(const std::string& path, const MotionOptions& options) {
   Result<MotionFile> file = readMotionFile(path);
   if (!file) return file.error();
-  return decodeFile(file->root, file->layout, path, options);
+  return decodeFile(file->root, file->layout, file->undecoded, path, options);
 }
 
 Result<MotionSet> loadMotionSetFromTree(DataNode root, unsigned containers, const std::string& path,
                                         const MotionOptions& options) {
   const MotionLayout* row = root.isDict() ? findLayout(root, containers) : nullptr;
+  std::vector<UndecodedMember> undecoded;
   if (row && containers == kNpzFile) {  // an .npz decodes only the row's keys, in its order
+    for (size_t i = 0; i < root.keys.size(); ++i)
+      if (std::find(row->keys.begin(), row->keys.end(), root.keys[i]) == row->keys.end())
+        undecoded.push_back({root.keys[i], root.children[i].array.shape});
     DataNode keys;
     keys.kind = DataNode::Kind::Dict;
     for (const std::string& key : row->keys)
@@ -138,7 +155,7 @@ Result<MotionSet> loadMotionSetFromTree(DataNode root, unsigned containers, cons
         }
     root = std::move(keys);
   }
-  return decodeFile(root, row, path, options);
+  return decodeFile(root, row, undecoded, path, options);
 }
 
 Result<Motion> loadMotion(const std::string& path, const MotionOptions& options) {

@@ -28,6 +28,7 @@
 #include "core/motions/motion_vibe.h"
 #include "core/motions/motion_vposer.h"
 #include "core/motions/motion_wham.h"
+#include "core/motions/unread_keys.h"
 
 namespace smpl {
 
@@ -81,16 +82,6 @@ std::vector<std::string> motionFileExtensions() {
 }
 
 namespace {
-
-// A key that names pose data in some layout ("poses", "body_pose",
-// "pred_rotmat", "smpl_thetas", "global_orient", "joints3d", ...).
-bool looksLikePose(const std::string& key) {
-  std::string k = key;
-  std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
-  for (const char* word : {"pose", "rot", "theta", "orient", "joint", "motion"})
-    if (k.find(word) != std::string::npos) return true;
-  return false;
-}
 
 // The keys, sorted, comma-separated, at most 12 then ", ...".
 std::string keyList(const DataNode& root) {

@@ -1,5 +1,6 @@
 #include "core/motions/motion_read.h"
 
+#include <algorithm>
 #include <fstream>
 
 #include "core/io/file_io.h"
@@ -42,6 +43,19 @@ DataNode namesOf(const std::vector<std::string>& names) {
   return root;
 }
 
+// The members outside `keys`, with the shapes their headers declare (an
+// object member or a bad header: no shape).
+std::vector<UndecodedMember> undecodedMembers(const NpzArchive& npz,
+                                              const std::vector<std::string>& keys) {
+  std::vector<UndecodedMember> out;
+  for (const std::string& name : npz.keys()) {
+    if (std::find(keys.begin(), keys.end(), name) != keys.end()) continue;
+    Result<NpyHeaderInfo> header = npz.header(name);
+    out.push_back({name, header ? header->shape : std::vector<int64_t>()});
+  }
+  return out;
+}
+
 // A motion's numbers exist three times while it is read: the decoded member
 // (8 bytes per element) and the per-frame rotations built from it (a 3x3
 // matrix of doubles, 72 bytes, per 3 axis-angle values: 24 per element). So
@@ -82,6 +96,7 @@ Result<MotionFile> readNpz(const std::string& path, bool decode) {
   Result<DataNode> tree = readNpzTree(*npz, keys);
   if (!tree) return tree.error();
   file.root = std::move(*tree);
+  file.undecoded = undecodedMembers(*npz, file.layout->keys);
   return file;
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/data_node.h"
 #include "core/motions/motion_layout.h"
+#include "core/motions/unread_keys.h"
 #include "core/result.h"
 
 namespace smpl {
@@ -25,6 +26,9 @@ struct MotionFile {
   // List (EasyMocap) or an Array (a plain .npy)).
   DataNode root;
   const MotionLayout* layout = nullptr;  // null: no row matches
+  // An .npz's members outside the row's keys (never decoded), with their
+  // shapes: the ignored-keys note names the pose-like ones.
+  std::vector<UndecodedMember> undecoded;
 };
 
 // The container, read, and its layout. Errors: the file cannot be read or

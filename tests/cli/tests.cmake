@@ -5,6 +5,14 @@ add_test(NAME cli_released_layouts
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/released_layouts_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli_released_layouts PROPERTIES LABELS cli)
 
+# Nothing a motion file carries is dropped silently (docs/motions.md "What a reader does not
+# read"): every exportable motion fixture, with an extra_hand_pose array added, must export with
+# a note naming it.
+add_test(NAME cli.ignored_keys_walk
+  COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/ignored_keys_walk.py --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --work ${CMAKE_CURRENT_BINARY_DIR}/ignored_keys_walk)
+set_tests_properties(cli.ignored_keys_walk PROPERTIES LABELS cli)
+
 add_test(NAME cli.motion_formats
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/motion_formats_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.motion_formats PROPERTIES LABELS cli)
