@@ -72,6 +72,7 @@ FILES = {
     "demo_out/smplx": "layouts/video/smplerx/smplx",
     # motion-generation, hand and camera-frame layouts (make_generation_layouts.py)
     "clip.npy": "layouts/generation/motionx/smplx322_walk.npy",
+    "example_smplx_poses.npy": "layouts/generation/bare/example_smplx_poses.npy",
     "sample00_rep00_smpl_params.npy": "layouts/generation/mdm/sample00_rep00_smpl_params.npy",
     "MANO_RIGHT.pkl": "models/mano_small_p2.pkl",
     "hand.npz": "layouts/generation/hamer/left_hand.npz",

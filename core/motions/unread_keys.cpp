@@ -106,7 +106,7 @@ std::string unreadKeysNote(const DataNode& root, const std::vector<UndecodedMemb
   }
   if (list.empty()) return "";
   if (more) list += ", ... (" + std::to_string(more) + " more)";
-  return "ignored: " + list + " (not part of the " + row + " layout)";
+  return "ignored: " + list + " (arrays the " + row + " reader does not read)";
 }
 
 }  // namespace smpl

@@ -3,7 +3,7 @@
 // fetched (DataNode::read), or an .npz member outside the row's keys, is
 // named once per file:
 //   "ignored: smpl_params_global/extra_pose (30,63), 1/extra_pose (20,63) in
-//    2 entries (not part of the gvhmr layout)"
+//    2 entries (arrays the gvhmr reader does not read)"
 // unless a note of the decode already names that key.
 #pragma once
 

@@ -193,7 +193,7 @@ def main():
             continue
         run = export(args.exe, os.path.join(args.fixtures, "models", model), dst, out)
         note = next((l for l in run.stderr.splitlines() if "note:" in l and EXTRA in l), "")
-        m = re.search(r"not part of the (\S+) layout", note)
+        m = re.search(r"arrays the (\S+) reader does not read", note)
         # a decoder's own "ignored:" note (PromptHMR's): the layout is the fixture's folder
         layout = m.group(1) if m else os.path.basename(os.path.dirname(path))
         ok = run.returncode == 0 and note
