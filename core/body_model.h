@@ -16,7 +16,8 @@ namespace smpl {
 
 enum class ModelKind { Smpl, SmplH, SmplX, Mano };
 
-const char* modelKindName(ModelKind kind);  // "smpl", "smplh", "smplx", "mano"
+const char* modelKindName(ModelKind kind);   // "smpl", "smplh", "smplx", "mano"
+const char* modelKindLabel(ModelKind kind);  // for messages: "SMPL", "SMPL-H", "SMPL-X", "MANO"
 
 struct BodyModel {
   ModelKind kind = ModelKind::Smpl;

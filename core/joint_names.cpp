@@ -98,4 +98,18 @@ const char* modelKindName(ModelKind kind) {
   return "unknown";
 }
 
+const char* modelKindLabel(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::Smpl:
+      return "SMPL";
+    case ModelKind::SmplH:
+      return "SMPL-H";
+    case ModelKind::SmplX:
+      return "SMPL-X";
+    case ModelKind::Mano:
+      return "MANO";
+  }
+  return "?";
+}
+
 }  // namespace smpl

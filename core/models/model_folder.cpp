@@ -84,20 +84,6 @@ bool classify(const std::string& rel, Candidate* c) {
 
 const char* defaultExt(ModelKind kind) { return kind == ModelKind::SmplX ? "npz" : "pkl"; }
 
-const char* kindLabel(ModelKind kind) {
-  switch (kind) {
-    case ModelKind::Smpl:
-      return "SMPL";
-    case ModelKind::SmplH:
-      return "SMPL-H";
-    case ModelKind::SmplX:
-      return "SMPL-X";
-    case ModelKind::Mano:
-      return "MANO";
-  }
-  return "?";
-}
-
 // Best of the candidates of one kind and gender: the authors' extension, then
 // a file in the kind's folder, then the shortest path, then name order.
 const Candidate* best(const std::vector<Candidate>& all, ModelKind kind,
@@ -171,12 +157,12 @@ Result<ModelFileChoice> chooseModelFile(const std::vector<std::string>& files,
     want = "right";
   }
   if (!c && want != "neutral" && *kind != ModelKind::Mano) {
-    note = "no " + want + " " + kindLabel(*kind) + " model in " + folder + "; ";
+    note = "no " + want + " " + modelKindLabel(*kind) + " model in " + folder + "; ";
     c = best(all, *kind, "neutral");
   }
   if (!c)
-    return makeError(folder + ": no " + (want == "right" ? "" : want + " ") + kindLabel(*kind) +
-                     " model (e.g. " + modelKindName(*kind) + "/" +
+    return makeError(folder + ": no " + (want == "right" ? "" : want + " ") +
+                     modelKindLabel(*kind) + " model (e.g. " + modelKindName(*kind) + "/" +
                      (*kind == ModelKind::SmplH   ? "SMPLH"
                       : *kind == ModelKind::SmplX ? "SMPLX"
                       : *kind == ModelKind::Mano  ? "MANO"

@@ -45,19 +45,6 @@ bool rigidBones(const Array& a) {
   return true;
 }
 
-const char* familyName(ModelKind k) {
-  switch (k) {
-    case ModelKind::Smpl:
-      return "SMPL";
-    case ModelKind::SmplH:
-      return "SMPL-H";
-    case ModelKind::SmplX:
-      return "SMPL-X";
-    default:
-      return "MANO";
-  }
-}
-
 Status decodeBarePoses(const DataNode& root, const std::string& path, Motion* m) {
   const Array& a = root.array;
   if (rigidBones(a))
@@ -72,8 +59,8 @@ Status decodeBarePoses(const DataNode& root, const std::string& path, Motion* m)
   const int64_t joints = a.shape.size() == 2 ? a.shape[1] / 3 : a.shape[1];
   m->notes.insert(m->notes.begin(),
                   "a bare pose array " + shapeString(a.shape) + ": read as " +
-                      familyName(m->layout) + " poses (" + std::to_string(joints) + " joints, " +
-                      (matrices ? "rotation matrices" : "axis-angle") +
+                      modelKindLabel(m->layout) + " poses (" + std::to_string(joints) +
+                      " joints, " + (matrices ? "rotation matrices" : "axis-angle") +
                       ") in the model's joint order; no translation or betas in the file");
   return Status();
 }

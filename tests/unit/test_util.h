@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/array.h"
+#include "core/data_node.h"
 
 namespace smpl::test {
 
@@ -28,6 +29,14 @@ inline Array numbers(std::vector<int64_t> shape, std::vector<double> data) {
   a.data = std::move(data);
   a.dtype = "<f8";
   return a;
+}
+
+// `a` as a DataNode leaf (the root of an .npy, or a dict's value).
+inline DataNode leaf(Array a) {
+  DataNode n;
+  n.kind = DataNode::Kind::Array;
+  n.array = std::move(a);
+  return n;
 }
 
 }  // namespace smpl::test

@@ -9,12 +9,7 @@
 namespace smpl {
 namespace {
 
-DataNode leaf(Array a) {
-  DataNode n;
-  n.kind = DataNode::Kind::Array;
-  n.array = std::move(a);
-  return n;
-}
+using test::leaf;
 
 DataNode list(std::vector<DataNode> children) {
   DataNode n;

@@ -17,12 +17,7 @@ namespace {
 
 using test::numbers;
 
-DataNode leaf(Array a) {
-  DataNode n;
-  n.kind = DataNode::Kind::Array;
-  n.array = std::move(a);
-  return n;
-}
+using test::leaf;
 
 Result<MotionSet> decode(const DataNode& root) {
   MotionSet set;

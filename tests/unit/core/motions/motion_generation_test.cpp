@@ -29,12 +29,7 @@ namespace {
 
 using test::numbers;
 
-DataNode leaf(Array a) {
-  DataNode n;
-  n.kind = DataNode::Kind::Array;
-  n.array = std::move(a);
-  return n;
-}
+using test::leaf;
 
 DataNode dict(std::vector<std::pair<std::string, DataNode>> items) {
   DataNode d;
