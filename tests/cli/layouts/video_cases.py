@@ -133,6 +133,13 @@ CASES = [
     case("hands_wrist", V + "gvhmr/hmr4d_results.pt", "smplx_small", [0, 11, 23],
          ["the left hand's wrist and fingers", "the right hand's wrist and fingers", "Mano2Smpl-X"],
          args=["--source-params", "incam", "--hands", "{fixtures}/" + HANDS + "hamer", "--hands-wrist"]),
+    # An SMPL-H body (AMASS, Z up, its own fingers bent) takes both hands from the HaMeR folder.
+    case("hands_smplh", HANDS + "amass_smplh.npz", "smplh_small", [0, 11, 23],
+         [HANDS + "hamer: track 0: the left hand's fingers", HANDS + "hamer: track 1: the right hand's fingers"],
+         args=["--hands", "{fixtures}/" + HANDS + "hamer"],
+         absent=["keep the body clip's hand"]),
+    case("hands_smplh_left", HANDS + "amass_smplh.npz", "smplh_small", [0, 11, 23],
+         [HANDS + "left.npz: the left hand's fingers"], args=["--hands", "{fixtures}/" + HANDS + "left.npz"]),
     # No left hand at frames 7, 21-23, no file at frame 10: those frames keep GVHMR's hands (hands_mean).
     case("hands_gap", V + "gvhmr/hmr4d_results.pt", "smplx_small", [7, 10, 15],
          ["left hand's fingers", "5 of 24 frames have no frame of this track and keep the body clip's hand",
@@ -551,7 +558,9 @@ def hands_clips(case, fixture_dir, m):
     the other side), "hands_mirrored" (the left hand's rotations as stored, not M R M), "no_wrist"
     (--hands-wrist not applied)."""
     wrong = arg(case, "reading")
-    c = gvhmr_clips(case, os.path.join(fixture_dir, case["fixture"]), m)[0][1]
+    path = os.path.join(fixture_dir, case["fixture"])
+    smplh = case["model"].startswith("smplh")  # SMPL-H: fingers from joint 22 (left) and 37 (right)
+    c = (amass_clips(case, path) if smplh else gvhmr_clips(case, path, m))[0][1]
     wrist = "--hands-wrist" in case["args"] and wrong != "no_wrist"
     if wrong == "hands_ignored":
         return [(None, c)]
@@ -561,7 +570,7 @@ def hands_clips(case, fixture_dir, m):
             side = (not right) if wrong == "hands_swapped" else right
             for f, rots in frames.items():
                 own = rots if right or wrong == "hands_mirrored" else MIRROR @ rots @ MIRROR
-                first = 40 if side else 25
+                first = (37 if side else 22) if smplh else (40 if side else 25)
                 c["pose"][f][first:first + 15] = axis_angle(own[1:])
                 if wrist:
                     c["pose"][f][21 if side else 20] = axis_angle(elbow_global(body[f], 19 if side else 18).T @ own[0])
