@@ -6,6 +6,7 @@
 #include "core/models/model_folder.h"
 #include "core/models/model_loader.h"
 #include "core/os/path.h"
+#include "request/input_role.h"
 
 namespace smpl {
 
@@ -28,7 +29,7 @@ Result<ModelPick> ModelSource::load(const std::string& path, const std::string& 
   auto it = cache_.find(path);
   if (it == cache_.end()) {
     Result<BodyModel> m = path == "builtin" ? Result<BodyModel>(demoBody()) : loadModel(path);
-    if (!m) return m.error();
+    if (!m) return modelRoleError(path, m.error());
     if (!name.empty()) m->name = name;  // e.g. "smplh/male/model.npz", not just "model.npz"
     Cached cached;
     if (Status st = cached.memory.add(modelBytes(*m), path, "the model"); !st) return st.error();

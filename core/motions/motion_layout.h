@@ -72,9 +72,11 @@ const MotionLayout* findLayout(const DataNode& root, unsigned container);
 // excluded by batch mode.
 std::vector<std::string> motionFileExtensions();
 
-// The message for a file no row matches: "no pose data (keys betas,
-// gender): a shape file, not a motion" when no key looks like pose data,
-// else "keys found: a, b, ...; supported layouts: docs/motions.md" (keys
+// The message for a file no row matches: "a body model file (keys ...), not
+// a motion: give it as --model ..." for a model's arrays (v_template with
+// shapedirs, posedirs, weights or J_regressor), "no pose data (keys betas,
+// gender): a shape file, not a motion: give it as --betas-file" when no key
+// looks like pose data, else "keys found: a, b, ...; supported layouts: docs/motions.md" (keys
 // sorted, at most 12, through printable()).
 std::string unmatchedMessage(const DataNode& root);
 
@@ -82,5 +84,9 @@ std::string unmatchedMessage(const DataNode& root);
 // that looks like pose data (batch mode skips such files with a note
 // instead of failing them); a file without betas is never called a shape file.
 bool isShapeOnly(const DataNode& root);
+
+// True for a Dict holding a body model's arrays: v_template and at least one
+// of shapedirs, posedirs, weights, J_regressor.
+bool isBodyModel(const DataNode& root);
 
 }  // namespace smpl

@@ -108,13 +108,29 @@ bool isShapeOnly(const DataNode& root) {
   return betas;
 }
 
+// The arrays every SMPL-family model file carries (the authors' releases):
+// a template mesh with its blend shapes or skin.
+bool isBodyModel(const DataNode& root) {
+  if (!root.isDict()) return false;
+  bool templ = false, blend = false;
+  for (const std::string& key : root.keys) {
+    templ |= key == "v_template";
+    blend |= key == "shapedirs" || key == "posedirs" || key == "weights" || key == "J_regressor";
+  }
+  return templ && blend;
+}
+
 std::string unmatchedMessage(const DataNode& root) {
   if (!root.isDict())
     return "holds " + describeNode(root) +
            " at the top level; not a motion layout this version reads (supported layouts: "
            "docs/motions.md)";
+  if (isBodyModel(root))
+    return "a body model file (keys " + keyList(root) +
+           "), not a motion: give it as --model, and the motion as --motion";
   if (isShapeOnly(root))
-    return "no pose data (keys " + keyList(root) + "): a shape file, not a motion";
+    return "no pose data (keys " + keyList(root) +
+           "): a shape file, not a motion: give it as --betas-file";
   return "keys found: " + keyList(root) + "; supported layouts: docs/motions.md";
 }
 

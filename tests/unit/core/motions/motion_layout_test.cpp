@@ -155,6 +155,24 @@ TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
   Result<bool> poses = hasPoseData(kTable + "shape_only.npz");
   ASSERT_TRUE(poses.ok());
   EXPECT_FALSE(*poses);
+  EXPECT_NE(shape.message().find("a shape file, not a motion: give it as --betas-file"),
+            std::string::npos)
+      << shape.message();
+}
+
+// A model given as --motion is named as one, with the option that takes it.
+TEST(MotionLayouts, AModelFileIsToldToGoToModel) {
+  EXPECT_TRUE(isBodyModel(names({"J_regressor", "f", "posedirs", "shapedirs", "v_template"})));
+  EXPECT_FALSE(isBodyModel(names({"v_template", "poses"})));  // a template alone: not a model
+  EXPECT_FALSE(isBodyModel(names({"posedirs", "weights"})));
+  const std::string models = std::string(SMPL_FIXTURE_DIR) + "/models/";
+  for (const char* file : {"smpl_small.npz", "smplh_small_p2.pkl"}) {
+    Result<Motion> m = loadMotion(models + file);
+    ASSERT_FALSE(m.ok()) << file;
+    EXPECT_NE(m.message().find("a body model file (keys "), std::string::npos) << m.message();
+    EXPECT_NE(m.message().find("not a motion: give it as --model"), std::string::npos)
+        << m.message();
+  }
 }
 
 }  // namespace
