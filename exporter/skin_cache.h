@@ -1,5 +1,5 @@
 // The fitted skin of one subject, computed once and shared by the exports
-// that need the same one (issue 25: in batch mode the motions of one subject
+// that need the same one (in batch mode the motions of one subject
 // reuse the weight fit and the corrective refit instead of redoing them per
 // motion). The skin (exportSkin) and the refit (refitCorrectives) depend only
 // on the model, the subject's betas and expression, --max-influences,

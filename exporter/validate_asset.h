@@ -4,7 +4,7 @@
 // serialises is finite, and every number stored as float32 fits a float32. Inputs are
 // validated where they enter; this catches what arithmetic makes of them
 // (a huge but finite translation that overflows float, a NaN from a bad
-// division) so that NaN and Inf never reach an output file (issue 16).
+// division) so that NaN and Inf never reach an output file.
 #pragma once
 
 #include "core/result.h"

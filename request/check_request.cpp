@@ -50,7 +50,7 @@ Status checkRanges(const ExportRequest& r) {
   return Status();
 }
 
-// Size options that would otherwise be silently ignored together (issue 13 item 6).
+// Size options that would otherwise be silently ignored together.
 Status checkMorphOptions(const ExportRequest& r) {
   if (r.corrective_basis > 0 && !r.correctives)
     return usage("--corrective-basis conflicts with --correctives none");

@@ -1,4 +1,4 @@
-// Every check of an export request's values, in one place (issue 27 item 1):
+// Every check of an export request's values, in one place:
 // each option's range and each conflict between options is checked here and
 // nowhere else. The command line only parses (cli/settings.cpp: syntax, and
 // where an option applies); the library functions below the request keep at

@@ -1,4 +1,4 @@
-// The DMPL part of one export (issue 14, exporter/dmpl_targets.h): resolve
+// The DMPL part of one export (exporter/dmpl_targets.h): resolve
 // --dmpl (a file, or a folder searched by the motion's gender), check the
 // motions' `dmpls` against the basis, add the dmpl_<i> targets with the
 // encoding taken from the motions' range, and the notes the user needs

@@ -1,12 +1,10 @@
-// A MANO motion's hand side against the MANO model's (issue "Motions from
-// today's tools", docs/motions.md "Decoder spec: HaMeR hands"). A hand motion
-// (Motion::hand, e.g. HaMeR's is_right) holds its side's own pose; the
-// model's side comes from its file name (core/math/mirror_model.h manoSide:
-// MANO_LEFT.pkl). When the two differ, the export poses the model mirrored by
-// S = diag(-1,1,1) (mirrorModel: x negated, triangle winding flipped), so a
-// left hand on MANO_RIGHT is exactly HaMeR's mirrored mesh: mirrored(S R S) =
-// S MANO_RIGHT(R). The mirrored model belongs to the one export (the cached
-// model is never changed) and its arrays are charged to the memory budget.
+// A MANO motion's hand side against the MANO model's (docs/motions.md "Decoder spec: HaMeR hands").
+// A hand motion (Motion::hand, e.g. HaMeR's is_right) holds its side's own pose; the model's side
+// comes from its file name (core/math/mirror_model.h manoSide: MANO_LEFT.pkl). When the two differ,
+// the export poses the model mirrored by S = diag(-1,1,1) (mirrorModel: x negated, triangle winding
+// flipped), so a left hand on MANO_RIGHT is exactly HaMeR's mirrored mesh: mirrored(S R S) = S
+// MANO_RIGHT(R). The mirrored model belongs to the one export (the cached model is never changed)
+// and its arrays are charged to the memory budget.
 #pragma once
 
 #include <memory>

@@ -1,7 +1,7 @@
 // What produced an output, as one hash recorded in its sidecar
 // ("producer": {"hash": ...}, exporter/metadata_json.h). Batch mode rebuilds
 // an output whose recorded hash differs from the one this run would record,
-// so "up to date" means "same inputs and same options" (issue 16).
+// so "up to date" means "same inputs and same options".
 //
 // The hash covers: a schema tag and the exporter version (SMPL_EXPORT_VERSION);
 // the request's hashed_options (name and value as given, sorted): every

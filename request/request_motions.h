@@ -1,4 +1,4 @@
-// The one place an export reads its motions (issue 27 item 1): each motion
+// The one place an export reads its motions: each motion
 // file (or --motion-sequence folder) is opened and decoded once per export,
 // and that decoded Motion serves every later step (the --model DIR pick, the
 // fit hands, the betas, DMPL, the bake). Small functions, so the motion

@@ -1,4 +1,4 @@
-// Every path a run reads or writes, in one list (issue 23 item 1), and the
+// Every path a run reads or writes, in one list, and the
 // guard that checks that list before any work. Inputs are never overwritten:
 // two paths are the same file when their real paths match (symbolic links
 // resolved) or they have the same device and inode (hard links). The loaders

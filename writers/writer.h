@@ -79,7 +79,7 @@ struct Writer {
 };
 
 // The writer table: one row per output format, and everything the rest of
-// the program knows about a format (issue 24 item 1). The command line reads
+// the program knows about a format. The command line reads
 // it for --format's choices, the --out extension check, which format-only
 // options apply and the usage text; the export request for the writer, the
 // WriterOptions container flag, the .gltf buffer file and whether a mesh is

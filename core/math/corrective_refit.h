@@ -1,6 +1,6 @@
 // Pose correctives refitted to a pruned skin. Cutting a vertex's skin to M
 // influences (pruneWeights or fitSkinWeights) moves it away from the
-// unpruned model at most poses, and weights alone cannot undo it (issue 25:
+// unpruned model at most poses, and weights alone cannot undo it (measured:
 // the best weights on the kept joints reach 13% below truncation). The
 // correctives can: they are linear in the pose features f, and the pruning
 // error is mostly a function of the rotations of the joints that move the
@@ -16,7 +16,7 @@
 //
 // with D_i non-zero only on the features S of the joints that move the
 // vertex (non-zero model weights) and their parents (the variant that held
-// on real motion in issue 25's experiment). The residual is taken in the
+// on real motion in our experiment). The residual is taken in the
 // rest frame (R_p^{-1} e_p): B_p (x_p + D_i f) = B_p x_p + R_p D_i f, and R_p is
 // a blend of rotations, near orthonormal, so this is the least-squares
 // problem up to R_p's conditioning, and it splits into three ridge
@@ -26,7 +26,7 @@
 // uniform random), a vertex keeps the model's deltas if the refit raises the
 // exact error |e_p - R_p D_i f_S(p)| in the mean or at the maximum.
 // Training and validation poses are motion-like (core/math/motion_poses.h):
-// trained on uniform random poses the refit overfits them (issue 25).
+// trained on uniform random poses the refit overfits them.
 // Cost: the vertices with one feature set S share the Gram matrix and its
 // factor; they are fitted in blocks of 32 whose posed vertices, blends and
 // right-hand sides are matrix products (the dense 6890-vertex stand-in:

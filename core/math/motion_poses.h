@@ -6,7 +6,7 @@
 // and collars barely move, and joints move together (a stride swings the legs
 // in opposite phase and the arms against them; sitting bends hips, knees and
 // ankles at once). A fit trained on uniform poses overfits them and can be
-// worse than truncation on real motion (issue 25).
+// worse than truncation on real motion.
 //
 // Model: for every joint whose name the authors' tables use (SMPL, SMPL-H,
 // SMPL-X, MANO: pelvis, left_hip, ..., left_index1, ...), a range of motion

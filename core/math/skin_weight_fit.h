@@ -27,7 +27,7 @@
 // joint ranges and correlations of captured motion) with a seed of their
 // own; trained on uniform random poses instead (motion_like = false), the
 // fit overfitted them and was worse than truncation at the maximum on a real
-// AMASS clip (issue 25). Reports that measure the error on the report seeds
+// AMASS clip. Reports that measure the error on the report seeds
 // (exporter/pruning_error.h) measure held-out poses.
 // Deterministic: the result does not depend on the thread count.
 #pragma once

@@ -1,4 +1,4 @@
-// People and frames in a motion file (issue "Motions from today's tools"):
+// People and frames in a motion file:
 // multi-person files decode to one Motion per track; --track picks among
 // them, and a track's detections become a clip of consecutive frames.
 //

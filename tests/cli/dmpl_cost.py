@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fixed-joint cost of DMPL in numpy (issue 14): max over every frame of the
+"""Fixed-joint cost of DMPL in numpy: max over every frame of the
 motion of the vertex distance between the published math (joints regressed
 from the displaced template, AMASS BodyModel) and the exporter's default
 (betas-only joints), same displaced template, weights pruned to M.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# DMPL soft tissue from the command line (issue 14; fixtures: tests/fixtures/make_dmpl.py):
+# DMPL soft tissue from the command line (fixtures: tests/fixtures/make_dmpl.py):
 # bad inputs fail with one line naming the file and leave no output; the notes
 # for a motion without `dmpls` and for `dmpls` without a basis; static export at
 # weight 0; --dmpl-count; --dmpl DIR (AMASS layout) with --model DIR, single and

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Files laid out as released (issue 11, model side): the SMPL-X release npz
+# Files laid out as released (model side): the SMPL-X release npz
 # (object-array keys, UVs), AMASS stage-II motions, per-frame betas, --uv
 # none / numpy pairs, a model folder with three genders and a mixed-gender
 # batch. Fixtures: tests/fixtures/make_released_layouts.py.

@@ -1,4 +1,4 @@
-"""Reliability cases for inputs (issue 16, kinds 1, 5 and 8): hostile sizes,
+"""Reliability cases for inputs: hostile sizes,
 endless files, bad numbers and raw bytes in names. Every case checks, through
 harness.expect_failure: the exit code, one printable error line naming the
 right file, no output or temporary file, inputs unchanged and bounded peak
@@ -134,7 +134,7 @@ fail("tiny source frame rate", base("--motion", tiny, "--fps", "30"), 2,
      ["tiny_fps.npz", "'mocap_framerate' is 0.001 frames per second"], [tiny])
 fail("--model /dev/zero", ["--model", "/dev/zero", "--out", OUT], 2, ["/dev/zero", "not a regular file"], [])
 fail("--motion /dev/zero", base("--motion", "/dev/zero"), 2, ["/dev/zero", "not a regular file"], [])
-# A directory is a model folder (issue 11): without released model names it is one error line.
+# A directory is a model folder: without released model names it is one error line.
 fail("--model a directory", ["--model", work, "--out", OUT], 2, [str(work), "no model files with the released names"], [])
 
 fail("--uv /dev/zero", base("--uv", "/dev/zero"), 2, ["/dev/zero", "not a regular file"], [])
@@ -198,7 +198,7 @@ fail("escape sequence and \\r in a pickle global name", ["--model", evil_pkl, "-
 evil_member = work / "evil_member.npz"
 with zipfile.ZipFile(evil_member, "w") as z:
     z.writestr("po\x1b[31mses\r.npy", npy_header("|O", (1,)) + b"\x00" * 8)
-# Readers are lazy (issue 11): an unneeded member is never read, so the evil name is only
+# Readers are lazy: an unneeded member is never read, so the evil name is only
 # listed; a duplicate of it is refused at listing time, with the name escaped.
 fail("unneeded npz member with an escape sequence in its name", base("--motion", evil_member), 2,
      ["evil_member.npz", "keys found", "po\\x1b[31mses\\x0d"], [evil_member])

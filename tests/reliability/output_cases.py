@@ -1,5 +1,4 @@
-"""Reliability cases for outputs and batch mode (issue 16, kinds 2, 3, 4, 6, 7, 9, 10;
-issue 23 item 1): inputs are never overwritten (same path, symbolic link, hard link;
+"""Reliability cases for outputs and batch mode : inputs are never overwritten (same path, symbolic link, hard link;
 model, motion, betas, UV file, DMPL basis, sidecar, the batch manifest), directories
 and devices are refused as outputs and as the manifest, a manifest inside the motion
 folder is refused, NaN/Inf never reach a file, batch name collisions and
@@ -110,7 +109,7 @@ def inputs_protected():
                    forbidden=[f"{basis}.smpl.json"])
 
 
-# -- issue 23 item 1: directories, devices and the batch manifest as outputs --
+# -- directories, devices and the batch manifest as outputs --
 
 def output_kinds():
     d = fresh("kinds")
@@ -182,7 +181,7 @@ def non_finite():
     trans = np.zeros((8, 3))
     trans[3] = [1e39, 0, 0]  # finite as a double, beyond float32: an Inf key in the file
     np.savez(huge, poses=poses, trans=trans, fps=np.array(30.0))
-    # The input validators (issue 16 kind 5) may reject the input first (exit
+    # The input validators may reject the input first (exit
     # 1 or 2, naming it); otherwise the final asset check must (exit 3, naming
     # the output and the value). Either way: no file.
     for ext in ("glb", "fbx"):

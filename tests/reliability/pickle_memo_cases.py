@@ -1,4 +1,4 @@
-"""Reliability cases for memo-shared pickles (issue "Nothing lost, round 2"):
+"""Reliability cases for memo-shared pickles:
 "a 16 KB pickle that shares memo objects peaks at 3.5-4 GB before it loads".
 The fixture containers/memo_shared.pkl (tests/fixtures/make_containers.py) is
 16655 bytes: 400 keys share one list of 1000 references to one list of 1000

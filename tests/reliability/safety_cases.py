@@ -86,7 +86,7 @@ def spawn_paused(argv):
 
 
 def planted_links():
-    """The issue's attack: in a shared, group-writable output folder, links under
+    """The reported attack: in a shared, group-writable output folder, links under
     the names the old code would open (.NAME.smpl.tmp-PID, for output and sidecar)
     and at the output's own name, all pointing at a file outside the folder."""
     shared, outside = fresh("planted/shared"), fresh("planted/outside")

@@ -1,4 +1,4 @@
-"""Headless-Blender check of baked DMPL soft tissue (issue 14): import a GLB/FBX
+"""Headless-Blender check of baked DMPL soft tissue: import a GLB/FBX
 written by `smpl-export --motion M --dmpl B [--dmpl-joints fixed|regressed]`,
 play it with NO runtime script, and compare the evaluated mesh at the first,
 middle and last frame with an independent numpy implementation of the

@@ -1,4 +1,4 @@
-# Compact glTF encodings (issue "Speed and size"): the CLI writes the builtin
+# Compact glTF encodings: the CLI writes the builtin
 # body and smpl_small.npz with each encoding (--corrective-epsilon, sparse;
 # --quantize-morphs, KHR_mesh_quantization; --draco, KHR_draco_mesh_compression;
 # all three; --meshopt, EXT_meshopt_compression, static and with a motion; the

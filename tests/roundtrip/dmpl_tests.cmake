@@ -1,4 +1,4 @@
-# DMPL soft tissue (issue 14; included from roundtrip/tests.cmake). Fixtures:
+# DMPL soft tissue (included from roundtrip/tests.cmake). Fixtures:
 # tests/fixtures/make_dmpl.py (<build>/fixtures/dmpl).
 #
 #   dmpl.export.<fmt>_<joints>   smpl-export --motion amass_smplh_dmpl --dmpl basis

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent numpy check of fitted skin weights (issue 13): read the skin
+"""Independent numpy check of fitted skin weights: read the skin
 (JOINTS_n / WEIGHTS_n) from an exported GLB, pose the model with numpy
 (model_math.forward, written from the contract) over held-out random poses
 (numpy's own generator: never the exporter's training poses), and compare the

@@ -1,4 +1,4 @@
-// three.js as a second real client of our GLB and FBX (issue 12): three's
+// three.js as a second real client of our GLB and FBX: three's
 // GLTFLoader / FBXLoader load an export, the joints are posed, the
 // smpl-correctives driver sets the morph weights, three's own CPU skinning
 // gives the vertices, and they are compared with the C++ reference forward

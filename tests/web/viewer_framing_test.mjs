@@ -1,4 +1,4 @@
-// The viewer's floor and framing in headless Chromium (issue 24): an animated
+// The viewer's floor and framing in headless Chromium: an animated
 // GLB (an AMASS-layout motion with root translation) is loaded through the
 // page's file input, and
 //   - the floor grid is at the clip's lowest point: numpy's forward pass of

@@ -1,5 +1,5 @@
-// smpl-bench: prints the speed and size table of the product (issue "Speed and
-// size"). --compact: only the compact glTF table. Full-size synthetic models
+// smpl-bench: prints the speed and size table of the product.
+// --compact: only the compact glTF table. Full-size synthetic models
 // (bench/synthetic_model.h) stand in for the licensed ones. Usage: smpl-bench [--quick] [--compact]
 // [--anim-minutes M] (--help: usage) smpl-bench --compare [--smplx CHECKOUT]: side by side with the
 // peers (compare.h).

@@ -85,7 +85,7 @@ TEST_F(BatchPlanTest, TruncatedOrEditedOutputIsRebuilt) {
   EXPECT_FALSE(planAndConvert(s));
   EXPECT_TRUE(planAndConvert(s));  // unchanged: up to date
   const auto size = fs::file_size(out);
-  truncateTo(out, 100);  // the case: an output cut to 100 bytes
+  truncateTo(out, 100);  // the reported case: an output cut to 100 bytes
   EXPECT_FALSE(planAndConvert(s));
   EXPECT_EQ(fs::file_size(out), size);
   EXPECT_TRUE(planAndConvert(s));

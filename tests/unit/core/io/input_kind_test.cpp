@@ -62,7 +62,7 @@ class InputFiles : public ::testing::Test {
 
 constexpr off_t k3GB = 3ll << 30;
 
-// The case: a 3 GB sparse file as --uv / --betas-file / --motion.
+// The reported case: a 3 GB sparse file as --uv / --betas-file / --motion.
 // Refused at once, without charging (or reading) more than the sniffed head.
 TEST_F(InputFiles, SparseFilesAreRefusedUnread) {
   const std::string zeros = sparse("uv.obj", "", k3GB);

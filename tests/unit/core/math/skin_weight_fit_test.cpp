@@ -69,10 +69,10 @@ Errors heldOut(const BodyModel& model, int m) {
   return {*t, *f};
 }
 
-// Issue 13's goal is 30% below truncation; every M-subset of the fixture's
+// The goal is 30% below truncation; every M-subset of the fixture's
 // at most 6 influences (exhaustive support) brings it to 72% on motion-like
 // poses (smpl-skin-report; 28% on uniform random poses, which it no longer
-// trains on: issue 25).
+// trains on).
 TEST(FitSkinWeights, HeldOutErrorOnTheSmplFixtureIsWellBelowTruncation) {
   Result<BodyModel> model = loadModel(std::string(SMPL_FIXTURE_DIR) + "/models/smpl_small.npz");
   ASSERT_TRUE(model.ok()) << model.message();

@@ -1,6 +1,6 @@
 // Unpickled values -> DataNode (core/io/pickle/pickle_tree.cpp) and the
 // pickle heap's expansion bound (PickleLimits::expansion): cycles, depth,
-// memo-shared objects, and the issue "a 16 KB pickle that shares memo
+// memo-shared objects, and the hostile case "a 16 KB pickle that shares memo
 // objects peaks at 3.5-4 GB before it loads".
 #include "core/io/pickle/pickle_tree.h"
 
