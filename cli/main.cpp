@@ -14,6 +14,7 @@
 int main(int argc, char** argv) {
   smpl::useFixedEigenBlocking();  // the same sums on every machine (core/math/eigen_blocking.h)
   smpl::os::prepareStandardStreams();
+  smpl::os::ignoreWriteSignals();  // a full disk quota or closed pipe is a write error (exit 4)
   smpl::os::Utf8Arguments args(argc, argv);
   return smpl::runCommandLine(args.argc(), args.argv());
 }

@@ -327,6 +327,19 @@ const std::vector<OptionSpec> kOptions = {
        return s->request.motions.push_back(v), Status();
      },
      Hashed::Content},
+    {"--skip-bad-frames", nullptr, nullptr, Applies::Motion, nullptr,
+     "folders of per-frame files (--motion-sequence, --hands DIR): skip an entry named like a "
+     "frame that is no readable file (a folder, FIFO, device, link loop) or whose number has "
+     "more than 12 digits, with a note naming it (default: an error naming it)",
+     [](V, S* s) { return s->request.skip_bad_frames = true, Status(); }},
+    {"--max-held-frames", nullptr, "N", Applies::Motion, nullptr,
+     "folders of per-frame files: at most N copies of a frame fill a gap between two frame "
+     "numbers (default 1000, at most 100000); a wider gap is an error naming its frames",
+     [](V v, S* s) {
+       Result<int64_t> n = parseInteger(v, 0, kMaxHeldFramesLimit);
+       if (!n) return Status(usageError("--max-held-frames: " + n.message()));
+       return s->request.max_held_frames = *n, Status();
+     }},
     {"--track", nullptr, "ID|longest|all", Applies::Motion, nullptr,
      "multi-person files: the person to bake (default longest: most detections, ties to the "
      "lower id, with a note listing the others); all: one output per person, "

@@ -32,6 +32,10 @@ Status checkRanges(const ExportRequest& r) {
     return usage(st.message());
   if (Status st = checkRate(r.source_fps, "--source-fps", 1, 1000, false); !st) return st;
   if (Status st = checkRate(r.fps, "--fps", 0, 1000, true); !st) return st;
+  if (r.max_held_frames < 0 || r.max_held_frames > kMaxHeldFramesLimit)
+    return usage("--max-held-frames: expected 0.." + std::to_string(kMaxHeldFramesLimit) +
+                 " (held copies of a frame per gap; more is a lost folder, not a pause), got '" +
+                 std::to_string(r.max_held_frames) + "'");
   if (r.first_frame < 0)
     return usage("--frames: bad start '" + std::to_string(r.first_frame) + "'");
   if (r.end_frame >= 0 && r.end_frame <= r.first_frame)

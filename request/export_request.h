@@ -30,7 +30,9 @@ struct ExportRequest {
                                      // --motion-sequence DIR is one of them too
   std::string motion_sequence;  // --motion-sequence DIR: per-frame files joined (motion_sequence.h)
   TrackChoice track;            // --track ID|longest|all (core/motions/motion_tracks.h)
-  bool scene = false;           // --scene: every track a body of one file (run_request.h)
+  bool skip_bad_frames = false;    // --skip-bad-frames: folders of frames skip unreadable entries
+  int64_t max_held_frames = 1000;  // --max-held-frames N: 0..kMaxHeldFramesLimit per gap
+  bool scene = false;              // --scene: every track a body of one file (run_request.h)
   SourceParams source_params = SourceParams::Default;  // --source-params global|incam
   std::optional<double> source_fps;    // --source-fps R, fps in [1, 1000]; none: the stored rate
   bool flat_hand_mean = false;         // --flat-hand-mean: fit hands are flat-hand relative

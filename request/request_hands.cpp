@@ -11,11 +11,14 @@ namespace smpl {
 namespace {
 
 // The tracks of one --hands path: a folder of per-frame files (HaMeR's demo
-// writes one per image, both hands as rows) or one file.
+// writes one per image, both hands as rows; the request's --skip-bad-frames
+// and --max-held-frames) or one file.
 // Its world and rate are the body clip's: no notes about them (up_given).
-Result<MotionSet> decodeHandFile(const std::string& path) {
+Result<MotionSet> decodeHandFile(const std::string& path, const ExportRequest& r) {
   MotionOptions options;
   options.up_given = true;
+  options.skip_bad_frames = r.skip_bad_frames;
+  options.max_held_frames = r.max_held_frames;
   std::error_code ec;
   if (std::filesystem::is_directory(os::fsPath(path), ec)) return loadMotionSequence(path, options);
   return loadMotionSet(path, options);
@@ -54,7 +57,7 @@ Status applyRequestHands(const BodyModel& model, const ExportRequest& r,
   std::vector<MotionSet> sets;
   for (const std::string& path : r.hands) {
     *about = path;
-    Result<MotionSet> set = decodeHandFile(path);
+    Result<MotionSet> set = decodeHandFile(path, r);
     if (!set) return set.error();
     sets.push_back(std::move(*set));
   }

@@ -19,6 +19,8 @@ MotionOptions motionOptionsOf(const ExportRequest& r) {
   options.source_fps = r.source_fps.value_or(0.0);
   options.up_given = r.up != UpAxis::Auto;  // no note about the layout's default turn
   options.source_params = r.source_params;
+  options.skip_bad_frames = r.skip_bad_frames;
+  options.max_held_frames = r.max_held_frames;
   return options;
 }
 

@@ -113,7 +113,18 @@ struct MotionOptions {
   // --motion-sequence, so a layout whose rows are that frame's hands (HaMeR)
   // reads each row as a track instead of as a frame.
   bool frame_file = false;
+  // Folders of per-frame files (loadMotionSequence): an entry named like a
+  // frame that cannot be read or numbered is skipped with a note naming it
+  // instead of failing the folder (--skip-bad-frames), and a gap between two
+  // frame numbers may hold at most this many copies of the frame before it
+  // (--max-held-frames N; kMaxHeldFramesLimit at most).
+  bool skip_bad_frames = false;
+  int64_t max_held_frames = 1000;
 };
+
+// The largest --max-held-frames: 100,000 held SMPL-X frames are ~0.4 GB of
+// rotations, an hour of video at 30 fps without a detection.
+constexpr int64_t kMaxHeldFramesLimit = 100000;
 
 // What one file holds: one Motion per person or track (most files hold one)
 // and the notes that concern the file as a whole.

@@ -18,9 +18,29 @@ namespace smpl {
 namespace fs = std::filesystem;
 namespace {
 
-bool digits(const std::string& s) {
-  return !s.empty() && s.size() <= 12 &&
+bool allDigits(const std::string& s) {
+  return !s.empty() &&
          std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+// Frame numbers up to 12 digits: a trillion frames, far within int64_t.
+constexpr size_t kMaxFrameDigits = 12;
+
+bool digits(const std::string& s) { return allDigits(s) && s.size() <= kMaxFrameDigits; }
+
+// The stem of `name` when it is named like a per-frame file: a motion
+// extension and `<digits>` or `<digits>_<digits>` of any length; "" if not.
+std::string frameStem(const std::string& name) {
+  const size_t dot = name.find('.');
+  if (dot == std::string::npos || hasSuffix(name, ".smpl.json")) return "";
+  const std::string ext = name.substr(name.rfind('.'));
+  const std::vector<std::string> known = motionFileExtensions();
+  if (std::find(known.begin(), known.end(), ext) == known.end()) return "";
+  const std::string stem = name.substr(0, name.rfind('.'));
+  const size_t underscore = stem.find('_');
+  if (!allDigits(stem.substr(0, underscore))) return "";
+  if (underscore != std::string::npos && !allDigits(stem.substr(underscore + 1))) return "";
+  return stem;
 }
 
 struct FrameFile {
@@ -28,8 +48,49 @@ struct FrameFile {
   std::string person, path;
 };
 
-// The per-frame files of `dir`, by frame then person; `ignored` counts the rest.
-Result<std::vector<FrameFile>> listFrames(const std::string& dir, size_t* ignored) {
+const char* describeType(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::directory:
+      return "a folder";
+    case fs::file_type::fifo:
+      return "a FIFO";
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::socket:
+      return "a socket";
+    case fs::file_type::not_found:
+      return "a link to nothing";
+    default:
+      return "not a file";
+  }
+}
+
+// Why the entry `path`, named like a frame (`stem`), cannot be one of the
+// sequence's frames, or "" when it can. Only its type is examined (stat(2)
+// through links, never open(2)): a FIFO would block the read and a device
+// never ends.
+std::string badFrameReason(const fs::path& path, const std::string& stem) {
+  const std::string number = stem.substr(0, stem.find('_'));
+  const std::string person =
+      stem.find('_') == std::string::npos ? "" : stem.substr(stem.find('_') + 1);
+  if (number.size() > kMaxFrameDigits || person.size() > kMaxFrameDigits)
+    return "a frame or person number of " + std::to_string(std::max(number.size(), person.size())) +
+           " digits (at most " + std::to_string(kMaxFrameDigits) + ")";
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);  // follows links: a link to a file is a frame
+  if (ec && st.type() != fs::file_type::not_found) return "cannot be examined: " + ec.message();
+  if (st.type() == fs::file_type::regular) return "";
+  return std::string("not a regular file (") + describeType(st.type()) + ")";
+}
+
+// The per-frame files of `dir`, by frame then person; `ignored` counts the
+// entries not named like frames. An entry named like a frame that is no
+// readable file is an error naming it, or with options.skip_bad_frames a note
+// in `skipped`.
+Result<std::vector<FrameFile>> listFrames(const std::string& dir, const MotionOptions& options,
+                                          size_t* ignored, std::vector<std::string>* skipped) {
   std::error_code ec;
   if (!fs::is_directory(os::fsPath(dir), ec))
     return makeError(dir + ": not a directory (--motion-sequence)", ErrorKind::Load);
@@ -38,9 +99,20 @@ Result<std::vector<FrameFile>> listFrames(const std::string& dir, size_t* ignore
        it.increment(ec)) {
     FrameFile f;
     f.path = os::utf8(it->path());
-    std::error_code e2;
-    if (!it->is_regular_file(e2) ||
-        !parseFrameName(os::utf8(it->path().filename()), &f.frame, &f.person)) {
+    const std::string stem = frameStem(os::utf8(it->path().filename()));
+    if (stem.empty()) {
+      ++*ignored;
+      continue;
+    }
+    if (const std::string why = badFrameReason(it->path(), stem); !why.empty()) {
+      if (!options.skip_bad_frames)
+        return makeError(f.path + ": named like a frame of the sequence but " + why +
+                             " (remove it, or give --skip-bad-frames to skip it with a note)",
+                         ErrorKind::Load);
+      skipped->push_back("skipped " + f.path + ": " + why + " (--skip-bad-frames)");
+      continue;
+    }
+    if (!parseFrameName(os::utf8(it->path().filename()), &f.frame, &f.person)) {
       ++*ignored;
       continue;
     }
@@ -53,7 +125,30 @@ Result<std::vector<FrameFile>> listFrames(const std::string& dir, size_t* ignore
   std::sort(files.begin(), files.end(), [](const FrameFile& a, const FrameFile& b) {
     return a.frame != b.frame ? a.frame < b.frame : a.person < b.person;
   });
+  std::sort(skipped->begin(), skipped->end());  // listing order is the file system's
   return files;
+}
+
+// A gap between two detections of one person holds copies of the frame
+// before it (assembleTrack); more than options.max_held_frames of them is an
+// error before any is made (three files numbered 0, 1 and 10^6 would be a
+// million frames).
+Status checkGaps(std::vector<int64_t> frames, const std::string& dir, const std::string& person,
+                 const MotionOptions& options) {
+  std::sort(frames.begin(), frames.end());
+  for (size_t i = 1; i < frames.size(); ++i) {
+    const int64_t held = frames[i] - frames[i - 1] - 1;
+    if (held > options.max_held_frames)
+      return makeError(
+          dir + ": " + (person.empty() ? "" : "person " + printable(person, 64) + ": ") +
+              "no file between frames " + std::to_string(frames[i - 1]) + " and " +
+              std::to_string(frames[i]) + ": the gap would hold " + std::to_string(held) +
+              " copies of frame " + std::to_string(frames[i - 1]) + " (at most " +
+              std::to_string(options.max_held_frames) + "; --max-held-frames N allows up to " +
+              std::to_string(kMaxHeldFramesLimit) + ")",
+          ErrorKind::Load);
+  }
+  return Status();
 }
 
 // Appends `from`'s rows to `to` (same layout and joint count).
@@ -128,12 +223,7 @@ Status settleBetas(const Person& p, const std::string& dir, Motion* m) {
 }  // namespace
 
 bool parseFrameName(const std::string& name, int64_t* frame, std::string* person) {
-  const size_t dot = name.find('.');
-  if (dot == std::string::npos || hasSuffix(name, ".smpl.json")) return false;
-  const std::string ext = name.substr(name.rfind('.'));
-  const std::vector<std::string> known = motionFileExtensions();
-  if (std::find(known.begin(), known.end(), ext) == known.end()) return false;
-  const std::string stem = name.substr(0, name.rfind('.'));
+  const std::string stem = frameStem(name);
   const size_t underscore = stem.find('_');
   const std::string first = stem.substr(0, underscore);
   const std::string rest = underscore == std::string::npos ? "" : stem.substr(underscore + 1);
@@ -145,7 +235,8 @@ bool parseFrameName(const std::string& name, int64_t* frame, std::string* person
 
 Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions& options) {
   size_t ignored = 0;
-  Result<std::vector<FrameFile>> files = listFrames(dir, &ignored);
+  std::vector<std::string> skipped;
+  Result<std::vector<FrameFile>> files = listFrames(dir, options, &ignored, &skipped);
   if (!files) return files.error();
   std::map<std::string, Person> people;
   std::vector<std::string> notes;
@@ -187,6 +278,9 @@ Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions
                 static_cast<long long>(files->back().frame),
                 ignored ? (", " + std::to_string(ignored) + " other files ignored").c_str() : "");
   out.notes.insert(out.notes.begin(), text);
+  out.notes.insert(out.notes.begin() + 1, skipped.begin(), skipped.end());
+  for (auto& [key, p] : people)
+    if (Status st = checkGaps(p.frames, dir, key, options); !st) return st.error();
   for (auto& [key, p] : people) {
     Motion& m = p.motion;
     m.name = folderName(dir);

@@ -5,12 +5,17 @@
 //
 // Files: the regular files directly in DIR whose stem is `<frame>` or
 // `<frame>_<person>` (digits) and whose extension is a motion extension of
-// the reader table; other files are ignored (a note counts them). Every file
+// the reader table; other files are ignored (a note counts them). An entry
+// named like that which is no regular file (a folder, a FIFO, a device, a
+// link loop or a link to any of them: only stat(2)ed, never opened) or whose
+// number has more than 12 digits fails the sequence, named, unless
+// options.skip_bad_frames (then a note names each one skipped). Every file
 // is read by loadMotionSet (each of its rows is frame <frame> + row); all must
 // be the same layout; one that cannot be read fails the whole sequence, named.
 // A person is the file's suffix, else the file's own track id; rows of one
 // person become one track (motion_tracks.h assembleTrack: gaps hold the
-// previous frame). No per-frame file stores a rate: 30 fps unless
+// previous frame; a gap holding more than options.max_held_frames is an
+// error naming the two frames). No per-frame file stores a rate: 30 fps unless
 // --source-fps, with the usual note. Notes that every file repeats are kept once.
 #pragma once
 

@@ -39,4 +39,11 @@ class Utf8Arguments {
 // page UTF-8. Nothing on POSIX.
 void prepareStandardStreams();
 
+// For the command-line program only, at startup (never in a library that a
+// host process loads: its signals are the host's): SIGXFSZ and SIGPIPE
+// ignored, so a write past `ulimit -f` or into a closed pipe fails with
+// EFBIG / EPIPE and is reported as a write error, its temporary removed,
+// instead of killing the process mid-write. Nothing on Windows (no such signals).
+void ignoreWriteSignals();
+
 }  // namespace smpl::os

@@ -1,5 +1,6 @@
 // POSIX implementation of core/os/system.h (Linux; also the WebAssembly
 // build, whose emscripten libc has getentropy, not getrandom).
+#include <signal.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -34,5 +35,12 @@ Utf8Arguments::Utf8Arguments(int argc, char** argv) : args_(argv, argv + argc) {
 }
 
 void prepareStandardStreams() {}
+
+void ignoreWriteSignals() {
+  ::signal(SIGPIPE, SIG_IGN);
+#ifdef SIGXFSZ
+  ::signal(SIGXFSZ, SIG_IGN);
+#endif
+}
 
 }  // namespace smpl::os

@@ -50,4 +50,6 @@ void prepareStandardStreams() {
   SetConsoleOutputCP(CP_UTF8);
 }
 
+void ignoreWriteSignals() {}
+
 }  // namespace smpl::os

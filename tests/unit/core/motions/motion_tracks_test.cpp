@@ -100,7 +100,8 @@ TEST(MotionSequence, FrameNames) {
   EXPECT_EQ(person, "0");
   EXPECT_TRUE(parseFrameName("000012.json", &frame, &person));
   EXPECT_EQ(person, "");
-  for (const char* bad : {"walk.npz", "12_a.npz", "12.txt", "12.glb.smpl.json", "_1.npz"})
+  for (const char* bad :
+       {"walk.npz", "12_a.npz", "12.txt", "12.glb.smpl.json", "_1.npz", "0000000000012.npz"})
     EXPECT_FALSE(parseFrameName(bad, &frame, &person)) << bad;
 }
 
