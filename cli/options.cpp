@@ -316,7 +316,8 @@ const std::vector<OptionSpec> kOptions = {
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content, not by name: AMASS, SMPLCodec .smpl, fits, AIST++, and "
      "the outputs of video, generation and hand trackers: WHAM, 4D-Humans, GVHMR, TRAM, ROMP, "
-     "EasyMocap, SMPLer-X, Motion-X, MDM, HaMeR, BEAT2; the list: docs/motions.md):",
+     "EasyMocap, SMPLer-X, Motion-X, MDM, HaMeR, BEAT2; the list: motions.md in "
+     "<prefix>/share/doc/smpl-export):",
      "bake FILE as an animation (repeatable: one animation each)",
      [](V v, S* s) { return s->request.motions.push_back(v), Status(); }, Hashed::Content},
     {"--motion-sequence", nullptr, "DIR", Applies::Single, nullptr,
@@ -568,7 +569,8 @@ std::string usageText() {
   }
   for (const std::string& line :
        wrap("\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write "
-            "output.\nReference: docs/cli.md",
+            "output.\nReference: man smpl-export; the pages (cli.md, motions.md, ...) are in "
+            "<prefix>/share/doc/smpl-export, docs/ in the sources",
             kWidth))
     out += line + "\n";
   return out;

@@ -1,10 +1,14 @@
 #!/usr/bin/python3
-"""Runs every smpl-export example of the README on small synthetic files.
+"""Runs every smpl-export example of the README and the docs pages on small synthetic files.
 
-The examples are read from README.md itself, not copied here: every line of
-an indented code block that starts with `smpl-export ` and every inline code
-span `smpl-export ...` (the "What you have -> the command" table). Lines with
-shell variables or "..." are templates, not examples, and are skipped.
+The examples are read from README.md and the pages in DOC_PAGES (the pages
+the README's sections moved to), not copied here: every line of an indented
+code block that starts with `smpl-export ` and every inline code span
+`smpl-export ...` (the "What you have -> the command" table). In every
+docs/*.md page, a fenced block right after a `<!-- runnable -->` line is
+runnable too: each of its lines that starts with `smpl-export ` is an
+example. Lines with shell variables or "..." are templates, not examples, and
+are skipped.
 The README's file names (SMPL_NEUTRAL.npz, walk_poses.npz, models/, ...)
 are created in a sandbox as copies of synthetic fixtures written by
 tests/fixtures/make_*.py (random arrays with the real layouts; never model
@@ -13,7 +17,7 @@ given smpl-export first on PATH. A command passes when it exits 0 and its
 --out file (or a file in its --out-dir) exists.
 
     /usr/bin/python3 samples/run.py --exe build/cli/smpl-export [--fixtures build/fixtures]
-        [--readme README.md] [--work /tmp/smpl-samples]
+        [--readme README.md] [--docs docs] [--work /tmp/smpl-samples]
 
 --fixtures reuses fixtures the build already generated (CTest does this);
 without it the fixture scripts are run into <work>/fixtures. Exit 0 when every
@@ -21,6 +25,7 @@ example passes, 1 otherwise (each failure printed with its output).
 Needs numpy (Debian's /usr/bin/python3).
 """
 import argparse
+import glob
 import os
 import re
 import shlex
@@ -34,7 +39,11 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCRIPTS = ["make_models.py", "make_motions.py", "make_motion_formats.py", "make_released_layouts.py",
            "make_generation_layouts.py", "make_dmpl.py", "make_video_layouts.py"]
-MIN_EXAMPLES = 15  # the README has 34; fewer means the extraction broke
+MIN_EXAMPLES = 15  # the README and its pages have 34; fewer means the extraction broke
+# The pages that hold the README's former sections: all their examples run.
+DOC_PAGES = ["getting-started.md", "install.md", "inputs.md", "options.md", "skin-weights.md", "animation.md",
+             "batch.md", "outputs.md", "engines.md", "web.md", "performance.md", "development.md"]
+RUNNABLE = "<!-- runnable -->"
 
 # README name -> fixture (relative to the fixture directory). Folders are copied whole.
 FILES = {
@@ -83,14 +92,35 @@ FILES = {
 }
 
 
-def examples(readme):
-    """The smpl-export commands of the README, in order, without duplicates."""
-    found = []
-    with open(readme, encoding="utf-8") as f:
+def page_examples(path, every):
+    """A page's smpl-export commands: with `every`, indented lines and inline spans; always,
+    the lines of fenced blocks marked runnable."""
+    found, state = [], "text"  # text -> marked (after RUNNABLE) -> fence (inside its block)
+    with open(path, encoding="utf-8") as f:
         for line in f:
-            if line.startswith("    smpl-export "):
+            fence = line.strip().startswith("```")
+            if state == "fence":
+                state = "text" if fence else state
+                if not fence and line.strip().startswith("smpl-export "):
+                    found.append(line.strip())
+                continue
+            if state == "marked" and fence:
+                state = "fence"
+                continue
+            state = "marked" if line.strip() == RUNNABLE else ("marked" if state == "marked" and not line.strip()
+                                                               else "text")
+            if every and line.startswith("    smpl-export "):
                 found.append(line.strip())
-            found += re.findall(r"`(smpl-export [^`]*)`", line)
+            if every:
+                found += re.findall(r"`(smpl-export [^`]*)`", line)
+    return found
+
+
+def examples(readme, docs=None):
+    """The smpl-export commands of the README and the docs pages, in order, without duplicates."""
+    found = page_examples(readme, True)
+    for page in sorted(glob.glob(os.path.join(docs, "*.md"))) if docs else []:
+        found += page_examples(page, os.path.basename(page) in DOC_PAGES)
     seen = []
     for cmd in found:
         if "$" not in cmd and "..." not in cmd and cmd not in seen:
@@ -162,8 +192,11 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--exe", required=True, help="the smpl-export binary to test")
     p.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    p.add_argument("--docs", default=os.path.join(ROOT, "docs"), help="folder of the docs pages")
     p.add_argument("--fixtures", help="fixture directory the build generated (default: generate)")
     p.add_argument("--work", help="scratch directory (default: a new temporary one)")
+    p.add_argument("--min-examples", type=int, default=MIN_EXAMPLES,
+                   help="fewer examples found is a failure (a test of one page lowers it)")
     a = p.parse_args()
     work = a.work or tempfile.mkdtemp(prefix="smpl-samples-")
     fixtures = a.fixtures or make_fixtures(work)
@@ -174,7 +207,7 @@ def main():
         return 1
     box = sandbox(fixtures, work)
     env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(a.exe)) + os.pathsep + os.environ["PATH"])
-    cmds = examples(a.readme)
+    cmds = examples(a.readme, a.docs)
     failed = 0
     for cmd in cmds:
         args = shlex.split(cmd)
@@ -184,9 +217,9 @@ def main():
         if problem:
             failed += 1
             print("     " + (r.stdout + r.stderr).strip().replace("\n", "\n     "))
-    print("%d README examples, %d failed" % (len(cmds), failed))
-    if len(cmds) < MIN_EXAMPLES:
-        print("expected at least %d examples in %s: the extraction found too few" % (MIN_EXAMPLES, a.readme))
+    print("%d README and docs examples, %d failed" % (len(cmds), failed))
+    if len(cmds) < a.min_examples:
+        print("expected at least %d examples in %s: the extraction found too few" % (a.min_examples, a.readme))
         return 1
     return 1 if failed else 0
 

@@ -9,6 +9,8 @@
 # into build-wasm-deps/; nothing of theirs is committed). ccache, when
 # present, caches the compiles.
 #   scripts/build-wasm.sh            (Debian packages: scripts/setup-deps.sh --wasm)
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export NODE_PATH=${NODE_PATH:-/usr/share/nodejs}  # emcc's acorn (Debian's node-acorn)

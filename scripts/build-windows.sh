@@ -7,6 +7,8 @@
 # nothing of theirs is committed). Draco is off in this build (--draco is
 # refused). ccache, when present, caches every compile.
 #   scripts/build-windows.sh            (Debian packages: scripts/setup-deps.sh --windows)
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 cd "$(dirname "$0")/.."
 deps=$PWD/build-windows-deps

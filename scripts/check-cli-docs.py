@@ -2,7 +2,7 @@
 """The CLI's options are described once (cli/options.cpp); this checks the
 two places that repeat them for readers:
 
-- the README's option table (after "Options (`smpl-export --help`):") names
+- docs/options.md's option table (after "Options (`smpl-export --help`):") names
   exactly the options `smpl-export --help` lists;
 - docs/cli.md holds the `--help` text verbatim between its
   `<!-- help:begin -->` and `<!-- help:end -->` markers.
@@ -139,12 +139,12 @@ def main():
     help_text = subprocess.run([exe, "--help"], check=True, capture_output=True, text=True).stdout
     problems = []
     listed = help_options(help_text)
-    with open(f"{repo}/README.md", encoding="utf-8") as f:
+    with open(f"{repo}/docs/options.md", encoding="utf-8") as f:
         documented = readme_options(f.read())
     for name in sorted(listed - documented):
-        problems.append(f"README.md: option table lacks {name} (listed by --help)")
+        problems.append(f"docs/options.md: option table lacks {name} (listed by --help)")
     for name in sorted(documented - listed):
-        problems.append(f"README.md: option table names {name}, which --help does not list")
+        problems.append(f"docs/options.md: option table names {name}, which --help does not list")
     path = f"{repo}/docs/cli.md"
     with open(path, encoding="utf-8") as f:
         doc = f.read()
@@ -169,6 +169,10 @@ def main():
     print(f"{len(listed)} options in --help; {len(CLAIMS)} docs/cli.md claims run; {len(problems)} problems")
     return 1 if problems else 0
 
+
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    print(__doc__.strip())  # --help: the usage above, and nothing else
+    sys.exit(0)
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -3,6 +3,8 @@
 # .clang-format (Google style, 100 columns). Prints the files that are not and
 # exits 1; `scripts/check-format.sh --fix` formats them in place.
 #   scripts/check-format.sh [--fix]
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -uo pipefail
 cd "$(dirname "$0")/.."
 command -v clang-format >/dev/null || { echo "check-format: clang-format is not installed (apt-get install clang-format)"; exit 1; }

@@ -32,6 +32,10 @@ def main(root):
     return 1 if found else 0
 
 
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    print(__doc__.strip())  # --help: the usage above, and nothing else
+    sys.exit(0)
+
 if __name__ == "__main__":
     sys.exit(main(os.path.abspath(sys.argv[1] if len(sys.argv) > 1 and not sys.argv[1].startswith("-") else
                                   os.path.join(os.path.dirname(__file__), ".."))))

@@ -79,5 +79,9 @@ def main():
     return 1 if problems else 0
 
 
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    print(__doc__.strip())  # --help: the usage above, and nothing else
+    sys.exit(0)
+
 if __name__ == "__main__":
     sys.exit(main())

@@ -18,6 +18,8 @@
 # printed summary and notes (stdout) are compared too, with the times
 # ("123 ms") blanked: rows "[NAME] stdout" (batch lines sorted: workers
 # finish in any order).
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -uo pipefail
 if [[ $# -lt 2 ]]; then
   echo "usage: $0 OLD_EXE NEW_EXE [FIXTURE_DIR] [WORK_DIR]" >&2

@@ -6,6 +6,8 @@
 #   debsrc_fetch PKG VERSION   downloads, checks (dpkg-source) and unpacks it;
 #                              prints the unpacked folder
 # Environment: SMPL_DEB_SUITE (bookworm), SMPL_DEB_MIRROR, SMPL_DEB_KEYRING.
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 debsrc_init() {
   DEBSRC_WORK=$1
   local apt=$DEBSRC_WORK/apt suite=${SMPL_DEB_SUITE:-bookworm}

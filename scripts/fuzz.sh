@@ -6,6 +6,8 @@
 # targets are already built (scripts/test.sh passes its sanitizer build);
 # default: configure and build build-fuzz.
 #   scripts/fuzz.sh [SECONDS [BUILD_DIR]]
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}

@@ -125,5 +125,9 @@ def main():
         os.replace(tmp, os.path.join(out_dir, name))
 
 
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    print(__doc__.strip())  # --help: the usage above, and nothing else
+    sys.exit(0)
+
 if __name__ == "__main__":
     main()

@@ -82,5 +82,9 @@ def main():
     os.replace(tmp, out_path)
 
 
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    print(__doc__.strip())  # --help: the usage above, and nothing else
+    sys.exit(0)
+
 if __name__ == "__main__":
     main()

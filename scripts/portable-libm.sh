@@ -21,6 +21,8 @@
 #
 # Usage: scripts/portable-libm.sh [--target linux|mingw] PREFIX
 #   -> PREFIX/lib/libsmpl_m.a, PREFIX/include/smpl_m.h
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 TARGET=mingw; PREFIX=""
 while [ $# -gt 0 ]; do

@@ -9,7 +9,9 @@
 #   smpl_maya-<version>.zip                  the Maya module (folder maya/)
 #   com.smpl-export.correctives-<version>.tgz the Unity package (UPM: add package from tarball)
 #   smpl-export-<version>-windows-x86_64.zip  bin/smpl-export.exe (scripts/build-windows.sh:
-#                                   mingw-w64, static, Windows' own DLLs only), LICENSE, README.md
+#                                   mingw-w64, static, Windows' own DLLs only), LICENSE, README.md,
+#                                   share/doc/smpl-export/*.md
+#   smpl-export-<version>-docs.tar.gz  the docs site (mkdocs.yml), also in the .tar.gz and .deb
 #   SHA256SUMS
 # The binary is a SMPL_STATIC=ON build in build-release/ (only smpl-export and
 # the installed files are built; ccache makes a rebuild nearly free).
@@ -22,6 +24,8 @@
 #                                   extension with CMake in build-wheel/ (Release, ccache)
 # --windows, --npm and --all are accepted (every artifact is always built).
 #   scripts/release.sh [--windows] [--npm] [--all]
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 cd "$(dirname "$0")/.."
 for arg in "$@"; do
@@ -44,6 +48,14 @@ if readelf -lW build-release/cli/smpl-export | grep -q "program interpreter"; th
   exit 1
 fi
 rm -rf "$dist" && mkdir -p "$dist"
+# The docs site (mkdocs.yml), built before cpack so that the .tar.gz and the .deb carry it
+# in share/doc/smpl-export/site/ (packaging/CMakeLists.txt installs build-release/site if present).
+mkdocs build --strict -q -d "$PWD/build-release/site" || {
+  echo "release.sh: mkdocs build --strict failed (scripts/setup-deps.sh --build installs mkdocs)" >&2
+  exit 1
+}
+tar --sort=name --mtime=2026-01-01 --owner=0 --group=0 --numeric-owner \
+  -C build-release --transform "s,^site,smpl-export-$version-docs," -czf "$dist/smpl-export-$version-docs.tar.gz" site
 (cd build-release && cpack -G "TGZ;DEB" -B "$PWD/cpack" >cpack.log) || {
   echo "release.sh: cpack failed (build-release/cpack.log)" >&2
   exit 1
@@ -51,7 +63,8 @@ rm -rf "$dist" && mkdir -p "$dist"
 cp "build-release/cpack/$name.tar.gz" "build-release/cpack/smpl-export_${version}_amd64.deb" "$dist/"
 cp build-release/smpl_correctives.zip "$dist/smpl_correctives-$version-blender.zip"
 cp build-release/smpl_maya.zip "$dist/smpl_maya-$version.zip"
-# The Windows zip: smpl-export-<version>-windows-x86_64/bin/smpl-export.exe, LICENSE, README.md
+# The Windows zip: smpl-export-<version>-windows-x86_64/bin/smpl-export.exe, LICENSE, README.md,
+# share/doc/smpl-export/*.md
 # (stored with fixed times and order, so the same build zips to the same bytes).
 mkdir -p build-windows-deps
 scripts/build-windows.sh >build-windows-deps/build.log 2>&1 || {
@@ -60,10 +73,11 @@ scripts/build-windows.sh >build-windows-deps/build.log 2>&1 || {
   exit 1
 }
 /usr/bin/python3 - "$dist/smpl-export-$version-windows-x86_64.zip" "smpl-export-$version-windows-x86_64" <<'PY'
-import sys, zipfile
+import glob, os, sys, zipfile
 out, top = sys.argv[1], sys.argv[2]
 files = [("build-windows/cli/smpl-export.exe", "bin/smpl-export.exe"), ("LICENSE", "LICENSE"),
          ("README.md", "README.md")]
+files += [(p, "share/doc/smpl-export/" + os.path.basename(p)) for p in sorted(glob.glob("docs/*.md"))]
 with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
     for src, name in files:
         info = zipfile.ZipInfo(f"{top}/{name}", date_time=(2026, 1, 1, 0, 0, 0))

@@ -9,6 +9,8 @@
 # summaries and then the wall time of each phase are the last things printed.
 # Exit status is non-zero if anything fails.
 #   scripts/test.sh [--no-fuzz]
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)

@@ -131,5 +131,9 @@ def main(argv):
     return 1 if check and problems else 0
 
 
+if __name__ == "__main__" and {"-h", "--help"} & set(sys.argv[1:]):
+    print(__doc__.strip())  # --help: the usage above, and nothing else
+    sys.exit(0)
+
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))

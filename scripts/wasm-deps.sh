@@ -12,6 +12,8 @@
 # Nothing of theirs is committed. Idempotent: a library whose stamp names the
 # Debian source version apt offers now is not rebuilt.
 #   scripts/wasm-deps.sh PREFIX     (Debian packages: scripts/setup-deps.sh --wasm)
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 [[ $# -eq 1 ]] || { echo "usage: $0 PREFIX" >&2; exit 2; }
 here=$(cd "$(dirname "$0")" && pwd)

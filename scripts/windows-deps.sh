@@ -18,6 +18,8 @@
 # sources list (deb-src, bookworm) and private list/cache folders under
 # PREFIX/.src are used. Idempotent: a library whose PREFIX stamp names the
 # Debian source version that apt offers now is not rebuilt.
+# --help: the comment block above, then exit without doing anything.
+case "${1:-}" in -h | --help) awk 'NR > 1 && !/^#/ { exit } NR > 1 { sub(/^# ?/, ""); print }' "$0"; exit 0 ;; esac
 set -euo pipefail
 
 MESHOPT=0

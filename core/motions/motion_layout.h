@@ -76,7 +76,7 @@ std::vector<std::string> motionFileExtensions();
 // a motion: give it as --model ..." for a model's arrays (v_template with
 // shapedirs, posedirs, weights or J_regressor), "no pose data (keys betas,
 // gender): a shape file, not a motion: give it as --betas-file" when no key
-// looks like pose data, else "keys found: a, b, ...; supported layouts: docs/motions.md" (keys
+// looks like pose data, else "keys found: a, b, ...; supported layouts: motions.md in <prefix>/share/doc/smpl-export" (keys
 // sorted, at most 12, through printable()).
 std::string unmatchedMessage(const DataNode& root);
 

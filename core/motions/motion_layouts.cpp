@@ -124,14 +124,15 @@ std::string unmatchedMessage(const DataNode& root) {
   if (!root.isDict())
     return "holds " + describeNode(root) +
            " at the top level; not a motion layout this version reads (supported layouts: "
-           "docs/motions.md)";
+           "motions.md in <prefix>/share/doc/smpl-export)";
   if (isBodyModel(root))
     return "a body model file (keys " + keyList(root) +
            "), not a motion: give it as --model, and the motion as --motion";
   if (isShapeOnly(root))
     return "no pose data (keys " + keyList(root) +
            "): a shape file, not a motion: give it as --betas-file";
-  return "keys found: " + keyList(root) + "; supported layouts: docs/motions.md";
+  return "keys found: " + keyList(root) +
+         "; supported layouts: motions.md in <prefix>/share/doc/smpl-export";
 }
 
 }  // namespace smpl

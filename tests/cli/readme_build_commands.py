@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The README's build commands work after its quick start.
+"""The build commands of the README and the docs pages work after the README's quick start.
 
 The quick start configures `build` with its own flags (read from the README's
 quick-start line, e.g. -DSMPL_BUILD_TESTS=OFF). This configures a fresh
@@ -14,6 +14,7 @@ directory the same way (configure only: seconds) and checks that
     readme_build_commands.py SOURCE_DIR WORK_DIR [CMAKE]
 Exit 1 with one line per problem.
 """
+import glob
 import os
 import re
 import shlex
@@ -41,6 +42,10 @@ def main():
     with open(os.path.join(src, "README.md"), encoding="utf-8") as f:
         readme = f.read()
     flags = quick_start_flags(readme)
+    # The --target lines and build/... programs of the README and of the docs pages it links to.
+    for page in sorted(glob.glob(os.path.join(src, "docs", "*.md"))):
+        with open(page, encoding="utf-8") as f:
+            readme += "\n" + f.read()
     build = os.path.join(work, "quickstart-build")
     shutil.rmtree(build, ignore_errors=True)
     r = subprocess.run([cmake, "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release"] + flags,

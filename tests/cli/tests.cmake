@@ -25,15 +25,20 @@ add_test(NAME cli.bvh
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/bvh_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
 set_tests_properties(cli.bvh PROPERTIES LABELS cli)
 
-# Every smpl-export example of the README, run on synthetic files (samples/run.py),
-# and proof that the run fails when a README example breaks.
+# Every smpl-export example of the README and the docs pages (samples/run.py: the
+# README's former sections and every `<!-- runnable -->` block), run on synthetic files,
+# and proof that the run fails when a README example or a runnable docs command breaks.
 add_test(NAME cli.readme_samples
   COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/samples/run.py --exe $<TARGET_FILE:smpl-export>
           --fixtures ${SMPL_FIXTURE_DIR} --work ${CMAKE_CURRENT_BINARY_DIR}/readme_samples)
 add_test(NAME cli.readme_samples_detect_breakage
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/readme_samples_breakage_test.sh ${SMPL_SYSTEM_PYTHON}
           ${PROJECT_SOURCE_DIR} $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
-set_tests_properties(cli.readme_samples cli.readme_samples_detect_breakage PROPERTIES LABELS cli)
+add_test(NAME cli.docs_runnable_detect_breakage
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/docs_runnable_breakage_test.sh ${SMPL_SYSTEM_PYTHON}
+          ${PROJECT_SOURCE_DIR} $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR})
+set_tests_properties(cli.readme_samples cli.readme_samples_detect_breakage cli.docs_runnable_detect_breakage
+  PROPERTIES LABELS cli)
 
 # Fitted skin weights checked by numpy (tests/roundtrip/skin_fit_check.py): the
 # weights read from the exported GLB beat numpy's truncation on held-out poses

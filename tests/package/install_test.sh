@@ -23,6 +23,10 @@ expected=(
   share/doc/smpl-export/LICENSE
   share/doc/smpl-export/README.md
   share/doc/smpl-export/CHANGELOG.md
+  share/doc/smpl-export/cli.md
+  share/doc/smpl-export/motions.md
+  share/doc/smpl-export/getting-started.md
+  share/doc/smpl-export/sidecar.schema.json
   share/smpl-export/blender/smpl_correctives.zip
   share/smpl-export/maya/smpl_maya.mod
   share/smpl-export/maya/scripts/smpl_maya/core.py
@@ -62,4 +66,21 @@ for p in problems:
     print(p)
 sys.exit(1 if problems else 0)
 EOF
+
+# Every page --help and the unknown-motion refusal name is installed where they say:
+# <prefix>/share/doc/smpl-export/<page>.
+docs=share/doc/smpl-export
+help=$("$prefix/bin/smpl-export" --help)
+grep -q "<prefix>/$docs" <<<"$help" || fail "--help does not name <prefix>/$docs"
+for page in $(grep -o '[a-z-]*\.md' <<<"$help" | sort -u); do
+  [[ -f $prefix/$docs/$page ]] || fail "--help names $page, which is not installed in $docs"
+done
+/usr/bin/python3 -c 'import numpy as np, sys; np.savez(sys.argv[1], fps=np.array(30.0),
+    root_positions=np.zeros((4, 3)), rotations=np.zeros((4, 24, 4)))' "$work/unknown.npz"
+set +e
+refusal=$("$prefix/bin/smpl-export" --model builtin --motion "$work/unknown.npz" --out "$work/u.glb" 2>&1)
+set -e
+page=$(grep -o "supported layouts: [a-z-]*\.md in <prefix>/$docs" <<<"$refusal" | grep -o '[a-z-]*\.md') ||
+  fail "an unknown motion layout does not name a page in <prefix>/$docs: $refusal"
+[[ -f $prefix/$docs/$page ]] || fail "the unknown-layout refusal names $page, which is not installed in $docs"
 echo "cmake --install: ${#expected[@]} files checked under the prefix; the installed smpl-export runs"

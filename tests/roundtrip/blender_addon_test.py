@@ -91,14 +91,14 @@ def check_playback(arm, mesh_obj, model, names, poses, weights, v_shaped, joints
     rt.check(worst <= 1e-5, "frame-change handler: vertex error %.3g m" % worst)
 
 
-README = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "README.md")
+README = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "docs", "engines.md")
 
 
 def readme_import_line():
-    """The README's one-line import of the add-on's module (Blender add-on section)."""
+    """The one-line import (docs/engines.md) of the add-on's module (Blender add-on section)."""
     with open(README, encoding="utf-8") as f:
         lines = [l.strip() for l in f if l.startswith("    import sys; correctives = ")]
-    rt.check(len(lines) == 1, "README: expected one '    import sys; correctives = ...' line, got %d" % len(lines))
+    rt.check(len(lines) == 1, "docs/engines.md: expected one '    import sys; correctives = ...' line, got %d" % len(lines))
     return lines[0] if lines else "correctives = None"
 
 
@@ -107,7 +107,7 @@ def run_line(line):
     try:
         exec(line, scope)
     except Exception as e:  # noqa: BLE001  (reported as a check failure)
-        rt.check(False, "README import line failed: %s: %s" % (type(e).__name__, e))
+        rt.check(False, "docs/engines.md import line failed: %s: %s" % (type(e).__name__, e))
     return scope.get("correctives")
 
 
