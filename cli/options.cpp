@@ -351,8 +351,8 @@ const std::vector<OptionSpec> kOptions = {
        return s->request.track = *c, Status();
      }},
     {"--scene", nullptr, nullptr, Applies::Single, nullptr,
-     "multi-person files: every track a skinned body of its own in one .glb/.gltf, on the "
-     "file's timeline (hidden where absent), with the file's camera when it has one",
+     "multi-person files: every track a skinned body of its own in one .glb/.gltf/.fbx, on "
+     "the file's timeline (hidden where absent), with the file's camera when it has one",
      [](V, S* s) { return s->request.scene = true, Status(); }},
     {"--source-params", nullptr, "global|incam", Applies::Motion, nullptr,
      "tools that write world and camera parameters (WHAM, GVHMR, TRAM, PromptHMR): which to read "

@@ -149,7 +149,7 @@ Status checkSceneOptions(const ExportRequest& r, const WriterFormat& format) {
   if (!r.scene) return Status();
   if (!format.writer || !format.writer->writesScenes())
     return usage("--scene: " + format.name +
-                 " output cannot hold several bodies on one timeline; write .glb or .gltf");
+                 " output cannot hold several bodies on one timeline; write .glb, .gltf or .fbx");
   if (r.motions.size() != 1)
     return usage("--scene: give one --motion (or --motion-sequence) holding the tracks; got " +
                  std::to_string(r.motions.size()));

@@ -14,6 +14,10 @@ on one point). Sensitivity (each must be >= 1 mm away from what the file plays):
 the reference with the other track's betas, and the reference one frame later (a start shifted by
 one frame). Also: the sidecar's scene entry, one skin and one mesh per body, the timeline's span.
 Exit status 0 only when every check passes; prints the measured numbers.
+
+With --format fbx the scene is written as FBX instead and read by Blender's FBX importer only
+(--blender, tests/roundtrip/blender_scene.py): the same expected vertices, hidden bodies and camera
+(world matrix and vertical field of view), with the FBX sensitivity checks there.
 """
 import argparse
 import json
@@ -268,7 +272,7 @@ def camera_for_clients(want, first, end):
     if want is None:
         return False
     frames = [f for f in sorted({first, (first + end) // 2, end - 1}) if f in want["frames"]]
-    return {"frames": frames,
+    return {"frames": frames, "yfov": want["yfov"],
             "position": [want["frames"][f][1].tolist() for f in frames],
             "direction": [(-want["frames"][f][0][:, 2]).tolist() for f in frames],
             "up": [want["frames"][f][0][:, 1].tolist() for f in frames]}
@@ -276,15 +280,16 @@ def camera_for_clients(want, first, end):
 
 def expected_clients(refs, detected, first, end, fps, m, weights, camera=False):
     """What the three.js, Babylon.js and Blender checks compare with: per body (named body_<id>) its rest mesh,
-    a few scene frames (its first, middle and last detection, the scene's first and last frame and
-    the first frame of a gap where it is absent) with numpy's vertices or "hidden"."""
+    a few scene frames (its first, middle and last detection, the scene's first and last frame, the
+    frames just before and after its track and the first frame of a gap where it is absent) with numpy's vertices or "hidden"."""
     bodies = {}
     for tid, c in refs.items():
         frames_of = sorted(detected[tid])
         start = frames_of[0]
         present = sorted({start, frames_of[len(frames_of) // 2], frames_of[-1]})
         gaps = [f for f in range(start, frames_of[-1]) if f not in detected[tid]][:1]
-        absent = sorted({f for f in [first, end - 1] + gaps if f not in detected[tid]})
+        edges = [start - 1, frames_of[-1] + 1]  # either side of its track: the visibility changes
+        absent = sorted({f for f in [first, end - 1] + gaps + edges if first <= f < end and f not in detected[tid]})
         frames = sorted(present + absent)
         bodies["body_" + tid] = {
             "rest": video_cases.shaped(m, c["betas"])[0].tolist(),
@@ -296,7 +301,8 @@ def expected_clients(refs, detected, first, end, fps, m, weights, camera=False):
 
 def client(cmd, what):
     run = subprocess.run(cmd, capture_output=True, text=True)
-    lines = [line for line in run.stdout.splitlines() if "max_err" in line or "spread" in line or "FAIL" in line]
+    keys = ("max_err", "spread", "FAIL", "away", "yfov")
+    lines = [line for line in run.stdout.splitlines() if any(k in line for k in keys)]
     print("\n".join("%s: %s" % (what, line.strip()) for line in lines))
     check(run.returncode == 0, "%s check failed (exit %d): %s" % (
         what, run.returncode, " | ".join((run.stdout + run.stderr).strip().splitlines()[-15:])))
@@ -310,7 +316,6 @@ def refusals(a, model_path, fixture):
         ("track_id", ["--track", "1"], ".glb", "--scene exports every track; --track 1 picks one"),
         ("track_all", ["--track", "all"], ".glb", "--track all writes one file per track"),
         ("bvh", [], ".bvh", "--scene: bvh output cannot hold several bodies on one timeline"),
-        ("fbx", [], ".fbx", "--scene: fbx output cannot hold several bodies on one timeline"),
         ("frames", ["--frames", "2:9"], ".glb", "--frames is not supported with it"),
         ("floor", ["--origin", "floor"], ".glb", "--origin floor and --root-bone"),
         ("in_place", ["--root-motion", "in-place"], ".glb", "--root-motion in-place is not supported"),
@@ -336,52 +341,11 @@ def refusals(a, model_path, fixture):
         check(names == ["body_mesh"] and len(doc["skins"]) == 1, "one-motion file: mesh nodes %s" % names)
 
 
-def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--fixtures", required=True)
-    ap.add_argument("--layout", default="wham", choices=sorted(FIXTURES))
-    ap.add_argument("--work", default="/tmp/scene_check")
-    ap.add_argument("--web-src", help="tests/web: also play the scene in three.js (three_scene_test.mjs)")
-    ap.add_argument("--babylon-src", help="tests/web: also play the scene in Babylon.js (babylon_scene_test.mjs)")
-    ap.add_argument("--blender", help="a Blender binary: also play it in Blender (tests/roundtrip/blender_scene.py)")
-    a = ap.parse_args()
-    os.makedirs(a.work, exist_ok=True)
-    fixture = os.path.join(a.fixtures, FIXTURES[a.layout])
-    model_name = MODELS.get(a.layout, "smpl_small")
-    model_path = os.path.join(a.fixtures, "models", model_name + ".npz")
-    out = os.path.join(a.work, a.layout + "_scene.glb")
-    for p in (out, out + ".smpl.json"):
-        if os.path.exists(p):
-            os.remove(p)
-    cmd = [a.exe, "--model", model_path, "--motion", fixture, "--out", out, "--scene",
-           "--skin-weights", "truncated", "--max-influences", "4", "--corrective-refit", "off"]
-    refusals(a, model_path, fixture)
-    run = subprocess.run(cmd, capture_output=True, text=True)
-    print(" ".join(cmd))
-    if run.returncode != 0:
-        sys.exit("FAIL: exit %d: %s" % (run.returncode, run.stderr.strip()))
-    check("scene: " in run.stderr, "no scene note on stderr: %r" % run.stderr[-400:])
-
-    m = video_cases.load_model(a.fixtures, model_name)
-    weights = model_math.prune(m["weights"], 4)
-    case = {"name": a.layout + "_scene", "fixture": FIXTURES[a.layout], "model": model_name,
-            "args": ["--track", "all"], "outputs": None, "frames": [], "expression": None}
-    refs = {sfx[len(".track"):-len(".glb")]: c for sfx, c in video_cases.clips(case, a.fixtures, m)}
-    detected = detections(a.layout, fixture)
-    starts = {t: min(frames) for t, frames in detected.items()}
-    check(sorted(refs) == sorted(starts), "reference tracks %s, fixture %s" % (sorted(refs), sorted(starts)))
-    first = min(starts.values())
-    end = max(starts[t] + len(refs[t]["pose"]) for t in refs)
-
+def check_glb(out, refs, detected, starts, first, end, fps, m, weights, camera):
+    """The GLB played by this file's numpy glTF player: every body where present, hidden where
+    absent, the sensitivity checks, and the camera."""
     player = Player(out)
     doc = player.doc
-    with open(out + ".smpl.json", encoding="utf-8") as fh:
-        sidecar = json.load(fh)
-    scene = sidecar["scene"]
-    check([scene["first_frame"], scene["end_frame"]] == [first, end],
-          "scene frames %s, expected %s" % ([scene["first_frame"], scene["end_frame"]], [first, end]))
-    fps = float(scene["fps"])
     check(len(doc["skins"]) == len(refs) and len(doc["meshes"]) == len(refs),
           "%d skins, %d meshes for %d tracks" % (len(doc["skins"]), len(doc["meshes"]), len(refs)))
     # Body <name>: node <name> (parent of its skeleton), skinned mesh node <name>_mesh.
@@ -397,9 +361,6 @@ def main():
         skin = doc["skins"][doc["nodes"][mesh_nodes[name]]["skin"]]
         check(doc["nodes"][body_nodes.get(name, 0)].get("children") == [skin["joints"][0]],
               "%s: no body node holding its skeleton" % name)
-        entry = [b for b in scene["bodies"] if b["name"] == name]
-        check(len(entry) == 1 and entry[0]["track"] == tid and entry[0]["first_frame"] == starts[tid],
-              "sidecar scene entry of %s: %s" % (name, entry))
         c = refs[tid]
         length = len(c["pose"])
         other = refs[ids[(ids.index(tid) + 1) % len(ids)]]
@@ -428,8 +389,65 @@ def main():
         check(swapped >= SENSITIVITY, "%s: the other track's betas only %.3g m away" % (name, swapped))
         check(shifted >= SENSITIVITY, "%s: a one-frame shift only %.3g m away" % (name, shifted))
     print("worst max_err_m %.3e over %d bodies" % (worst, len(ids)))
-    camera = expected_camera(a.layout, fixture)
     check_camera(player, camera, first, end, fps)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--fixtures", required=True)
+    ap.add_argument("--layout", default="wham", choices=sorted(FIXTURES))
+    ap.add_argument("--work", default="/tmp/scene_check")
+    ap.add_argument("--format", default="glb", choices=["glb", "fbx"],
+                    help="fbx: write the scene as FBX, checked in Blender only (needs --blender)")
+    ap.add_argument("--web-src", help="tests/web: also play the scene in three.js (three_scene_test.mjs)")
+    ap.add_argument("--babylon-src", help="tests/web: also play the scene in Babylon.js (babylon_scene_test.mjs)")
+    ap.add_argument("--blender", help="a Blender binary: also play it in Blender (tests/roundtrip/blender_scene.py)")
+    a = ap.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+    fixture = os.path.join(a.fixtures, FIXTURES[a.layout])
+    model_name = MODELS.get(a.layout, "smpl_small")
+    model_path = os.path.join(a.fixtures, "models", model_name + ".npz")
+    out = os.path.join(a.work, a.layout + "_scene." + a.format)
+    if a.format == "fbx" and not a.blender:
+        sys.exit("FAIL: --format fbx is checked in Blender: give --blender")
+    for p in (out, out + ".smpl.json"):
+        if os.path.exists(p):
+            os.remove(p)
+    cmd = [a.exe, "--model", model_path, "--motion", fixture, "--out", out, "--scene",
+           "--skin-weights", "truncated", "--max-influences", "4", "--corrective-refit", "off"]
+    refusals(a, model_path, fixture)
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    print(" ".join(cmd))
+    if run.returncode != 0:
+        sys.exit("FAIL: exit %d: %s" % (run.returncode, run.stderr.strip()))
+    check("scene: " in run.stderr, "no scene note on stderr: %r" % run.stderr[-400:])
+
+    m = video_cases.load_model(a.fixtures, model_name)
+    weights = model_math.prune(m["weights"], 4)
+    case = {"name": a.layout + "_scene", "fixture": FIXTURES[a.layout], "model": model_name,
+            "args": ["--track", "all"], "outputs": None, "frames": [], "expression": None}
+    refs = {sfx[len(".track"):-len(".glb")]: c for sfx, c in video_cases.clips(case, a.fixtures, m)}
+    detected = detections(a.layout, fixture)
+    starts = {t: min(frames) for t, frames in detected.items()}
+    check(sorted(refs) == sorted(starts), "reference tracks %s, fixture %s" % (sorted(refs), sorted(starts)))
+    first = min(starts.values())
+    end = max(starts[t] + len(refs[t]["pose"]) for t in refs)
+
+    with open(out + ".smpl.json", encoding="utf-8") as fh:
+        sidecar = json.load(fh)
+    scene = sidecar["scene"]
+    check([scene["first_frame"], scene["end_frame"]] == [first, end],
+          "scene frames %s, expected %s" % ([scene["first_frame"], scene["end_frame"]], [first, end]))
+    fps = float(scene["fps"])
+    ids = sorted(refs, key=int)
+    for tid in ids:
+        entry = [b for b in scene["bodies"] if b["name"] == "body_" + tid]
+        check(len(entry) == 1 and entry[0]["track"] == tid and entry[0]["first_frame"] == starts[tid],
+              "sidecar scene entry of body_%s: %s" % (tid, entry))
+    camera = expected_camera(a.layout, fixture)
+    if a.format == "glb":
+        check_glb(out, refs, detected, starts, first, end, fps, m, weights, camera)
     expected = expected_clients(refs, detected, first, end, fps, m, weights, camera_for_clients(camera, first, end))
     with open(out + ".expected.json", "w", encoding="utf-8") as fh:
         json.dump(expected, fh)

@@ -181,6 +181,17 @@ foreach(layout wham prompthmr)
             --blender ${SMPL_BLENDER})
   set_tests_properties(blender.scene.${layout} PROPERTIES LABELS blender TIMEOUT 600)
 endforeach()
+# The same scenes written as FBX (--format fbx), read by Blender's FBX importer only: every body's
+# evaluated mesh vs numpy where present, hidden where absent (PHALP: a gap), the camera's world
+# matrix and vertical field of view, and the sensitivity checks (one frame later; the camera without
+# the FBX +X/-Z axis correction).
+foreach(layout prompthmr mcs phalp)
+  add_test(NAME blender.scene.fbx.${layout}
+    COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+            --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_blender_fbx_${layout}
+            --format fbx --blender ${SMPL_BLENDER})
+  set_tests_properties(blender.scene.fbx.${layout} PROPERTIES LABELS blender TIMEOUT 600)
+endforeach()
 foreach(layout wham prompthmr)
   add_test(NAME validator.scene.${layout}
     COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js

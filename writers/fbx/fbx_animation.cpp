@@ -51,16 +51,22 @@ FbxNode& addCurveNode(SceneContext& ctx, int64_t id, const char* name, int64_t l
   return n;
 }
 
+// KeyAttrFlags: linear interpolation (0x4) with the usual auto-tangent bits;
+// constant (0x2): a key holds until the next.
+constexpr int32_t kLinearKeys = 0x4 | 0x100 | 0x2000 | 0x4000;
+constexpr int32_t kConstantKeys = 0x2;
+
 void addCurve(SceneContext& ctx, int64_t id, int64_t curve_node, const char* channel,
-              const KeyTimes& times, const std::vector<float>& values) {
+              const KeyTimes& times, const std::vector<float>& values,
+              int32_t flags = kLinearKeys) {
   FbxNode& c = ctx.addObject("AnimationCurve", id, "", "AnimCurve", "");
   c.add("Default").addDouble(values.empty() ? 0.0 : values[0]);
   c.add("KeyVer").addInt32(4008);
   c.add("KeyTime").addShared(times.array);
   c.add("KeyValueFloat").addFloatArray(values);
-  // One attribute shared by all keys: linear interpolation (0x4) with the
-  // usual auto-tangent bits; data = slopes 0, default tangent weights 1/3.
-  c.add("KeyAttrFlags").addInt32Array({0x4 | 0x100 | 0x2000 | 0x4000});
+  // One attribute shared by all keys; data = slopes 0, default tangent
+  // weights 1/3.
+  c.add("KeyAttrFlags").addInt32Array({flags});
   const int32_t weights_bits = (3333 << 16) | 3333;
   float weights;
   std::memcpy(&weights, &weights_bits, sizeof weights);
@@ -72,7 +78,7 @@ void addCurve(SceneContext& ctx, int64_t id, int64_t curve_node, const char* cha
 // A 3-channel curve node (d|X, d|Y, d|Z) with its three curves.
 void addVectorCurves(SceneContext& ctx, const std::string& key, const char* name, int64_t layer,
                      int64_t target, const char* property, const KeyTimes& times,
-                     const std::vector<Eigen::Vector3d>& values) {
+                     const std::vector<Eigen::Vector3d>& values, int32_t flags = kLinearKeys) {
   int64_t node_id = ctx.ids.id(key);
   FbxNode& node = addCurveNode(ctx, node_id, name, layer, target, property);
   FbxNode& p = node.add("Properties70");
@@ -83,7 +89,7 @@ void addVectorCurves(SceneContext& ctx, const std::string& key, const char* name
   for (int c = 0; c < 3; ++c) {
     std::vector<float> v(values.size());
     for (size_t i = 0; i < values.size(); ++i) v[i] = static_cast<float>(values[i][c]);
-    addCurve(ctx, ctx.ids.id(key + "/" + channels[c]), node_id, channels[c], times, v);
+    addCurve(ctx, ctx.ids.id(key + "/" + channels[c]), node_id, channels[c], times, v, flags);
   }
 }
 
@@ -104,27 +110,17 @@ void addMorphCurves(SceneContext& ctx, const AnimationClip& clip, const std::str
   }
 }
 
-void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
-  const std::string prefix = "anim/" + std::to_string(index);
+KeyTimes keyTimes(const std::vector<double>& seconds, double offset) {
   KeyTimes times;
-  times.ktime.resize(clip.times.size());
-  for (size_t i = 0; i < times.size(); ++i) times.ktime[i] = secondsToKTime(clip.times[i]);
+  times.ktime.resize(seconds.size());
+  for (size_t i = 0; i < times.size(); ++i) times.ktime[i] = secondsToKTime(offset + seconds[i]);
   times.array = fbxSharedInt64Array(times.ktime);
-  int64_t start = times.empty() ? 0 : times.ktime.front();
-  int64_t stop = times.empty() ? 0 : times.ktime.back();
+  return times;
+}
 
-  int64_t stack = ctx.ids.id(prefix + "/stack");
-  FbxNode& s = ctx.addObject("AnimationStack", stack, clip.name, "AnimStack", "");
-  FbxNode& sp = s.add("Properties70");
-  pTime(sp, "LocalStart", start);
-  pTime(sp, "LocalStop", stop);
-  pTime(sp, "ReferenceStart", start);
-  pTime(sp, "ReferenceStop", stop);
-  int64_t layer = ctx.ids.id(prefix + "/layer");
-  ctx.addObject("AnimationLayer", layer, clip.name, "AnimLayer", "").add("Properties70");
-  ctx.connectOO(layer, stack);
+void addClipKeys(SceneContext& ctx, const AnimationClip& clip, const std::string& prefix,
+                 int64_t layer, const KeyTimes& times) {
   if (times.empty()) return;
-
   for (size_t k = 0; k < clip.rotations.size(); ++k) {
     std::vector<Eigen::Vector3d> euler = continuousEulerXYZDegrees(clip.rotations[k]);
     addVectorCurves(ctx, prefix + "/R/" + std::to_string(k), "R", layer, ctx.joint_models[k],
@@ -146,6 +142,15 @@ void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
   if (clip.morph_weights.size() > 0) addMorphCurves(ctx, clip, prefix, layer, times);
 }
 
+void addClip(SceneContext& ctx, const AnimationClip& clip, size_t index) {
+  const std::string prefix = "anim/" + std::to_string(index);
+  KeyTimes times = keyTimes(clip.times, 0.0);
+  int64_t start = times.empty() ? 0 : times.ktime.front();
+  int64_t stop = times.empty() ? 0 : times.ktime.back();
+  int64_t layer = addAnimationLayer(ctx, prefix, clip.name, start, stop);
+  addClipKeys(ctx, clip, prefix, layer, times);
+}
+
 }  // namespace
 
 std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const RotationTrack& q) {
@@ -162,6 +167,33 @@ std::vector<Eigen::Vector3d> continuousEulerXYZDegrees(const RotationTrack& q) {
   }
   for (Eigen::Vector3d& e : out) e *= 180.0 / kPi;
   return out;
+}
+
+int64_t addAnimationLayer(SceneContext& ctx, const std::string& key, const std::string& name,
+                          int64_t start, int64_t stop) {
+  int64_t stack = ctx.ids.id(key + "/stack");
+  FbxNode& s = ctx.addObject("AnimationStack", stack, name, "AnimStack", "");
+  FbxNode& sp = s.add("Properties70");
+  pTime(sp, "LocalStart", start);
+  pTime(sp, "LocalStop", stop);
+  pTime(sp, "ReferenceStart", start);
+  pTime(sp, "ReferenceStop", stop);
+  int64_t layer = ctx.ids.id(key + "/layer");
+  ctx.addObject("AnimationLayer", layer, name, "AnimLayer", "").add("Properties70");
+  ctx.connectOO(layer, stack);
+  return layer;
+}
+
+void addClipCurves(SceneContext& ctx, const AnimationClip& clip, const std::string& prefix,
+                   int64_t layer, double offset) {
+  addClipKeys(ctx, clip, prefix, layer, keyTimes(clip.times, offset));
+}
+
+void addPropertyCurves(SceneContext& ctx, const std::string& key, const char* name, int64_t layer,
+                       int64_t target, const char* property, const std::vector<double>& seconds,
+                       const std::vector<Eigen::Vector3d>& values, bool constant) {
+  addVectorCurves(ctx, key, name, layer, target, property, keyTimes(seconds, 0.0), values,
+                  constant ? kConstantKeys : kLinearKeys);
 }
 
 void buildAnimationObjects(SceneContext& ctx) {

@@ -5,11 +5,6 @@ namespace smpl {
 namespace fbx {
 namespace {
 
-const std::string& meshName(const Asset& a) {
-  static const std::string fallback = "body";
-  return a.name.empty() ? fallback : a.name;
-}
-
 // Vertices, then polygons: each triangle's last index is written as -(i+1).
 void addTopology(FbxNode& geom, const SkinnedMesh& m, double scale) {
   std::vector<double> vertices(m.positions.size());
@@ -80,8 +75,7 @@ void addLayer(FbxNode& geom, const SkinnedMesh& m) {
 void addMeshGeometry(SceneContext& ctx) {
   const SkinnedMesh& m = ctx.asset.mesh;
   ctx.mesh_geometry = ctx.ids.id("geometry/mesh");
-  FbxNode& geom =
-      ctx.addObject("Geometry", ctx.mesh_geometry, meshName(ctx.asset), "Geometry", "Mesh");
+  FbxNode& geom = ctx.addObject("Geometry", ctx.mesh_geometry, ctx.meshName(), "Geometry", "Mesh");
   geom.add("Properties70");
   geom.add("GeometryVersion").addInt32(124);
   addTopology(geom, m, ctx.scale);
@@ -95,13 +89,13 @@ void addMeshGeometry(SceneContext& ctx) {
 
 void addMeshModel(SceneContext& ctx) {
   ctx.mesh_model = ctx.ids.id("model/mesh");
-  FbxNode& model = ctx.addObject("Model", ctx.mesh_model, meshName(ctx.asset), "Model", "Mesh");
+  FbxNode& model = ctx.addObject("Model", ctx.mesh_model, ctx.meshName(), "Model", "Mesh");
   addModelBody(model, 0, 0, 0);
 }
 
 void addMaterial(SceneContext& ctx) {
   int64_t id = ctx.ids.id("material/0");
-  FbxNode& mat = ctx.addObject("Material", id, meshName(ctx.asset) + "_material", "Material", "");
+  FbxNode& mat = ctx.addObject("Material", id, ctx.bodyName() + "_material", "Material", "");
   mat.add("Version").addInt32(102);
   mat.add("ShadingModel").addString("lambert");
   mat.add("MultiLayer").addInt32(0);

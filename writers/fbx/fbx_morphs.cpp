@@ -34,7 +34,7 @@ void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape) {
   sparseDeltas(target.deltas, ctx.scale, indexes, vertices);
 
   int64_t shape = ctx.ids.id("shape/" + std::to_string(i));
-  FbxNode& g = ctx.addObject("Geometry", shape, target.name, "Geometry", "Shape");
+  FbxNode& g = ctx.addObject("Geometry", shape, ctx.ns + target.name, "Geometry", "Shape");
   g.add("Properties70");
   g.add("Version").addInt32(100);
   g.add("Indexes").addInt32Array(indexes);
@@ -45,7 +45,8 @@ void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape) {
 
   int64_t channel = ctx.ids.id("channel/" + std::to_string(i));
   ctx.blend_channels.push_back(channel);
-  FbxNode& c = ctx.addObject("Deformer", channel, target.name, "SubDeformer", "BlendShapeChannel");
+  FbxNode& c =
+      ctx.addObject("Deformer", channel, ctx.ns + target.name, "SubDeformer", "BlendShapeChannel");
   c.add("Version").addInt32(100);
   c.add("DeformPercent").addDouble(100.0 * target.rest_weight);  // rest pose weight (unit encoding)
   c.add("FullWeights").addDoubleArray({100.0});  // one shape per channel, full at 100%
@@ -59,7 +60,7 @@ void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape) {
 void buildMorphObjects(SceneContext& ctx) {
   const auto& targets = ctx.asset.mesh.morph_targets;
   if (targets.empty()) return;
-  const std::string name = ctx.asset.name.empty() ? "body" : ctx.asset.name;
+  const std::string& name = ctx.bodyName();
   int64_t blend_shape = ctx.ids.id("blendshape");
   FbxNode& d =
       ctx.addObject("Deformer", blend_shape, name + "_blendshapes", "Deformer", "BlendShape");

@@ -1,5 +1,6 @@
 #include "writers/fbx/fbx_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "writers/fbx/fbx_scene_internal.h"
@@ -53,12 +54,27 @@ int timeModeFor(double fps) {
   return 14;
 }
 
-FbxNode globalSettings(const SceneContext& ctx) {
-  const Asset& a = ctx.asset;
-  double fps = a.animations.empty() ? 30.0 : a.animations[0].fps;
+// The file's timeline: its animation's name (the take and stack), rate and
+// last key time in seconds.
+struct Timeline {
+  std::string name;
+  double fps = 30.0;
   double stop = 1.0;
-  if (!a.animations.empty() && !a.animations[0].times.empty()) stop = a.animations[0].times.back();
-  double unit = ctx.options.fbx_units == "cm" ? 1.0 : 100.0;  // centimetres per file unit
+};
+
+Timeline assetTimeline(const Asset& a) {
+  Timeline t;
+  if (!a.animations.empty()) {
+    t.name = a.animations[0].name;
+    t.fps = a.animations[0].fps;
+    if (!a.animations[0].times.empty()) t.stop = a.animations[0].times.back();
+  }
+  return t;
+}
+
+FbxNode globalSettings(const Timeline& time, const WriterOptions& options) {
+  const double fps = time.fps, stop = time.stop;
+  double unit = options.fbx_units == "cm" ? 1.0 : 100.0;  // centimetres per file unit
   FbxNode g("GlobalSettings");
   g.add("Version").addInt32(1000);
   FbxNode& p = g.add("Properties70");
@@ -81,15 +97,14 @@ FbxNode globalSettings(const SceneContext& ctx) {
   return g;
 }
 
-FbxNode documents(SceneContext& ctx) {
+FbxNode documents(SceneContext& ctx, const std::string& stack_name) {
   FbxNode d("Documents");
   d.add("Count").addInt32(1);
   FbxNode& doc = d.add("Document");
   doc.addInt64(ctx.ids.id("document")).addString("").addString("Scene");
   FbxNode& p = doc.add("Properties70");
   fbx::addP(p, "SourceObject", "object", "", "");
-  fbx::pString(p, "ActiveAnimStackName",
-               ctx.asset.animations.empty() ? "" : ctx.asset.animations[0].name);
+  fbx::pString(p, "ActiveAnimStackName", stack_name);
   doc.add("RootNode").addInt64(0);
   return d;
 }
@@ -106,19 +121,55 @@ FbxNode definitions(const SceneContext& ctx) {
   return d;
 }
 
-FbxNode takes(const Asset& a) {
+// One take per animation stack: its name and [start, stop] in KTime.
+struct Take {
+  std::string name;
+  int64_t start = 0, stop = 0;
+};
+
+FbxNode takes(const std::string& current, const std::vector<Take>& list) {
   FbxNode t("Takes");
-  t.add("Current").addString(a.animations.empty() ? "" : a.animations[0].name);
-  for (const AnimationClip& c : a.animations) {
-    int64_t start = c.times.empty() ? 0 : fbx::secondsToKTime(c.times.front());
-    int64_t stop = c.times.empty() ? 0 : fbx::secondsToKTime(c.times.back());
+  t.add("Current").addString(current);
+  for (const Take& c : list) {
     FbxNode& take = t.add("Take");
     take.addString(c.name);
     take.add("FileName").addString(c.name + ".tak");
-    take.add("LocalTime").addInt64(start).addInt64(stop);
-    take.add("ReferenceTime").addInt64(start).addInt64(stop);
+    take.add("LocalTime").addInt64(c.start).addInt64(c.stop);
+    take.add("ReferenceTime").addInt64(c.start).addInt64(c.stop);
   }
   return t;
+}
+
+std::vector<Take> assetTakes(const Asset& a) {
+  std::vector<Take> list;
+  for (const AnimationClip& c : a.animations) {
+    int64_t start = c.times.empty() ? 0 : fbx::secondsToKTime(c.times.front());
+    int64_t stop = c.times.empty() ? 0 : fbx::secondsToKTime(c.times.back());
+    list.push_back({c.name, start, stop});
+  }
+  return list;
+}
+
+// The top-level nodes around the built objects (the layout in fbx_scene.h).
+std::vector<FbxNode> fileNodes(SceneContext& ctx, const Timeline& time,
+                               const std::vector<Take>& take_list) {
+  const WriterOptions& options = ctx.options;
+  std::vector<FbxNode> top;
+  top.push_back(headerExtension(options.fbx_version));
+  top.emplace_back("FileId");
+  top.back().addRaw(std::string(kFileId, 16));
+  top.emplace_back("CreationTime");
+  top.back().addString(kFbxCreationTime);
+  top.emplace_back("Creator");
+  top.back().addString(kFbxCreator);
+  top.push_back(globalSettings(time, options));
+  top.push_back(documents(ctx, time.name));
+  top.emplace_back("References");
+  top.push_back(definitions(ctx));
+  top.push_back(std::move(ctx.objects));
+  top.push_back(std::move(ctx.connections));
+  top.push_back(takes(time.name, take_list));
+  return top;
 }
 
 }  // namespace
@@ -133,23 +184,25 @@ Result<std::vector<FbxNode>> buildFbxScene(const Asset& asset, const WriterOptio
   fbx::buildSkinObjects(ctx);
   fbx::buildMorphObjects(ctx);
   fbx::buildAnimationObjects(ctx);
+  return fileNodes(ctx, assetTimeline(asset), assetTakes(asset));
+}
 
-  std::vector<FbxNode> top;
-  top.push_back(headerExtension(options.fbx_version));
-  top.emplace_back("FileId");
-  top.back().addRaw(std::string(kFileId, 16));
-  top.emplace_back("CreationTime");
-  top.back().addString(kFbxCreationTime);
-  top.emplace_back("Creator");
-  top.back().addString(kFbxCreator);
-  top.push_back(globalSettings(ctx));
-  top.push_back(documents(ctx));
-  top.emplace_back("References");
-  top.push_back(definitions(ctx));
-  top.push_back(std::move(ctx.objects));
-  top.push_back(std::move(ctx.connections));
-  top.push_back(takes(asset));
-  return top;
+Result<std::vector<FbxNode>> buildFbxSceneFile(const SceneAsset& scene,
+                                               const WriterOptions& options) {
+  if (scene.bodies.empty()) return makeError("FBX writer: a scene without bodies");
+  for (const SceneBody& body : scene.bodies)  // the same rules as a one-body file, per body
+    if (Status st = fbx::validateInput(body.asset, options); !st)
+      return makeError("body '" + body.asset.name + "': " + st.message());
+  SceneContext ctx(scene.bodies.front().asset, options);
+  ctx.scale = options.fbx_units == "cm" ? 100.0 : 1.0;
+  Timeline time{scene.name, scene.fps,
+                double(std::max<int64_t>(scene.end_frame - scene.first_frame - 1, 0)) / scene.fps};
+  const int64_t stop = fbx::secondsToKTime(time.stop);
+  const int64_t layer = fbx::addAnimationLayer(ctx, "scene", scene.name, 0, stop);
+  for (size_t i = 0; i < scene.bodies.size(); ++i)
+    fbx::buildSceneBody(ctx, scene.bodies[i], i, layer, scene.fps);
+  if (scene.camera.present()) fbx::buildSceneCamera(ctx, scene.camera, layer);
+  return fileNodes(ctx, time, {{scene.name, 0, stop}});
 }
 
 }  // namespace smpl

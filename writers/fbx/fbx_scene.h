@@ -18,6 +18,7 @@
 
 #include "core/result.h"
 #include "exporter/asset.h"
+#include "exporter/scene_asset.h"
 #include "writers/fbx/fbx_encoder.h"
 #include "writers/writer.h"
 
@@ -30,5 +31,15 @@ extern const char kFbxCreator[];       // "smpl-export"
 // Checks the asset's arrays agree in size and index range, then builds the
 // top-level nodes. options.fbx_units is "m" or "cm", fbx_version 7400 or 7500.
 Result<std::vector<FbxNode>> buildFbxScene(const Asset& asset, const WriterOptions& options);
+
+// A --scene file (exporter/scene_asset.h): every body as a one-body file
+// holds it, its objects' names made unique (body node `<body>`, a Null
+// parent of its skeleton; mesh `<body>_mesh`; joints, clusters, shapes and
+// channels in the namespace `<body>:`), one AnimationStack named after the
+// scene whose curves place each body's clip at its start, STEP-like scale
+// keys on the body node where it is absent, and the camera (fbx_camera.cpp).
+// Errors: no body, bad options, a body failing the asset check (named).
+Result<std::vector<FbxNode>> buildFbxSceneFile(const SceneAsset& scene,
+                                               const WriterOptions& options);
 
 }  // namespace smpl

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "exporter/asset.h"
+#include "exporter/scene_asset.h"
 #include "writers/fbx/fbx_encoder.h"
 #include "writers/writer.h"
 
@@ -27,8 +28,12 @@ int64_t secondsToKTime(double seconds);
 class IdTable {
  public:
   int64_t id(const std::string& key);
+  // Prepended to every key from now on: a scene's body i builds its objects
+  // under "body/<i>/" with the one-body keys, so their ids never meet.
+  void setPrefix(const std::string& prefix) { prefix_ = prefix; }
 
  private:
+  std::string prefix_;
   std::map<std::string, int64_t> by_key_;
   std::set<int64_t> used_;
 };
@@ -67,12 +72,25 @@ struct SceneContext {
   FbxNode connections{"Connections"};
   std::vector<std::pair<std::string, int>> type_counts;  // Definitions, first-use order
 
+  // Names: a one-body file leaves them empty (the asset's name, or "body";
+  // joint and target names as they are). A scene's body sets its name, its
+  // mesh's ("<body>_mesh") and the namespace "<body>:" that its joint,
+  // cluster, shape and channel names carry, so every name is unique.
+  std::string body_name, mesh_name, ns;
+  int64_t skeleton_parent = 0;  // the root joint's parent: the scene root, or the body's node
+
   int64_t mesh_model = 0;
   int64_t mesh_geometry = 0;
   std::vector<int64_t> joint_models;
   std::vector<int64_t> blend_channels;  // one per morph target
 
   SceneContext(const Asset& a, const WriterOptions& o) : asset(a), options(o) {}
+
+  const std::string& bodyName() const;  // body_name, else the asset's name, else "body"
+  const std::string& meshName() const;  // mesh_name, else bodyName()
+  // The objects, connections, ids and counts built so far move from `from`
+  // (a scene's builders run one context per body over one growing file).
+  void takeShared(SceneContext& from);
 
   // Adds an object node under Objects and counts it for Definitions.
   FbxNode& addObject(const char* node_type, int64_t id, const std::string& name, const char* cls,
@@ -91,6 +109,30 @@ void buildSkeletonObjects(SceneContext& ctx);
 void buildSkinObjects(SceneContext& ctx);
 void buildMorphObjects(SceneContext& ctx);
 void buildAnimationObjects(SceneContext& ctx);
+
+// An AnimationStack `name` over [start, stop] (KTime) with its one layer;
+// returns the layer's id. Keys: `key` + "/stack", "/layer".
+int64_t addAnimationLayer(SceneContext& ctx, const std::string& key, const std::string& name,
+                          int64_t start, int64_t stop);
+// The curves of `clip` on ctx's joints and blend channels, in `layer`, its
+// time 0 at `offset` seconds (a scene body's start). Keys under `prefix`.
+void addClipCurves(SceneContext& ctx, const AnimationClip& clip, const std::string& prefix,
+                   int64_t layer, double offset);
+// One curve node (d|X, d|Y, d|Z) of `target`'s vector `property` ("Lcl
+// Scaling") keyed at `seconds`; `constant`: keys hold until the next
+// (FBX constant interpolation), else linear.
+void addPropertyCurves(SceneContext& ctx, const std::string& key, const char* name, int64_t layer,
+                       int64_t target, const char* property, const std::vector<double>& seconds,
+                       const std::vector<Eigen::Vector3d>& values, bool constant);
+
+// A scene's body i (fbx_scene_bodies.cpp): its node, mesh, skeleton, skin,
+// blend shapes, its clip's curves in `layer` from body.start, and its
+// visibility as scale keys on its node (`fps`: the scene's source rate).
+// `ctx` carries the file built so far.
+void buildSceneBody(SceneContext& ctx, const SceneBody& body, size_t i, int64_t layer, double fps);
+// The scene's camera (fbx_camera.cpp): a Camera attribute on Model "camera"
+// with its transform keyed in `layer`.
+void buildSceneCamera(SceneContext& ctx, const SceneCameraClip& camera, int64_t layer);
 
 // Quaternions -> Euler XYZ degrees (R = Rz * Ry * Rx, FBX eEulerXYZ), with
 // each frame's angles chosen closest to the previous frame's so curves do

@@ -11,16 +11,17 @@ int64_t secondsToKTime(double seconds) {
 }
 
 int64_t IdTable::id(const std::string& key) {
-  auto it = by_key_.find(key);
+  const std::string full = prefix_ + key;
+  auto it = by_key_.find(full);
   if (it != by_key_.end()) return it->second;
   // FNV-1a over the key; ids stay positive, non-zero (0 is the scene root)
   // and below 2^53 so tools that parse ids as doubles keep them exact.
   uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : key) h = (h ^ c) * 1099511628211ULL;
+  for (unsigned char c : full) h = (h ^ c) * 1099511628211ULL;
   int64_t v = static_cast<int64_t>(h & ((1ULL << 52) - 1)) + 1000;
   while (used_.count(v)) ++v;  // deterministic: keys are requested in a fixed order
   used_.insert(v);
-  by_key_[key] = v;
+  by_key_[full] = v;
   return v;
 }
 
@@ -91,6 +92,23 @@ FbxNode& SceneContext::addObject(const char* node_type, int64_t id, const std::s
   FbxNode& n = objects.add(node_type);
   n.addInt64(id).addString(nameClass(name, cls)).addString(subclass);
   return n;
+}
+
+const std::string& SceneContext::bodyName() const {
+  static const std::string fallback = "body";
+  if (!body_name.empty()) return body_name;
+  return asset.name.empty() ? fallback : asset.name;
+}
+
+const std::string& SceneContext::meshName() const {
+  return mesh_name.empty() ? bodyName() : mesh_name;
+}
+
+void SceneContext::takeShared(SceneContext& from) {
+  ids = std::move(from.ids);
+  objects = std::move(from.objects);
+  connections = std::move(from.connections);
+  type_counts = std::move(from.type_counts);
 }
 
 void SceneContext::connectOO(int64_t child, int64_t parent) {

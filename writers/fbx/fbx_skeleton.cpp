@@ -8,7 +8,7 @@ namespace {
 
 void addJointModel(SceneContext& ctx, int k) {
   const Skeleton& s = ctx.asset.skeleton;
-  const std::string& name = s.names[k];
+  const std::string name = ctx.ns + s.names[k];
   int64_t model = ctx.ids.id("model/joint/" + std::to_string(k));
   ctx.joint_models.push_back(model);
   FbxNode& node = ctx.addObject("Model", model, name, "Model", "LimbNode");
@@ -23,7 +23,7 @@ void addJointModel(SceneContext& ctx, int k) {
   a.add("TypeFlags").addString("Skeleton");
 
   int parent = s.parents[k];
-  ctx.connectOO(model, parent < 0 ? 0 : ctx.joint_models[parent]);
+  ctx.connectOO(model, parent < 0 ? ctx.skeleton_parent : ctx.joint_models[parent]);
   ctx.connectOO(attr, model);
 }
 
@@ -54,7 +54,7 @@ std::vector<JointInfluences> influencesByJoint(const SkinnedMesh& m, size_t join
 void addCluster(SceneContext& ctx, int k, int64_t skin, const JointInfluences& inf) {
   const Skeleton& s = ctx.asset.skeleton;
   int64_t id = ctx.ids.id("cluster/" + std::to_string(k));
-  FbxNode& c = ctx.addObject("Deformer", id, s.names[k], "SubDeformer", "Cluster");
+  FbxNode& c = ctx.addObject("Deformer", id, ctx.ns + s.names[k], "SubDeformer", "Cluster");
   c.add("Version").addInt32(100);
   c.add("UserData").addString("").addString("");
   if (!inf.indexes.empty()) {
@@ -73,7 +73,7 @@ void addCluster(SceneContext& ctx, int k, int64_t skin, const JointInfluences& i
 
 void addBindPose(SceneContext& ctx) {
   const Skeleton& s = ctx.asset.skeleton;
-  const std::string name = ctx.asset.name.empty() ? "body" : ctx.asset.name;
+  const std::string& name = ctx.bodyName();
   FbxNode& pose = ctx.addObject("Pose", ctx.ids.id("pose/bind"), name, "Pose", "BindPose");
   pose.add("Type").addString("BindPose");
   pose.add("Version").addInt32(100);
@@ -98,7 +98,7 @@ void buildSkeletonObjects(SceneContext& ctx) {
 }
 
 void buildSkinObjects(SceneContext& ctx) {
-  const std::string name = ctx.asset.name.empty() ? "body" : ctx.asset.name;
+  const std::string& name = ctx.bodyName();
   int64_t skin = ctx.ids.id("skin");
   FbxNode& d = ctx.addObject("Deformer", skin, name + "_skin", "Deformer", "Skin");
   d.add("Version").addInt32(101);
