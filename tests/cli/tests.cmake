@@ -192,6 +192,17 @@ foreach(layout prompthmr mcs phalp)
             --format fbx --blender ${SMPL_BLENDER})
   set_tests_properties(blender.scene.fbx.${layout} PROPERTIES LABELS blender TIMEOUT 600)
 endforeach()
+# Godot 3.2 (Debian's godot3-server: the editor, headless): its glTF importer and AnimationPlayer
+# (tests/cli/godot_scene.py); registered when a Godot binary is found.
+if(SMPL_GODOT)
+  foreach(layout prompthmr mcs)
+    add_test(NAME godot.scene.${layout}
+      COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+              --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_godot_${layout}
+              --godot ${SMPL_GODOT})
+    set_tests_properties(godot.scene.${layout} PROPERTIES LABELS godot TIMEOUT 600)
+  endforeach()
+endif()
 foreach(layout wham prompthmr)
   add_test(NAME validator.scene.${layout}
     COMMAND ${SMPL_NODE} ${PROJECT_SOURCE_DIR}/tests/validator/validate.js
