@@ -356,6 +356,33 @@ Status checkTrackOutputs(const std::string& motion, const std::vector<Motion>& t
   return Status();
 }
 
+// --frames A:B against every track before the first is written: a start at
+// or after a short track's last frame fails the export (exporter/animation.h
+// checkFrames), and it would fail only after the tracks before it were
+// committed. An end beyond a track's length is trimmed (framesFor), as for one motion.
+Status checkTrackFrames(const ExportRequest& r, const std::vector<Motion>& tracks) {
+  for (const Motion& m : tracks) {
+    const int total = static_cast<int>(m.frames.size());
+    const int end = r.end_frame < 0 ? total : std::min(r.end_frame, total);
+    if (r.first_frame < end) continue;
+    return fail(ErrorKind::Export, "exporting", r.motions.front(),
+                "track " + printable(m.track, 64) + ": --frames " + std::to_string(r.first_frame) +
+                    ":" + std::to_string(r.end_frame) + " is outside the track's " +
+                    std::to_string(total) + " frames (nothing written)");
+  }
+  return Status();
+}
+
+// A track's failure that no check could foresee (a full disk): the tracks
+// before it are complete and stay; the error says which they are.
+Error writtenBefore(Error e, const std::vector<std::string>& outs, size_t failed) {
+  if (failed == 0) return e;
+  std::string names;
+  for (size_t i = 0; i < failed; ++i) names += (i ? ", " : "") + baseName(outs[i]);
+  e.message += " (written before it, complete: " + printable(names, 400) + ")";
+  return e;
+}
+
 Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelSource* models) {
   if (Status st = beginRun(r); !st) return st.error();
   Stage stage;
@@ -375,6 +402,7 @@ Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelS
   const RunPaths paths = runPaths(r, outs, r.motions);
   if (Status st = checkTrackOutputs(r.motions.front(), *tracks, outs, paths); !st)
     return st.error();
+  if (Status st = checkTrackFrames(r, *tracks); !st) return st.error();
   if (Status st = checkRunPaths(paths); !st) return usage(st.message());
   Result<RunInputs> inputs = loadRunInputs(r, models);
   if (!inputs) return inputs.error();
@@ -388,7 +416,7 @@ Result<std::vector<ExportReport>> runTrackExports(const ExportRequest& r, ModelS
       given.push_back(std::move((*tracks)[i]));
       return runJob(job, *inputs, models, &stage, std::move(given));
     });
-    if (!one) return one.error();
+    if (!one) return writtenBefore(one.error(), outs, i);
     reports.push_back(std::move(*one));
   }
   return reports;

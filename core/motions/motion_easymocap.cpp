@@ -1,5 +1,7 @@
 #include "core/motions/motion_easymocap.h"
 
+#include <string>
+#include <unordered_set>
 #include <utility>
 
 #include "core/io/file_io.h"
@@ -86,12 +88,13 @@ Status decodeEasymocap(const DataNode& root, const LayoutInput& in, MotionSet* o
                      ": --source-params incam: EasyMocap output has no camera-frame parameters");
   out->notes.push_back("read as EasyMocap output (persons by id; SMPL; Rh/Th about the origin)");
   out->notes.push_back("world frame of the calibration (Z up; --up z)");
+  std::unordered_set<std::string> ids;  // a set, not a scan per person: linear in persons
+  out->tracks.reserve(root.children.size());
   for (size_t i = 0; i < root.children.size(); ++i) {
     Motion m;
     if (Status s = decodePerson(root.children[i], i, in, &m); !s) return s;
-    for (const Motion& other : out->tracks)
-      if (other.track == m.track)
-        return makeError(in.path + ": two persons with id " + m.track + " in one frame");
+    if (!ids.insert(m.track).second)
+      return makeError(in.path + ": two persons with id " + m.track + " in one frame");
     out->tracks.push_back(std::move(m));
   }
   return Status();

@@ -9,15 +9,29 @@
 namespace smpl {
 namespace {
 
+// A decimal integer of any length ("12", "-3", "18446744073709551616"):
+// ids from dict keys are exact, never through a double or an int64.
 bool isNumber(const std::string& s) {
-  return !s.empty() && s.size() < 19 &&
-         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isdigit(c); });
+  const size_t from = !s.empty() && s[0] == '-' ? 1 : 0;
+  return s.size() > from &&
+         std::all_of(s.begin() + from, s.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+// a < b for two isNumber() texts in canonical form (no leading zeros):
+// by sign, then digit count, then digits.
+bool numberLess(const std::string& a, const std::string& b) {
+  const bool na = a[0] == '-', nb = b[0] == '-';
+  if (na != nb) return na;
+  const bool shorter = a.size() != b.size() ? a.size() < b.size() : a < b;
+  if (a == b) return false;
+  return na ? !shorter : shorter;
 }
 
 // Ids in file order or numeric order: numbers as numbers, then text.
 bool idLess(const std::string& a, const std::string& b) {
-  if (isNumber(a) && isNumber(b)) return std::stoll(a) < std::stoll(b);
-  if (isNumber(a) != isNumber(b)) return isNumber(a);
+  const bool number_a = isNumber(a), number_b = isNumber(b);
+  if (number_a && number_b) return numberLess(a, b);
+  if (number_a != number_b) return number_a;
   return a < b;
 }
 
@@ -62,7 +76,7 @@ Result<TrackChoice> parseTrackChoice(const std::string& text) {
   if (text == "all") return c.kind = TrackChoice::Kind::All, c;
   const bool ok = !text.empty() && text.size() <= 64 &&
                   std::all_of(text.begin(), text.end(), [](unsigned char ch) {
-                    return std::isalnum(ch) || ch == '-' || ch == '_' || ch == '.';
+                    return std::isalnum(ch) || ch == '-' || ch == '_' || ch == '.' || ch == '+';
                   });
   if (!ok)
     return makeError(
@@ -133,6 +147,12 @@ Result<std::vector<Motion>> selectTracks(MotionSet set, const TrackChoice& choic
   std::vector<Motion>& tracks = set.tracks;
   std::stable_sort(tracks.begin(), tracks.end(),
                    [](const Motion& a, const Motion& b) { return idLess(a.track, b.track); });
+  // Two tracks of one id would share an output and a --track pick (a JSON
+  // id 1 and "1"): refused before anything is written.
+  for (size_t i = 1; i < tracks.size(); ++i)
+    if (tracks[i].track == tracks[i - 1].track)
+      return makeError(path + ": two tracks have the id " + printable(tracks[i].track, 64) +
+                       "; give them distinct ids");
   const bool named = tracks.size() > 1 || !tracks.front().track.empty();
   size_t pick = 0;
   if (choice.kind == TrackChoice::Kind::Id) {

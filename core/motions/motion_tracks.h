@@ -7,7 +7,7 @@
 //   time 0 there (Motion::first_frame records the source frame); a source
 //   frame without a detection holds the previous one (a note counts them);
 // - `longest` (the default) picks the track with the most detections, ties to
-//   the lower id (numeric ids compare as numbers); a note names the pick and
+//   the lower id (numeric ids of any length compare as numbers); a note names the pick and
 //   lists the others with their source frames;
 // - `all` keeps every track (one output each, <out stem>.track<ID>.<ext>);
 // - an id picks that track; an unknown id is an error listing the ids.
@@ -28,7 +28,7 @@ struct TrackChoice {
   std::string id;  // Kind::Id
 };
 
-// "longest", "all" or an id (letters, digits, '-', '_', '.'; at most 64).
+// "longest", "all" or an id (letters, digits, '-', '_', '.', '+'; at most 64).
 // Errors: usage text naming --track.
 Result<TrackChoice> parseTrackChoice(const std::string& text);
 

@@ -124,7 +124,12 @@ struct PyObj {
   GlobalId global = GlobalId::Object;  // Global: which one; Instance: its class
   int64_t i = 0;                       // Int, Bool
   double f = 0;                        // Float
-  std::string text;                    // Str (UTF-8), Bytes, Global/Instance name "module.name"
+  // An integer's exact decimal text where `i` cannot hold it: a Python int
+  // beyond int64 (kept as a Float, `f` its approximation) or a numpy integer
+  // scalar (an NdArray, whose data is widened to double). Dict keys use it:
+  // a track id 2^53 + 1 must not become 2^53.
+  std::string exact;
+  std::string text;  // Str (UTF-8), Bytes, Global/Instance name "module.name"
   // A large Bytes payload (py2 str, bytes opcodes) is not copied into `text`:
   // `view` points into the pickle's own bytes, which outlive the Heap.
   // Read Str/Bytes contents through bytes(), never `text` directly.
@@ -208,6 +213,14 @@ Result<Array> decodeArray(Heap& heap, const DtypeInfo& dtype, const std::vector<
                           bool fortran, const uint8_t* data, size_t size);
 // "<f8", "|b1", "<U6": the descr numpy prints for a dtype.
 std::string descrOf(const DtypeInfo& dtype);
+
+// Little-endian two's complement bytes (LONG1/LONG4, a numpy integer's
+// payload when `is_signed`) as exact decimal text ("-12",
+// "9223372036854775808"); beyond kMaxExactIntBytes as hex ("0x1f...",
+// "-0x..."): decimal conversion is quadratic in the length, hex is linear
+// and still exact.
+inline constexpr size_t kMaxExactIntBytes = 128;
+std::string exactDecimal(const uint8_t* bytes, size_t n, bool is_signed);
 
 // Run the VM over a whole pickle; returns the object STOP left.
 Result<Ref> runPickle(Heap& heap, const uint8_t* data, size_t size, const PickleLimits& limits);

@@ -408,8 +408,18 @@ Result<Ref> makeScalar(Heap& heap, const std::vector<Ref>& args) {
   if (d.kind == 'O') return heap.fail("object scalars are not supported");
   if (heap.at(args[1]).kind != Kind::Bytes) return heap.fail("scalar() data is not bytes");
   const std::string_view raw = heap.at(args[1]).bytes();
-  return arrayObject(heap, decodeArray(heap, d, {}, false,
-                                       reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
+  Result<Ref> r = arrayObject(
+      heap,
+      decodeArray(heap, d, {}, false, reinterpret_cast<const uint8_t*>(raw.data()), raw.size()));
+  // An integer scalar's exact value, for a dict key (np.int64(2**53 + 1)):
+  // the array's data is widened to double.
+  if (r && (d.kind == 'i' || d.kind == 'u') && raw.size() == static_cast<size_t>(d.itemsize)) {
+    std::string little(raw);
+    if (d.endian == '>') std::reverse(little.begin(), little.end());
+    heap.at(*r).exact =
+        exactDecimal(reinterpret_cast<const uint8_t*>(little.data()), little.size(), d.kind == 'i');
+  }
+  return r;
 }
 
 // numpy.core.numeric._frombuffer(buffer, dtype, shape, order): protocol 5 arrays.

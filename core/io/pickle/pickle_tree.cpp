@@ -1,7 +1,15 @@
 // Any unpickled value -> DataNode, and parsePickleTree (plain pickles and
 // joblib files). The rules (core/io/pickle/pickle_tree.h):
-//   dict            -> Dict; keys str/bytes as text, int (and numpy integer)
-//                      keys as decimal text, other keys skipped
+//   dict            -> Dict; every key becomes text (keyText): str and bytes
+//                      as they are, int (any size, numpy integer scalars
+//                      too, never through a double) as exact decimal, bool
+//                      as 1/0, float as its shortest round-trip text, None
+//                      as "None", a tuple as its canonical repr "(1, 'a')";
+//                      a key of another type is refused by name, and two
+//                      different keys that give one text (1 and '1', b'x'
+//                      and 'x') are refused naming both: a track is never
+//                      dropped or merged in silence. A repeated key keeps
+//                      its last value, as Python's dict does.
 //   list, tuple     -> an Array leaf when a rectangular nest of numbers
 //                      (listToArray, as the flat reader), else a List whose
 //                      unconvertible elements are None (positions stay)
@@ -16,6 +24,11 @@
 // Depth is bounded (kMaxDepth); a cycle (a list that contains itself) ends
 // in None.
 #include "core/io/pickle/pickle_tree.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <unordered_map>
 
 #include "core/io/pickle/pickle_internal.h"
 #include "core/io/printable.h"
@@ -73,7 +86,7 @@ class TreeBuilder {
   Status nested(const std::vector<Ref>& items, const std::vector<int64_t>& shape, size_t level,
                 size_t* next, int depth, DataNode* out);
   Status countNode(uint64_t extra) { return heap_.count(sizeof(DataNode) + extra, "tree node"); }
-  bool keyText(Ref k, std::string* key) const;
+  Status keyText(Ref k, int depth, std::string* key, std::string* repr) const;
   Error fail(const std::string& message) const { return heap_.fail(message + where()); }
   // An error of the pickle reader ("<context>: <problem>") with the path added.
   Error located(const Error& e) const {
@@ -161,37 +174,94 @@ Status TreeBuilder::dict(Ref r, int depth, DataNode* out) {
     out->keys.reserve(entries);
     out->children.reserve(entries);
   }
-  std::string key;
+  std::unordered_map<std::string, size_t> seen;  // key text -> index in out->keys
+  std::vector<std::string> reprs;                // each key as the file has it, for refusals
+  std::string key, repr;
   for (size_t i = 0; st && i + 1 < items.size(); i += 2) {
-    if (!keyText(items[i], &key)) continue;  // float, tuple, ... keys: not names
-    st = heap_.count(sizeof(std::string) + key.size(), "dict key");
+    st = keyText(items[i], 0, &key, &repr);
+    if (st) st = heap_.count(2 * sizeof(std::string) + key.size() + repr.size(), "dict key");
     if (st) st = chargeNode(out, key.size(), heap_.context());
     if (!st) break;
+    const auto [at, fresh] = seen.emplace(key, out->keys.size());
+    if (!fresh && reprs[at->second] != repr) {
+      st = fail("dict keys " + printable(reprs[at->second], 100) + " and " + printable(repr, 100) +
+                " both read as the name '" + printable(key, 100) +
+                "' (one would hide the other); give the keys distinct names");
+      break;
+    }
     path_ += "['" + key + "']";
     DataNode child;
     st = node(items[i + 1], depth + 1, &child);
     path_.resize(mark);
+    if (!fresh) {  // the same key again: Python's dict keeps the last value
+      out->children[at->second] = std::move(child);
+      continue;
+    }
     out->keys.push_back(key);
+    reprs.push_back(repr);
     out->children.push_back(std::move(child));
   }
   ancestors_.pop_back();
   return st;
 }
 
-// str/bytes keys as they are, int and numpy integer keys as decimal text.
-bool TreeBuilder::keyText(Ref k, std::string* key) const {
+namespace {
+
+// Shortest text that reads back as `v` ("0.1", "1e+20", "2.0", "nan"): a
+// float key's name. A whole number keeps ".0" so it never reads as an int's.
+std::string floatText(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v < 0 ? "-inf" : "inf";
+  char buf[40];
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof(buf), "%.*g", precision, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
+  std::string text = buf;
+  if (text.find_first_of(".e") == std::string::npos) text += ".0";
+  return text;
+}
+
+}  // namespace
+
+// A dict key's name (`key`) and how the file wrote it (`repr`, Python's
+// spelling, for refusals): str -> as is ('a'); bytes -> as is (b'a'; Python
+// 2 pickles write str keys as bytes); int, numpy integer -> exact decimal;
+// bool -> 1/0 (True == 1 in a Python dict); float -> floatText; None ->
+// "None"; tuple -> "(1, 'a')" from its elements' reprs. Other types (frozenset,
+// objects) are refused naming the type.
+Status TreeBuilder::keyText(Ref k, int depth, std::string* key, std::string* repr) const {
   const PyObj& o = heap_.at(k);
-  if (stringValue(heap_, k, key)) return true;
-  if (o.kind == Kind::Int || o.kind == Kind::Bool) {
-    *key = std::to_string(o.i);
-    return true;
+  if (o.kind == Kind::Str || o.kind == Kind::Bytes) {
+    stringValue(heap_, k, key);
+    *repr = (o.kind == Kind::Bytes ? "b'" : "'") + *key + "'";
+  } else if (o.kind == Kind::Bool) {
+    *key = o.i ? "1" : "0";
+    *repr = o.i ? "True" : "False";
+  } else if (o.kind == Kind::Int) {
+    *key = *repr = std::to_string(o.i);
+  } else if (o.kind == Kind::Float || (o.kind == Kind::NdArray && isNumber(o))) {
+    // An int beyond int64 and a numpy integer keep their exact text.
+    *key = !o.exact.empty() ? o.exact : floatText(numberValue(o));
+    *repr = *key;
+  } else if (o.kind == Kind::None) {
+    *key = *repr = "None";
+  } else if (o.kind == Kind::Tuple && depth < kMaxDepth) {
+    std::string item, item_repr;
+    *key = "(";
+    for (size_t i = 0; i < o.items.size(); ++i) {
+      PK_TRY(keyText(o.items[i], depth + 1, &item, &item_repr));
+      *key += (i ? ", " : "") + item_repr;
+      PK_TRY(heap_.check(key->size(), "dict key"));
+    }
+    *key += o.items.size() == 1 ? ",)" : ")";
+    *repr = *key;
+  } else {
+    return fail("a dict key of type " + typeName(heap_, k) +
+                " cannot name anything (keys are read as str, bytes, int, float, None or tuples "
+                "of them)");
   }
-  if (o.kind == Kind::NdArray && isNumber(o) && o.array->dtype.size() > 1 &&
-      (o.array->dtype[1] == 'i' || o.array->dtype[1] == 'u')) {
-    *key = std::to_string(static_cast<int64_t>(numberValue(o)));
-    return true;
-  }
-  return false;
+  return Status::success();
 }
 
 // Nested Lists following an object array's shape.

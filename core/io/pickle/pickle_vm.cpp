@@ -57,7 +57,7 @@ class Vm {
   }
   Status pushNew(PyObj obj);
   Status pushInt(int64_t v, Kind kind = Kind::Int);
-  Status pushFloat(double v);
+  Status pushFloat(double v, std::string exact = {});
   Status pushString(std::string s, Kind kind);
   Status pushContainer(Kind kind, std::vector<Ref> items);
   // Memo
@@ -186,10 +186,11 @@ Status Vm::pushInt(int64_t v, Kind kind) {
   return pushNew(std::move(o));
 }
 
-Status Vm::pushFloat(double v) {
+Status Vm::pushFloat(double v, std::string exact) {
   PyObj o;
   o.kind = Kind::Float;
   o.f = v;
+  o.exact = std::move(exact);
   return pushNew(std::move(o));
 }
 
@@ -266,6 +267,15 @@ int hexDigit(char c) {
   return -1;
 }
 
+// "-007" -> "-7", "-0" -> "0": the text Python's str() gives the int.
+std::string canonicalDecimal(const std::string& s) {
+  const bool negative = !s.empty() && s[0] == '-';
+  size_t b = negative ? 1 : 0;
+  while (b + 1 < s.size() && s[b] == '0') ++b;
+  std::string digits = s.substr(b);
+  return negative && digits != "0" ? "-" + digits : digits;
+}
+
 std::string trimmed(const std::string& s) {
   size_t b = 0, e = s.size();
   while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
@@ -304,8 +314,9 @@ Status Vm::textInt(const std::string& line, bool is_long) {
     return fail(std::string(is_long ? "LONG" : "INT") + " opcode at byte " +
                 std::to_string(op_pos_) + " has a bad value");
   }
-  // Integers beyond 64 bits appear in no model file; keep them approximately.
-  return fits ? pushInt(v) : pushFloat(approx);
+  // Integers beyond 64 bits appear in no model file: a number keeps them
+  // approximately, a dict key (a track id) by their exact text.
+  return fits ? pushInt(v) : pushFloat(approx, canonicalDecimal(s));
 }
 
 Status Vm::textFloat(const std::string& line) {
@@ -447,9 +458,9 @@ Status Vm::longBinary(uint64_t n) {
     if (negative && n < 8) v |= ~uint64_t(0) << (8 * n);
     return pushInt(static_cast<int64_t>(v));
   }
-  double v = 0;  // beyond 64 bits: approximate (no model file has such ints)
+  double v = 0;  // beyond 64 bits: approximate (no model file has such ints), exact as a key
   for (size_t k = n; k-- > 0;) v = v * 256 + (negative ? 255 - p[k] : p[k]);
-  return pushFloat(negative ? -(v + 1) : v);
+  return pushFloat(negative ? -(v + 1) : v, exactDecimal(p, n, true));
 }
 
 Status Vm::stepBinary(uint8_t op, bool* handled) {
@@ -856,6 +867,37 @@ Status Vm::stepObjects(uint8_t op, bool* handled) {
 }
 
 }  // namespace
+
+std::string exactDecimal(const uint8_t* bytes, size_t n, bool is_signed) {
+  const bool negative = is_signed && n > 0 && (bytes[n - 1] & 0x80);
+  // Magnitude, big-endian: two's complement negated (invert, add one).
+  std::vector<uint8_t> mag(n);
+  for (size_t k = 0; k < n; ++k) mag[n - 1 - k] = negative ? uint8_t(~bytes[k]) : bytes[k];
+  for (size_t k = n; negative && k-- > 0;)
+    if (++mag[k] != 0) break;
+  if (n > kMaxExactIntBytes) {  // hex: linear, still exact and distinct from every decimal
+    static const char kHex[] = "0123456789abcdef";
+    std::string hex;
+    for (uint8_t b : mag)
+      if (!hex.empty() || b != 0) hex += {kHex[b >> 4], kHex[b & 15]};
+    while (hex.size() > 1 && hex[0] == '0') hex.erase(0, 1);
+    return (negative ? "-0x" : "0x") + (hex.empty() ? std::string("0") : hex);
+  }
+  std::string digits;  // least significant first: repeated division by 10
+  for (size_t first = 0; first < n;) {
+    unsigned rest = 0;
+    for (size_t k = first; k < n; ++k) {
+      const unsigned cur = (rest << 8) | mag[k];
+      mag[k] = static_cast<uint8_t>(cur / 10);
+      rest = cur % 10;
+    }
+    digits.push_back(static_cast<char>('0' + rest));
+    while (first < n && mag[first] == 0) ++first;
+  }
+  if (digits.empty()) digits = "0";
+  if (negative) digits.push_back('-');
+  return std::string(digits.rbegin(), digits.rend());
+}
 
 Result<Ref> runPickle(Heap& heap, const uint8_t* data, size_t size, const PickleLimits& limits) {
   Vm vm(heap, data, size, 0, limits);

@@ -43,6 +43,26 @@ TEST(MotionTracks, ChoiceParses) {
   }
 }
 
+TEST(MotionTracks, IdsOfAnyLengthOrderAsNumbersAndRepeatsAreRefused) {
+  MotionSet set;
+  for (const char* id : {"18446744073709551616", "9007199254740993", "-3", "9007199254740992"})
+    set.tracks.push_back(track(id, 2));
+  Result<std::vector<Motion>> all = selectTracks(set, *parseTrackChoice("all"), "w.pkl");
+  ASSERT_TRUE(all.ok()) << all.message();
+  std::vector<std::string> order;
+  for (const Motion& m : *all) order.push_back(m.track);
+  EXPECT_EQ(order, (std::vector<std::string>{"-3", "9007199254740992", "9007199254740993",
+                                             "18446744073709551616"}));
+  Result<std::vector<Motion>> pick =
+      selectTracks(set, *parseTrackChoice("9007199254740993"), "w.pkl");
+  ASSERT_TRUE(pick.ok()) << pick.message();
+  EXPECT_EQ(pick->front().track, "9007199254740993");
+  set.tracks.push_back(track("-3", 2));
+  Result<std::vector<Motion>> twice = selectTracks(set, *parseTrackChoice("all"), "w.pkl");
+  ASSERT_FALSE(twice.ok());
+  EXPECT_EQ(twice.message(), "w.pkl: two tracks have the id -3; give them distinct ids");
+}
+
 TEST(MotionTracks, RowsAreOrderedAndGapsHoldThePreviousDetection) {
   Motion m = track("4", 3);  // rows 0, 1, 2 detected at frames 8, 3, 5
   ASSERT_TRUE(assembleTrack({8, 3, 5}, "f.pkl", &m).ok());
