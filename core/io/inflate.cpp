@@ -30,7 +30,8 @@ Status grow(InflatedBytes* out, uint64_t max_bytes, const char* name, const std:
 }  // namespace
 
 Result<InflatedBytes> inflateStream(const uint8_t* data, size_t size, StreamFormat format,
-                                    const std::string& context, uint64_t max_bytes) {
+                                    const std::string& context, uint64_t max_bytes,
+                                    bool stop_at_max) {
   const char* name = format == StreamFormat::Gzip ? "gzip" : "zlib";
   InflatedBytes out;
   z_stream zs{};
@@ -43,6 +44,14 @@ Result<InflatedBytes> inflateStream(const uint8_t* data, size_t size, StreamForm
       zs.next_in = const_cast<Bytef*>(data + in_pos);  // zlib's API is not const-correct
       zs.avail_in = static_cast<uInt>(std::min<uint64_t>(size - in_pos, kChunk));
       in_pos += zs.avail_in;
+    }
+    if (out_pos == out.data.size() && stop_at_max && out_pos >= max_bytes) {
+      // Full: complete only if the stream ends here (no byte more to write).
+      uint8_t spare = 0;
+      zs.next_out = &spare;
+      zs.avail_out = 1;
+      out.complete = inflate(&zs, Z_NO_FLUSH) == Z_STREAM_END && zs.avail_out == 1;
+      break;
     }
     if (out_pos == out.data.size() && !(st = grow(&out, max_bytes, name, context))) break;
     zs.next_out = out.data.data() + out_pos;

@@ -19,7 +19,8 @@ namespace smpl {
 
 struct InflatedBytes {
   std::vector<uint8_t> data;
-  MemoryCharge charge;  // `data`'s capacity held against the memory budget
+  MemoryCharge charge;   // `data`'s capacity held against the memory budget
+  bool complete = true;  // false: stopped at max_bytes before the stream's end
 };
 
 enum class StreamFormat { Zlib, Gzip };
@@ -27,7 +28,11 @@ enum class StreamFormat { Zlib, Gzip };
 // Inflates the one stream at the start of `data` (bytes after its end are
 // ignored, as joblib ignores them). Errors name `context`: corrupt or
 // truncated data, more than `max_bytes` of output, the memory budget.
+// With `stop_at_max`, reaching `max_bytes` is not an error: the first
+// max_bytes inflated bytes are returned with complete = false, and nothing
+// past them is inflated (the caller decides whether the prefix suffices).
 Result<InflatedBytes> inflateStream(const uint8_t* data, size_t size, StreamFormat format,
-                                    const std::string& context, uint64_t max_bytes = 16ull << 30);
+                                    const std::string& context, uint64_t max_bytes = 16ull << 30,
+                                    bool stop_at_max = false);
 
 }  // namespace smpl

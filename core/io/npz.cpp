@@ -169,6 +169,13 @@ Status NpzArchive::checkDecodedSize(const std::string& key) const {
   };
   uint64_t count = 1;
   for (int64_t d : h->shape) count = times(count, static_cast<uint64_t>(d));
+  // A compressed member is inflated whole: one that declares more bytes than
+  // its header and array need would only inflate what nothing reads.
+  const uint64_t raw = times(count, static_cast<uint64_t>(t->itemsize));
+  if (m->method != 0 && m->usize > h->data_offset + raw)
+    return makeError(mctx + ": compressed member declares " + std::to_string(m->usize) +
+                     " bytes; its array " + shapeString(h->shape) + " needs " +
+                     std::to_string(h->data_offset + raw));
   const bool text = t->kind == 'S' || t->kind == 'U';
   const uint64_t decoded = times(count, text ? sizeof(std::string) + t->itemsize : sizeof(double));
   return checkMemory(m->usize + decoded, mctx,

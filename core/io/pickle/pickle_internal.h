@@ -105,7 +105,9 @@ struct VmOptions {
   bool tree = false;
   // A torch .pt archive: BINPERSID ids ('storage', type, key, location, numel)
   // are looked up here, and torch's tensor rebuild functions are allowed.
-  std::function<Result<StorageBytes>(const std::string& key)> torch_storage;
+  // `nbytes` is what the id declares (numel x element size): the record may
+  // not be shorter, and a compressed one is not inflated past it.
+  std::function<Result<StorageBytes>(const std::string& key, uint64_t nbytes)> torch_storage;
   bool torch_big_endian = false;  // the archive's `byteorder` record says "big"
   // Set while the inline pickle of a joblib object array runs: joblib writes
   // it with plain pickle.dump, so no NumpyArrayWrapper can occur inside.

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "core/io/inflate.h"
+#include "core/io/pickle/pickle_internal.h"
 #include "core/io/pickle/pickle_tree.h"
 
 namespace smpl {
@@ -60,10 +61,22 @@ Result<DataNode> parseJoblib(const uint8_t* data, size_t size, const std::string
     case JoblibCompression::Zfile:
       return makeError(context + ": " + kZfileMessage);
   }
-  Result<InflatedBytes> inflated =
-      inflateStream(data, size, format, context, limits.max_total_bytes);
+  // The pickle and its arrays cannot need more than the input-scaled bound
+  // (pickle::heapByteLimit), so nothing past it is inflated: a small file
+  // whose stream goes on for gigabytes costs at most the bound.
+  const uint64_t bound = pickle::heapByteLimit(limits, size);
+  Result<InflatedBytes> inflated = inflateStream(data, size, format, context, bound, true);
   if (!inflated) return inflated.error();
-  return parsePickleTree(inflated->data.data(), inflated->data.size(), context, limits);
+  Result<DataNode> tree =
+      parsePickleTree(inflated->data.data(), inflated->data.size(), context, limits);
+  // Stopped at the bound: if the pickle ended before it, what follows is
+  // bytes joblib.load never reads either (it stops at STOP) and the tree
+  // stands; if the pickle needed more, the stream is past what it may need.
+  if (tree || inflated->complete) return tree;
+  return makeError(context + ": compressed stream inflates past " + formatBytes(bound) +
+                   " before its pickle ends (the input-scaled bound: " +
+                   std::to_string(limits.expansion) + " x the file's size, at least " +
+                   formatBytes(limits.expansion_floor) + "; --memory-limit caps it further)");
 }
 
 }  // namespace smpl

@@ -290,7 +290,11 @@ Result<Ref> persistentLoad(Heap& heap, Ref pid) {
   const std::string& key = id->key;
   const DtypeInfo d = id->element;
   const int64_t numel = id->numel;
-  Result<StorageBytes> bytes = heap.options().torch_storage(key);
+  const uint64_t max_numel = UINT64_MAX / static_cast<uint64_t>(d.itemsize);
+  const uint64_t nbytes = static_cast<uint64_t>(numel) > max_numel
+                              ? UINT64_MAX
+                              : static_cast<uint64_t>(numel) * static_cast<uint64_t>(d.itemsize);
+  Result<StorageBytes> bytes = heap.options().torch_storage(key, nbytes);
   if (!bytes) return bytes.error();
   if (static_cast<uint64_t>(numel) > bytes->size / static_cast<uint64_t>(d.itemsize))
     return heap.fail("torch storage '" + printable(key) + "' declares " + std::to_string(numel) +

@@ -56,6 +56,22 @@ Result<bool> bigEndian(const uint8_t* data, size_t size, const std::vector<ZipMe
   return order == "big";
 }
 
+// A compressed storage record may be inflated: it declares no more bytes
+// than its storage needs, and with the records inflated before it stays
+// within the input-scaled bound.
+Status checkInflatable(const ZipMember& m, uint64_t nbytes, uint64_t bound, uint64_t inflated,
+                       const std::string& context) {
+  const std::string ectx = context + "/" + printable(m.name);
+  if (m.usize > nbytes)
+    return makeError(ectx + ": compressed record declares " + std::to_string(m.usize) +
+                     " bytes; its storage needs " + std::to_string(nbytes));
+  if (m.usize > bound || inflated > bound - m.usize)
+    return makeError(ectx + ": compressed storages inflate past " + formatBytes(bound) +
+                     " (the input-scaled bound: a compressed record may not inflate beyond it; "
+                     "--memory-limit caps it further)");
+  return Status();
+}
+
 }  // namespace
 
 Result<DataNode> parseTorchZip(const uint8_t* data, size_t size, const std::string& context,
@@ -73,10 +89,15 @@ Result<DataNode> parseTorchZip(const uint8_t* data, size_t size, const std::stri
   // Storages are viewed in place (stored records) or inflated once each; the
   // views live until the tree is built.
   std::map<std::string, ZipBytes> storages;
+  // Compressed records are inflated whole, so before that each is held to
+  // what its storage declares and all of them to the input-scaled bound: a
+  // small archive cannot make gigabytes out of one deflated record.
+  const uint64_t bound = heapByteLimit(limits, size);
+  uint64_t inflated = 0;
   VmOptions options;
   options.tree = true;
   options.torch_big_endian = *big;
-  options.torch_storage = [&](const std::string& key) -> Result<StorageBytes> {
+  options.torch_storage = [&](const std::string& key, uint64_t nbytes) -> Result<StorageBytes> {
     auto it = storages.find(key);
     if (it == storages.end()) {
       const std::string name = *root + "data/" + key;
@@ -85,6 +106,11 @@ Result<DataNode> parseTorchZip(const uint8_t* data, size_t size, const std::stri
       if (!m)
         return makeError(context + ": no record '" + printable(name) + "' for storage key '" +
                          printable(key) + "'");
+      if (m->method != 0) {
+        if (Status st = checkInflatable(*m, nbytes, bound, inflated, context); !st)
+          return st.error();
+        inflated += m->usize;
+      }
       Result<ZipBytes> b = viewZipMember(data, size, *m, context);
       if (!b) return b.error();
       it = storages.emplace(key, std::move(*b)).first;
