@@ -8,6 +8,8 @@
 // resort, never an abort.
 
 #include "cli/command_line.h"
+#include "cli/docs_folder.h"
+#include "core/docs_location.h"
 #include "core/math/eigen_blocking.h"
 #include "core/os/system.h"
 
@@ -16,5 +18,7 @@ int main(int argc, char** argv) {
   smpl::os::prepareStandardStreams();
   smpl::os::ignoreWriteSignals();  // a full disk quota or closed pipe is a write error (exit 4)
   smpl::os::Utf8Arguments args(argc, argv);
+  // Messages that point at a page name the copy installed with this binary.
+  smpl::setDocsFolder(smpl::findDocsFolder(smpl::os::executablePath()));
   return smpl::runCommandLine(args.argc(), args.argv());
 }

@@ -9,6 +9,7 @@
 
 #include "cli/presets.h"
 #include "cli/settings.h"
+#include "core/docs_location.h"
 #include "core/memory_budget.h"
 #include "core/number_text.h"
 #include "writers/writer.h"
@@ -232,10 +233,8 @@ const std::vector<OptionSpec> kOptions = {
      [](V, S* s) { return s->request.quantize_animation = true, Status(); }},
     {"--preset", nullptr, "web|engine|archive", Applies::Any, nullptr,
      "a bundle of the size options; options given explicitly override it, and each applies only "
-     "where it can (the glTF-only ones to glTF, --quantize-animation with a motion). Measured "
-     "(tools/bench/preset_table.py) on the built-in body with a 120-frame motion: GLB size, and "
-     "the "
-     "vertex distance to the model's math over the motion, added to the default export's:"
+     "where it can (the glTF-only ones to glTF, --quantize-animation with a motion); their "
+     "sizes and errors: performance.md:"
      "{presets}",
      [](V v, S* s) { return s->preset = v, Status(); }},
     {"--gltf-embed", nullptr, nullptr, Applies::Format, nullptr,
@@ -316,8 +315,7 @@ const std::vector<OptionSpec> kOptions = {
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content, not by name: AMASS, SMPLCodec .smpl, fits, AIST++, and "
      "the outputs of video, generation and hand trackers: WHAM, 4D-Humans, GVHMR, TRAM, ROMP, "
-     "EasyMocap, SMPLer-X, Motion-X, MDM, HaMeR, BEAT2; the list: motions.md in "
-     "<prefix>/share/doc/smpl-export):",
+     "EasyMocap, SMPLer-X, Motion-X, MDM, HaMeR, BEAT2; the list: {motions-page}):",
      "bake FILE as an animation (repeatable: one animation each)",
      [](V v, S* s) { return s->request.motions.push_back(v), Status(); }, Hashed::Content},
     {"--motion-sequence", nullptr, "DIR", Applies::Single, nullptr,
@@ -496,11 +494,19 @@ std::string expand(std::string text) {
       {"{default-format}", writerFormats().front().name},
       {"{extensions}", extensions},
       {"{extensions|}", bars},
-      {"{presets}", text.find("{presets}") == std::string::npos ? "" : presetsHelp()}};
+      {"{presets}", text.find("{presets}") == std::string::npos ? "" : presetsHelp()},
+      {"{motions-page}", docsPageReference("motions.md")}};
   for (const auto& [word, value] : words)
     for (size_t at; (at = text.find(word)) != std::string::npos;)
       text.replace(at, std::string(word).size(), value);
   return text;
+}
+
+// Where the pages are: the folder found beside the executable, or the
+// documentation in general when there is none.
+std::string docsPlace() {
+  const std::string folder = docsFolder();
+  return folder.empty() ? "the smpl-export documentation (docs/ in its sources)" : folder;
 }
 
 // "  --name VALUE" then the help text in a column; a long name puts the help
@@ -563,14 +569,13 @@ std::string usageText() {
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
   for (const OptionSpec& o : kOptions) {
     if (o.heading && *o.heading)
-      for (const std::string& line : wrap(std::string("\n") + o.heading, kWidth))
-        out += line + "\n";
+      for (const std::string& line : wrap("\n" + expand(o.heading), kWidth)) out += line + "\n";
     appendUsage(o, &out);
   }
   for (const std::string& line :
        wrap("\nExit codes: 0 ok, 1 usage, 2 cannot load input, 3 cannot export, 4 cannot write "
-            "output.\nReference: man smpl-export; the pages (cli.md, motions.md, ...) are in "
-            "<prefix>/share/doc/smpl-export, docs/ in the sources",
+            "output.\nReference: man smpl-export; the pages (cli.md, motions.md, ...): " +
+                docsPlace(),
             kWidth))
     out += line + "\n";
   return out;

@@ -25,6 +25,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_help  # noqa: E402
+
 HELP_WIDTH = 80
 
 
@@ -136,7 +139,7 @@ def readme_options(readme):
 def main():
     exe, repo = os.path.abspath(sys.argv[1]), sys.argv[2]
     write = "--write" in sys.argv[3:]
-    help_text = subprocess.run([exe, "--help"], check=True, capture_output=True, text=True).stdout
+    help_text = cli_help.run_help(exe)  # as a binary with no pages beside it prints it
     problems = []
     listed = help_options(help_text)
     with open(f"{repo}/docs/options.md", encoding="utf-8") as f:

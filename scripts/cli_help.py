@@ -11,8 +11,11 @@ line. Section headings are unindented lines after the first option.
     parse(help_text) -> Help(title, usage, sections, epilog)
 """
 import collections
+import os
 import re
+import shutil
 import subprocess
+import tempfile
 
 Option = collections.namedtuple("Option", "name alias value help")
 Section = collections.namedtuple("Section", "heading options")  # heading "" for the first
@@ -22,8 +25,17 @@ NAME = re.compile(r"^(--[a-z][a-z0-9-]*)(?:, (-[a-zA-Z]))?(?: (\S+))?$")
 
 
 def run_help(exe):
-    """The `--help` text of the binary `exe` (str)."""
-    return subprocess.run([exe, "--help"], check=True, capture_output=True, text=True).stdout
+    """The `--help` text of the binary `exe` (str), as a copy of it with no
+    documentation pages beside it prints it: the help names the folder of the
+    pages it finds next to its executable (cli/docs_folder.h), which differs
+    between a build tree and each install; the generated pages show the
+    generic wording instead of one machine's path."""
+    with tempfile.TemporaryDirectory() as tmp:
+        alone = os.path.join(tmp, "prefix", "bin", os.path.basename(exe))
+        os.makedirs(os.path.dirname(alone))
+        shutil.copy2(exe, alone)
+        return subprocess.run([alone, "--help"], check=True, capture_output=True,
+                              text=True).stdout
 
 
 def help_column(lines):

@@ -76,8 +76,9 @@ std::vector<std::string> motionFileExtensions();
 // a motion: give it as --model ..." for a model's arrays (v_template with
 // shapedirs, posedirs, weights or J_regressor), "no pose data (keys betas,
 // gender): a shape file, not a motion: give it as --betas-file" when no key
-// looks like pose data, else "keys found: a, b, ...; supported layouts: motions.md in
-// <prefix>/share/doc/smpl-export" (keys sorted, at most 12, through printable()).
+// looks like pose data, else "keys found: a, b, ...; supported layouts: motions.md in <docs
+// folder>" (keys sorted, at most 12, through printable(); core/docs_location.h says which folder,
+// or names the documentation in general).
 std::string unmatchedMessage(const DataNode& root);
 
 // True for a Dict with a betas key (betas, shape, shapeParameters) and no key

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/docs_location.h"
 #include "core/io/printable.h"
 #include "core/motions/motion_aist.h"
 #include "core/motions/motion_amass.h"
@@ -123,16 +124,15 @@ bool isBodyModel(const DataNode& root) {
 std::string unmatchedMessage(const DataNode& root) {
   if (!root.isDict())
     return "holds " + describeNode(root) +
-           " at the top level; not a motion layout this version reads (supported layouts: "
-           "motions.md in <prefix>/share/doc/smpl-export)";
+           " at the top level; not a motion layout this version reads (supported layouts: " +
+           docsPageReference("motions.md") + ")";
   if (isBodyModel(root))
     return "a body model file (keys " + keyList(root) +
            "), not a motion: give it as --model, and the motion as --motion";
   if (isShapeOnly(root))
     return "no pose data (keys " + keyList(root) +
            "): a shape file, not a motion: give it as --betas-file";
-  return "keys found: " + keyList(root) +
-         "; supported layouts: motions.md in <prefix>/share/doc/smpl-export";
+  return "keys found: " + keyList(root) + "; supported layouts: " + docsPageReference("motions.md");
 }
 
 }  // namespace smpl

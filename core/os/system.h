@@ -17,6 +17,9 @@ uint64_t processId();
 bool randomBytes(void* out, size_t size);
 // The machine's physical memory in bytes, or 0 when unknown.
 uint64_t physicalMemoryBytes();
+// This program's executable as an absolute UTF-8 path (/proc/self/exe,
+// GetModuleFileNameW), or "" where the OS cannot tell (WebAssembly).
+std::string executablePath();
 // Whether standard stream `fd` (1: stdout, 2: stderr) is a terminal.
 bool isTerminal(int fd);
 

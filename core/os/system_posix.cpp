@@ -27,6 +27,18 @@ uint64_t physicalMemoryBytes() {
   return static_cast<uint64_t>(pages) * static_cast<uint64_t>(page);
 }
 
+std::string executablePath() {
+#ifdef __EMSCRIPTEN__
+  return "";
+#else
+  std::string path(4096, '\0');
+  const ssize_t n = ::readlink("/proc/self/exe", path.data(), path.size());
+  if (n <= 0 || static_cast<size_t>(n) >= path.size()) return "";
+  path.resize(static_cast<size_t>(n));
+  return path;
+#endif
+}
+
 bool isTerminal(int fd) { return ::isatty(fd) != 0; }
 
 Utf8Arguments::Utf8Arguments(int argc, char** argv) : args_(argv, argv + argc) {

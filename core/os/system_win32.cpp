@@ -29,6 +29,14 @@ uint64_t physicalMemoryBytes() {
   return GlobalMemoryStatusEx(&status) ? status.ullTotalPhys : 0;
 }
 
+std::string executablePath() {
+  std::wstring path(32768, L'\0');
+  const DWORD n = GetModuleFileNameW(nullptr, path.data(), static_cast<DWORD>(path.size()));
+  if (n == 0 || n >= path.size()) return "";
+  path.resize(n);
+  return narrow(path);
+}
+
 bool isTerminal(int fd) { return _isatty(fd) != 0; }
 
 Utf8Arguments::Utf8Arguments(int argc, char** argv) {

@@ -67,11 +67,13 @@ for p in problems:
 sys.exit(1 if problems else 0)
 EOF
 
-# Every page --help and the unknown-motion refusal name is installed where they say:
-# <prefix>/share/doc/smpl-export/<page>.
+# Every page --help and the unknown-motion refusal name is installed where they
+# say: the installed binary finds <prefix>/share/doc/smpl-export beside it
+# (cli/docs_folder.h) and names that folder as a path that exists.
 docs=share/doc/smpl-export
+where=$(cd "$prefix/$docs" && pwd -P)
 help=$("$prefix/bin/smpl-export" --help)
-grep -q "<prefix>/$docs" <<<"$help" || fail "--help does not name <prefix>/$docs"
+grep -qF "$where" <<<"$(tr '\n' ' ' <<<"$help" | tr -s ' ')" || fail "--help does not name the installed pages' folder $where"
 for page in $(grep -o '[a-z-]*\.md' <<<"$help" | sort -u); do
   [[ -f $prefix/$docs/$page ]] || fail "--help names $page, which is not installed in $docs"
 done
@@ -80,7 +82,17 @@ done
 set +e
 refusal=$("$prefix/bin/smpl-export" --model builtin --motion "$work/unknown.npz" --out "$work/u.glb" 2>&1)
 set -e
-page=$(grep -o "supported layouts: [a-z-]*\.md in <prefix>/$docs" <<<"$refusal" | grep -o '[a-z-]*\.md') ||
-  fail "an unknown motion layout does not name a page in <prefix>/$docs: $refusal"
-[[ -f $prefix/$docs/$page ]] || fail "the unknown-layout refusal names $page, which is not installed in $docs"
+page=$(grep -oF "supported layouts: motions.md in $where" <<<"$refusal" | grep -o '[a-z-]*\.md') ||
+  fail "an unknown motion layout does not name a page in $where: $refusal"
+[[ -f $where/$page ]] || fail "the unknown-layout refusal names $page, which is not installed in $docs"
+# A binary on its own (copied out of the tree) has no pages beside it: it names
+# none by path, only the documentation in general.
+mkdir -p "$work/alone/bin" && cp "$prefix/bin/smpl-export" "$work/alone/bin/"
+set +e
+alone=$("$work/alone/bin/smpl-export" --model builtin --motion "$work/unknown.npz" --out "$work/u.glb" 2>&1)
+set -e
+grep -qF "supported layouts: motions.md in the smpl-export documentation" <<<"$alone" ||
+  fail "a binary without pages beside it should name the documentation in general: $alone"
+grep -q "share/doc" <<<"$("$work/alone/bin/smpl-export" --help)" &&
+  fail "a binary without pages beside it names a share/doc folder in --help"
 echo "cmake --install: ${#expected[@]} files checked under the prefix; the installed smpl-export runs"

@@ -171,7 +171,7 @@ CASES = [
      "model": "smpl_small", "args": [], "outputs": None, "frames": None, "notes": [],
      "refusal": {"exit": 2,
                  "message": "keys found: fps, root_positions, rotations; supported layouts: "
-                            "motions.md in <prefix>/share/doc/smpl-export",
+                            "motions.md in ",
                  "forbid": ["shape file"]}},
 ]
 

@@ -7,6 +7,7 @@
 
 #include <set>
 
+#include "core/docs_location.h"
 #include "core/motions/motion.h"
 #include "core/motions/motion_read.h"
 
@@ -146,9 +147,17 @@ TEST(MotionLayouts, ShapeFilesAndUnknownLayoutsAreToldApart) {
     EXPECT_NE(m.message().find("keys found: "), std::string::npos) << m.message();
     EXPECT_NE(m.message().find("pred_rotmat, pred_shape; supported layouts"), std::string::npos)
         << m.message();
-    EXPECT_NE(m.message().find("; supported layouts: motions.md in <prefix>/share/doc/smpl-export"),
+    EXPECT_NE(m.message().find("; supported layouts: motions.md in the smpl-export documentation"),
               std::string::npos)
         << m.message();
+    setDocsFolder("/opt/se/share/doc/smpl-export");  // as the CLI sets it from its executable
+    Result<Motion> located = loadMotion(kTable + file);
+    setDocsFolder("");
+    ASSERT_FALSE(located.ok());
+    EXPECT_NE(
+        located.message().find("; supported layouts: motions.md in /opt/se/share/doc/smpl-export"),
+        std::string::npos)
+        << located.message();
     Result<bool> poses = hasPoseData(kTable + file);  // batch mode fails it, never skips it
     ASSERT_TRUE(poses.ok()) << poses.message();
     EXPECT_TRUE(*poses) << file;
