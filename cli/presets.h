@@ -4,8 +4,9 @@
 // explicitly is applied as if typed (explicit options override), and only
 // where it applies: format-only options for the output formats that take
 // them, --quantize-animation only with a motion, the morph-target options
-// only with correctives. The measured columns come from
-// tools/bench/preset_table.py (one run; README "Size" has the table).
+// only with correctives. Their sizes and errors are measured by
+// tools/bench/preset_table.py; docs/performance.md shows the recorded table
+// (numbers are not repeated in --help, where they could only be typed by hand).
 #pragma once
 
 #include <string>
@@ -22,13 +23,12 @@ struct Preset {
   std::string name;                                          // --preset value
   std::string purpose;                                       // who reads the file
   std::vector<std::pair<std::string, std::string>> options;  // (option, value) as typed
-  std::string measured;                                      // size and added error, for --help
 };
 
 // web, engine, archive (usage order).
 const std::vector<Preset>& presets();
 
-// The --help text of the presets: one paragraph each, "name: purpose; options; measured".
+// The --help text of the presets: one paragraph each, "name: purpose; options".
 std::string presetsHelp();
 
 // Applies settings->preset's options that were not given (see above). An

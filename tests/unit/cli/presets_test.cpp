@@ -71,11 +71,13 @@ TEST(Presets, BadUsesAreUsageErrors) {
   EXPECT_EQ(unknown.message(), "--preset: expected 'web', 'engine' or 'archive', got 'tiny'");
 }
 
-TEST(Presets, HelpListsEveryPresetWithItsMeasurement) {
+TEST(Presets, HelpListsEveryPresetWithItsOptions) {
   const std::string help = presetsHelp();
   for (const Preset& p : presets()) {
     EXPECT_NE(help.find("\n" + p.name + ": "), std::string::npos) << p.name;
-    EXPECT_NE(p.measured.find("MB"), std::string::npos) << p.name << ": size not measured";
+    for (const auto& [name, value] : p.options)
+      EXPECT_NE(help.find(name + (value.empty() ? "" : " " + value)), std::string::npos)
+          << p.name << ": " << name;
   }
 }
 
