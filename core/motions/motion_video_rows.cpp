@@ -1,6 +1,7 @@
 #include "core/motions/motion_video_rows.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/models/betas_rows.h"
 #include "core/models/validate_inputs.h"
@@ -122,7 +123,19 @@ Result<std::vector<int64_t>> frameIds(const Array& a, size_t t, const std::strin
   return std::vector<int64_t>(a.data.begin(), a.data.end());
 }
 
+// "1e+16": a large id as printf's %.3g shows it.
+static std::string aboutText(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+
 Result<std::string> idText(double value, const std::string& context, const char* key) {
+  // Array values arrive as doubles (core/array.h): above 9e15 neighbouring
+  // integers are no longer distinct, so such an id is refused, never rounded.
+  if (value >= 9.0e15 && value == std::floor(value) && std::isfinite(value))
+    return makeError(context + ": '" + key + "' holds an id of about " + aboutText(value) +
+                     ", beyond the largest this reader keeps exact in an array (9e15)");
   if (!(value >= 0 && value < 9.0e15) || value != std::floor(value))
     return makeError(context + ": '" + key + "' is not a non-negative integer id");
   return std::to_string(static_cast<int64_t>(value));

@@ -63,7 +63,9 @@ Result<std::vector<int64_t>> frameIds(const Array& a, size_t t, const std::strin
                                       const char* key);
 
 // A track id as decimal text from a one-element integer array (PHALP `tid`
-// entries, EasyMocap `id`); error when it is not a non-negative integer.
+// entries, EasyMocap `id`); error when it is not a non-negative integer, and
+// for 9e15 and above (array values are doubles: neighbouring integers there
+// would share an id), an error that says so instead of a rounded id.
 Result<std::string> idText(double value, const std::string& context, const char* key);
 
 }  // namespace video_rows

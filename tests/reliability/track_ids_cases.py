@@ -111,4 +111,32 @@ expect_failure("ids.frames_past_a_track_fails_before_any_write",
                exit_code=3, names=[str(motion), "track 1"], inputs=[motion], out_dirs=[out])
 check("ids.frames_past_a_track_nothing_written", list(out.iterdir()) == [],
       f"{sorted(p.name for p in out.iterdir())}")
+
+# A failure no check can foresee (the file-size limit, as a full disk): track 0
+# (2 frames) fits under `ulimit -f`, track 1 (600 frames) does not. Track 0's
+# output stays complete and the error says it was written; track 1 leaves nothing.
+motion, out = wham("written_before", [0, 1], lengths=[2, 600])
+sizes = {}
+for tid in (0, 1):
+    probe = work / "written_before" / f"probe{tid}.glb"
+    expect_success(f"ids.written_before_probe_{tid}",
+                   [exe, "--model", MODEL, "--motion", motion, "--track", str(tid), "--out", probe]
+                   + FAST, outputs=[probe], inputs=[motion])
+    sizes[tid] = probe.stat().st_size if probe.exists() else 0
+limit_kib = (sizes[0] + sizes[1]) // 2 // 1024
+check("ids.written_before_sizes_apart", sizes[0] < limit_kib * 1024 < sizes[1], f"{sizes}")
+# Python ignores SIGXFSZ and exec keeps it ignored: env restores the default a shell gives.
+limited = ["/usr/bin/env", "--default-signal=XFSZ", "/bin/bash", "-c",
+           f'ulimit -f {limit_kib}; exec "$0" "$@"']
+first = out / "body.track0.glb"
+expect_failure("ids.written_before_named",
+               limited + [str(a) for a in [exe, "--model", MODEL, "--motion", motion, "--track", "all",
+                                           "--out", out / "body.glb"] + FAST],
+               exit_code=4, names=["body.track1.glb", "written before it, complete: body.track0.glb"],
+               inputs=[motion], out_dirs=[out], forbidden=[out / "body.track1.glb"])
+head = first.read_bytes()[:12] if first.exists() else b""
+check("ids.written_before_kept_complete",  # a GLB's header states its whole length
+      head[:4] == b"glTF" and int.from_bytes(head[8:12], "little") == first.stat().st_size
+      and pathlib.Path(str(first) + ".smpl.json").exists(),
+      f"{sorted(p.name for p in out.iterdir())}")
 finish()

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "core/motions/motion_sequence.h"
+#include "core/motions/motion_video_rows.h"
 
 namespace smpl {
 namespace {
@@ -145,6 +146,30 @@ TEST(MotionSequence, PerFrameFilesJoinPerPerson) {
     EXPECT_LT((p0.translation[f - 3] - one->translation[0]).norm(), 1e-12) << f;
   }
   EXPECT_NE(set->notes[0].find("30 files joined (frames 3-"), std::string::npos) << set->notes[0];
+}
+
+// Ids read from arrays (PHALP 'tid', EasyMocap 'id') arrive as doubles: ids
+// up to 9e15 are exact decimal text; 2^53 + 1 and above cannot be told from a
+// neighbour, so they are refused with a message that says why, never rounded.
+TEST(TrackIds, ArrayIdsAreExactOrRefusedNeverRounded) {
+  Result<std::string> small = video_rows::idText(12345678901234.0, "f.pkl", "tid");
+  ASSERT_TRUE(small.ok()) << small.message();
+  EXPECT_EQ(*small, "12345678901234");
+  Result<std::string> edge = video_rows::idText(8999999999999998.0, "f.pkl", "tid");
+  ASSERT_TRUE(edge.ok()) << edge.message();
+  EXPECT_EQ(*edge, "8999999999999998");
+  for (double big : {9007199254740993.0, 1e16, 9.2233720368547758e18}) {
+    Result<std::string> r = video_rows::idText(big, "f.pkl", "tid");
+    ASSERT_FALSE(r.ok()) << *r;
+    EXPECT_NE(r.message().find("f.pkl: 'tid' holds an id of about "), std::string::npos)
+        << r.message();
+    EXPECT_NE(r.message().find("beyond the largest"), std::string::npos) << r.message();
+  }
+  for (double bad : {-1.0, 2.5}) {
+    Result<std::string> r = video_rows::idText(bad, "f.pkl", "tid");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.message().find("is not a non-negative integer id"), std::string::npos);
+  }
 }
 
 }  // namespace
