@@ -209,3 +209,8 @@ foreach(layout wham prompthmr)
             ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout}/${layout}_scene.glb)
   set_tests_properties(validator.scene.${layout} PROPERTIES DEPENDS cli.scene.${layout} LABELS validator)
 endforeach()
+# The same bytes for any --threads count (GLB, FBX, BVH; with a motion; --preset web).
+add_test(NAME cli.threads_determinism
+  COMMAND ${CMAKE_CURRENT_LIST_DIR}/threads_determinism_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR}
+          ${CMAKE_CURRENT_BINARY_DIR}/threads_determinism)
+set_tests_properties(cli.threads_determinism PROPERTIES LABELS cli)
