@@ -1,13 +1,43 @@
 // inflateStream: zlib's streaming inflate into a buffer that doubles as it
-// fills. Before each doubling the new buffer is charged while the old one
-// still is (both exist during the copy), then the old charge is released.
+// fills, in place (GrowableBytes: realloc). Before each doubling the new size
+// is charged while the old one still is (realloc may copy a small block),
+// then the old charge is released.
 #include "core/io/inflate.h"
 
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <utility>
 
 namespace smpl {
+
+GrowableBytes::GrowableBytes(GrowableBytes&& other) noexcept
+    : bytes_(std::exchange(other.bytes_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+
+GrowableBytes& GrowableBytes::operator=(GrowableBytes&& other) noexcept {
+  if (this != &other) {
+    std::free(bytes_);
+    bytes_ = std::exchange(other.bytes_, nullptr);
+    size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+GrowableBytes::~GrowableBytes() { std::free(bytes_); }
+
+bool GrowableBytes::resize(size_t size) {
+  if (size == 0) {
+    std::free(bytes_);
+    bytes_ = nullptr, size_ = 0;
+    return true;
+  }
+  void* grown = std::realloc(bytes_, size);
+  if (!grown) return false;
+  bytes_ = static_cast<uint8_t*>(grown), size_ = size;
+  return true;
+}
+
 namespace {
 
 constexpr uint64_t kChunk = 1u << 30;  // z_stream counts are 32-bit
@@ -22,7 +52,9 @@ Status grow(InflatedBytes* out, uint64_t max_bytes, const char* name, const std:
   MemoryCharge charge;
   if (Status st = charge.add(next, context, std::string("inflating the ") + name + " stream"); !st)
     return st;
-  out->data.resize(static_cast<size_t>(next));
+  if (!out->data.resize(static_cast<size_t>(next)))
+    return makeError(context + ": out of memory inflating the " + name + " stream to " +
+                     formatBytes(next));
   out->charge = std::move(charge);
   return Status();
 }
@@ -71,7 +103,9 @@ Result<InflatedBytes> inflateStream(const uint8_t* data, size_t size, StreamForm
   }
   inflateEnd(&zs);
   if (!st) return st.error();
-  out.data.resize(static_cast<size_t>(out_pos));  // capacity (and its charge) stay
+  // Shrinking in place hands the unused tail back; the charge stays at the
+  // capacity reached (the peak), which is what the budget saw.
+  if (out_pos < out.data.size()) out.data.resize(static_cast<size_t>(out_pos));
   return out;
 }
 

@@ -17,8 +17,34 @@
 
 namespace smpl {
 
+// A byte buffer that grows in place: realloc, which for large blocks moves
+// pages (glibc: mremap) instead of copying them, so doubling a 512 MiB buffer
+// never holds 1.5 GiB, and new bytes are not zero-filled before zlib writes them.
+class GrowableBytes {
+ public:
+  GrowableBytes() = default;
+  GrowableBytes(GrowableBytes&& other) noexcept;
+  GrowableBytes& operator=(GrowableBytes&& other) noexcept;
+  GrowableBytes(const GrowableBytes&) = delete;
+  GrowableBytes& operator=(const GrowableBytes&) = delete;
+  ~GrowableBytes();
+
+  uint8_t* data() { return bytes_; }
+  const uint8_t* data() const { return bytes_; }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  // Sets the size; growing keeps the bytes (the new ones are unset). False
+  // (nothing changed) when the allocation fails.
+  bool resize(size_t size);
+  std::vector<uint8_t> toVector() const { return std::vector<uint8_t>(bytes_, bytes_ + size_); }
+
+ private:
+  uint8_t* bytes_ = nullptr;
+  size_t size_ = 0;
+};
+
 struct InflatedBytes {
-  std::vector<uint8_t> data;
+  GrowableBytes data;
   MemoryCharge charge;   // `data`'s capacity held against the memory budget
   bool complete = true;  // false: stopped at max_bytes before the stream's end
 };

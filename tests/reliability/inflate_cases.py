@@ -90,7 +90,7 @@ after = joblib_file(work / "after_stop.pkl", wham((0.2 * rng.standard_normal((4,
                     trailing_zero_chunks=128)
 expect_success("joblib with 2 GiB of zeros after the pickle's STOP",
                [exe, "--model", MODEL, "--motion", after, "--out", OUT, "--quiet"],
-               outputs=[OUT], inputs=[after], max_rss_mb=1024)
+               outputs=[OUT], inputs=[after], max_rss_mb=700)  # 522 MB measured; copying growth: 778
 OUT.unlink(missing_ok=True)
 
 # ---- joblib: a 2 GiB array the pickle needs -----------------------------------
@@ -113,12 +113,13 @@ try:
     inside = joblib_file(work / "inside.pkl", wham(np.broadcast_to(np.float32(0), ((1 << 29) // 72, 72))))
 finally:
     joblib.numpy_pickle.NumpyArrayWrapper.write_array = real_write
-# The bound here is ~616 MiB; the output buffer doubles, so the last growth
-# holds 512 MiB and 616 MiB at once: ~1.1 GB peak (not yet under 1 GiB).
+# The bound here is ~616 MiB; the output buffer doubles in place (realloc:
+# pages moved, not copied), so the peak is the bound plus the program (628 MB
+# measured); a growth that copies held 512 MiB and 616 MiB at once (1141 MB).
 expect_failure("joblib whose 2 GiB array is inside the pickle",
                [exe, "--model", MODEL, "--motion", inside, "--out", OUT, "--quiet"],
                exit_code=2, names=["inside.pkl", "compressed stream inflates past", "input-scaled bound"],
-               inputs=[inside], out_dirs=[OUT.parent], forbidden=[OUT], max_rss_mb=1200)
+               inputs=[inside], out_dirs=[OUT.parent], forbidden=[OUT], max_rss_mb=800)
 
 
 # ---- torch: a deflated storage record of 2 GiB --------------------------------
