@@ -256,8 +256,10 @@ bad = 0
 def rel(path, top):
     return path[len(top) + 1:] if path and path.startswith(top + "/") else path
 if [r["input"] for r in ref] != [g["input"] for g in got]:
-    print("slurm-test: the concatenated manifests' inputs (sorted) differ from the one-process manifest's",
-          file=sys.stderr)
+    a, b = [r["input"] for r in ref], [g["input"] for g in got]
+    print("slurm-test: the concatenated manifests' inputs (sorted) differ from the one-process manifest's:"
+          f" missing {sorted(set(a) - set(b))}, extra {sorted(set(b) - set(a))},"
+          f" {len(b)} lines for {len(a)} motions", file=sys.stderr)
     sys.exit(1)
 resumed = 0
 for r, g in zip(ref, got):
@@ -273,8 +275,9 @@ for r, g in zip(ref, got):
     elif r["status"] != g["status"]:
         print(f"slurm-test: manifest {r['input']}: status {g['status']} != {r['status']}", file=sys.stderr)
         bad = 1
-print(f"slurm-test: manifest: {len(got)} lines equal in input, output, bytes, sha256, status"
-      f" ({resumed} up-to-date in the resumed task); seconds not compared")
+if not bad:
+    print(f"slurm-test: manifest: {len(got)} lines equal in input, output, bytes, sha256, status"
+          f" ({resumed} up-to-date in the resumed task); seconds not compared")
 sys.exit(bad)
 EOF
 if ((status == 0)); then
