@@ -54,8 +54,10 @@ say() { echo "slurm-test: $*"; }
 [[ $(id -u) -eq 0 ]] || fail "needs root (munged and slurmd run as root here; CI runs as root): run it as root"
 [[ -x $exe ]] || fail "$exe: not an executable (cmake --build build --target smpl-export)"
 [[ -f $fixtures/models/smplh_small.npz ]] || fail "$fixtures: no synthetic fixtures (cmake --build build --target fixtures)"
+[[ -f $docs ]] || fail "$docs: no such page (--docs)"
 exe=$(realpath "$exe")
 fixtures=$(realpath "$fixtures")
+docs=$(realpath "$docs")
 
 # 1. Slurm and munge (also in scripts/setup-deps.sh's test packages).
 missing=()
