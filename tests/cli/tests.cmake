@@ -214,3 +214,12 @@ add_test(NAME cli.threads_determinism
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/threads_determinism_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR}
           ${CMAKE_CURRENT_BINARY_DIR}/threads_determinism)
 set_tests_properties(cli.threads_determinism PROPERTIES LABELS cli)
+
+# docs/batch.md's Slurm job array on a one-node Slurm (munge, slurmctld, slurmd on
+# localhost in a temporary folder): the shards, one task cancelled midway and
+# resubmitted, must write the one-process batch's bytes and manifest lines.
+# Needs root (CI runs as root); not root, or no Slurm, is a failure, not a skip.
+add_test(NAME batch.slurm
+  COMMAND ${PROJECT_SOURCE_DIR}/scripts/slurm-test.sh --exe $<TARGET_FILE:smpl-export>
+          --fixtures ${SMPL_FIXTURE_DIR} --docs ${PROJECT_SOURCE_DIR}/docs/batch.md)
+set_tests_properties(batch.slurm PROPERTIES LABELS integration TIMEOUT 300)
