@@ -66,7 +66,8 @@ double maxError(const mjModel* m, const mjData* d, const std::vector<Joint>& joi
     if (id < 0) fail("(a) no body named '" + j.name + "'");
     const double want[3] = {j.p[0], zup ? -j.p[2] : j.p[1], zup ? j.p[1] : j.p[2]};
     double e = 0.0;
-    for (int c = 0; c < 3; ++c) e += (d->xpos[3 * id + c] - want[c]) * (d->xpos[3 * id + c] - want[c]);
+    for (int c = 0; c < 3; ++c)
+      e += (d->xpos[3 * id + c] - want[c]) * (d->xpos[3 * id + c] - want[c]);
     worst = std::fmax(worst, std::sqrt(e));
   }
   return worst;
@@ -108,8 +109,8 @@ void checkSteps(const mjModel* m, mjData* d) {
       if (d->warning[w].number > 0)
         fail("(b) MuJoCo warning " + std::to_string(w) + " at step " + std::to_string(step));
   }
-  std::printf("(b) 1000 steps of %g s: finite, no warnings; root at z = %.4g m\n",
-              m->opt.timestep, d->qpos[2]);
+  std::printf("(b) 1000 steps of %g s: finite, no warnings; root at z = %.4g m\n", m->opt.timestep,
+              d->qpos[2]);
 }
 
 }  // namespace

@@ -10,10 +10,10 @@ namespace smpl {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kFloorRadius = 0.01;     // m: the sphere of a part with no triangles
-constexpr double kFlatRegular = 0.005;    // m: added to the second moments' diagonal
-constexpr double kMinRadius = 0.001;      // m: thinnest capsule
-constexpr double kMinSegment = 0.0001;    // m: shorter capsules become spheres
+constexpr double kFloorRadius = 0.01;   // m: the sphere of a part with no triangles
+constexpr double kFlatRegular = 0.005;  // m: added to the second moments' diagonal
+constexpr double kMinRadius = 0.001;    // m: thinnest capsule
+constexpr double kMinSegment = 0.0001;  // m: shorter capsules become spheres
 const double kFloorVolume = 4.0 / 3.0 * kPi * kFloorRadius * kFloorRadius * kFloorRadius;
 
 Eigen::Vector3d vertex(const SkinnedMesh& m, int v) { return m.positions.row(v).cast<double>(); }

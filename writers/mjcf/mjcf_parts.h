@@ -48,14 +48,14 @@ struct MjcfGeom {
 };
 
 struct MjcfPart {
-  double volume = 0.0;                              // m^3, > 0
+  double volume = 0.0;                               // m^3, > 0
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // centre of mass (world, model axes)
   Eigen::Matrix3d inertia_per_kg = Eigen::Matrix3d::Identity();  // about `center`, m^2
   MjcfGeom geom;
 };
 
 struct MjcfParts {
-  double mesh_volume = 0.0;    // V, m^3
+  double mesh_volume = 0.0;     // V, m^3
   std::vector<MjcfPart> parts;  // one per skeleton joint
 };
 

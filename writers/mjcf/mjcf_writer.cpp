@@ -45,12 +45,23 @@ std::string escaped(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -187,8 +198,7 @@ struct MjcfWriter : Writer {
     out += "  <!-- smpl-export: " + escaped(asset.metadata.model_kind) + " " +
            escaped(asset.metadata.model_name) +
            "; Z up (the model's Y up turned +90 degrees about X), metres, kilograms; density " +
-           num(options.density) + " kg/m^3, mesh volume " + num(parts->mesh_volume) +
-           " m^3 -->\n";
+           num(options.density) + " kg/m^3, mesh volume " + num(parts->mesh_volume) + " m^3 -->\n";
     out += "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n";
     out += "  <option gravity=\"0 0 -9.81\" timestep=\"0.002\"/>\n";
     out += "  <default>\n    <joint damping=\"0.5\" armature=\"0.01\"/>\n";
