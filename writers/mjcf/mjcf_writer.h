@@ -28,9 +28,9 @@
 // (contype 1, conaffinity 0; the floor 1, 1): the rest pose's parts overlap.
 // <compiler inertiafromgeom="false">: the geoms carry no mass.
 //
-// With options.mjcf_motors an <actuator> block has one <motor> per joint
-// degree of freedom below the root (hinge: one per hinge, gear 1; ball: none
-// (MuJoCo motors drive scalar joints), ctrlrange [-100, 100] N m, limited).
+// With options.mjcf_motors an <actuator> block has one <motor> per hinge
+// (named as the hinge, gear 1, ctrlrange [-100, 100] N m, ctrllimited); with
+// ball joints motors are an error (MuJoCo motors drive scalar joints).
 //
 // Numbers: the shortest text that reads back as the same double ("-0" as
 // 0); names XML-escaped. No clip is written (the request refuses --motion
