@@ -91,7 +91,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
   const size_t at = usage.find(format);
   ASSERT_NE(at, std::string::npos) << usage;
   EXPECT_TRUE(std::isspace(static_cast<unsigned char>(usage[at + format.size()]))) << usage;
-  EXPECT_NE(usage.find("--out FILE" + joined(extensions, "|") + " [options]"), std::string::npos);
+  EXPECT_NE(usage.find("--out FILE" + joined(extensions, "|") + "\n         [options]"),
+            std::string::npos);
   EXPECT_NE(flat(usage).find("(" + joined(extensions, ", ") + ")"), std::string::npos);
   for (const WriterFormat& row : writerFormats()) {
     Result<Settings> batch = parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o",
@@ -125,8 +126,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
 }
 
 TEST(WriterTable, CommandLineFollowsTheTable) {
-  ASSERT_EQ(writerFormats().size(), 4u);
-  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx or .bvh");
+  ASSERT_EQ(writerFormats().size(), 5u);
+  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx, .bvh or .xml");
   expectTheCommandLineFollows(usageText());
   EXPECT_EQ(writerForPath("x.FBX"), writerFormatByName("fbx")->writer);
 }
@@ -135,8 +136,9 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
   {
     ScopedWriterFormat skel(skeletonRow());
     const std::string usage = usageText();
-    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|skel"), std::string::npos) << usage;
-    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .skel)"), std::string::npos) << usage;
+    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|mjcf|skel"), std::string::npos) << usage;
+    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .xml, .skel)"), std::string::npos)
+        << usage;
     expectTheCommandLineFollows(usage);
     // the glTF/FBX-only options do not apply to it
     Result<Settings> draco = parse({"--model", "builtin", "--out", "a.skel", "--draco"});
@@ -147,7 +149,7 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
       parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--format", "skel"});
   ASSERT_TRUE(gone.ok()) << gone.message();  // the parser stores it; the request checks it
   EXPECT_EQ(checkRequest(gone->request).message(),
-            "--format: expected 'glb', 'gltf', 'fbx' or 'bvh', got 'skel'");
+            "--format: expected 'glb', 'gltf', 'fbx', 'bvh' or 'mjcf', got 'skel'");
   EXPECT_EQ(writerFormatForPath("a.skel"), nullptr);
 }
 
