@@ -4,10 +4,15 @@
 # mjcf_check links MuJoCo (Debian libmujoco-dev, scripts/setup-deps.sh); smpl-export does not.
 # Without MuJoCo the tests are still registered and fail (the checker path names the missing
 # package): never a skip. Label: integration.
-find_package(mujoco QUIET)
-if(mujoco_FOUND)
+# The header and the library directly: Debian's mujocoConfig.cmake names
+# /usr/include/libqhull_r/ (libqhull-dev, which libmujoco-dev does not pull in)
+# in its include path, and CMake refuses the whole configure when it is missing.
+find_path(SMPL_MUJOCO_INCLUDE mujoco/mujoco.h)
+find_library(SMPL_MUJOCO_LIBRARY mujoco)
+if(SMPL_MUJOCO_INCLUDE AND SMPL_MUJOCO_LIBRARY)
   add_executable(mjcf_check ${CMAKE_CURRENT_LIST_DIR}/mjcf_check.cpp)
-  target_link_libraries(mjcf_check PRIVATE mujoco::mujoco)
+  target_include_directories(mjcf_check PRIVATE ${SMPL_MUJOCO_INCLUDE})
+  target_link_libraries(mjcf_check PRIVATE ${SMPL_MUJOCO_LIBRARY})
   set(SMPL_MJCF_CHECK $<TARGET_FILE:mjcf_check>)
 else()
   message(WARNING "MuJoCo (libmujoco-dev) not found: the mjcf.* tests will fail; run scripts/setup-deps.sh")
