@@ -311,6 +311,23 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        return s->request.bvh_units = v, Status();
      }},
+    {"--density", nullptr, "KG_M3", Applies::Format, nullptr,
+     "MJCF body masses: the closed rest mesh's volume times KG_M3 (default 1000, water)",
+     [](V v, S* s) {
+       Result<double> d = parseNumber(v, "--density");
+       if (!d) return Status(d.error());
+       return s->request.density = *d, Status();
+     }},
+    {"--mjcf-joints", nullptr, "hinge|ball", Applies::Format, nullptr,
+     "MJCF joints below the root: three hinges <joint>_x/_y/_z (default) or one ball joint",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--mjcf-joints", {"hinge", "ball"});
+       if (!c) return Status(c.error());
+       return s->request.mjcf_joints = v, Status();
+     }},
+    {"--mjcf-motors", nullptr, nullptr, Applies::Format, nullptr,
+     "MJCF: a <motor> per hinge joint (ctrlrange -100..100 N m)",
+     [](V, S* s) { return s->request.mjcf_motors = true, Status(); }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content, not by name: AMASS, SMPLCodec .smpl, fits, AIST++, and "
@@ -563,9 +580,9 @@ std::string appliesRule(const OptionSpec& option) {
 std::string usageText() {
   std::string out =
       "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose\n"
-      "correctives, or a BVH skeleton and motion\n\n"
+      "correctives, a BVH skeleton and motion, or a MuJoCo (MJCF) model\n\n"
       "Usage: smpl-export --model PATH|builtin --out FILE" +
-      expand("{extensions|}") + " [options]\n" +
+      expand("{extensions|}") + "\n         [options]\n" +
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
   for (const OptionSpec& o : kOptions) {
     if (o.heading && *o.heading)

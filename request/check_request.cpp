@@ -49,6 +49,12 @@ Status checkRanges(const ExportRequest& r) {
                  std::to_string(r.fbx_compress_level) + "'");
   if (r.threads && (*r.threads < 1 || *r.threads > 1024))
     return usage("--threads: expected 1..1024, got '" + std::to_string(*r.threads) + "'");
+  if (!(r.density > 0 && r.density <= 1e5))
+    return usage("--density: expected kg/m^3 in (0, 100000], got '" + number(r.density) + "'");
+  if (r.mjcf_joints != "hinge" && r.mjcf_joints != "ball")
+    return usage("--mjcf-joints: expected 'hinge' or 'ball', got '" + r.mjcf_joints + "'");
+  if (r.mjcf_motors && r.mjcf_joints != "hinge")
+    return usage("--mjcf-motors drives hinge joints: it conflicts with --mjcf-joints ball");
   if (r.dmpl_count && *r.dmpl_count < 1)
     return usage("--dmpl-count: expected N >= 1, got '" + std::to_string(*r.dmpl_count) + "'");
   return Status();
@@ -205,6 +211,9 @@ Status checkRequest(const ExportRequest& r) {
   if (format->single_clip && r.motions.size() > 1)
     return usage("--motion: " + format->name + " output holds one motion; got " +
                  std::to_string(r.motions.size()) + " (one output per motion: --motion-dir)");
+  if (!format->animated && (!r.motions.empty() || !r.motion_dir.empty()))
+    return usage(std::string(r.motion_dir.empty() ? "--motion" : "--motion-dir") + ": " +
+                 format->name + " output holds no animation (the model only)");
   if (Status st = checkSceneOptions(r, *format); !st) return st;
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }

@@ -69,16 +69,19 @@ struct ExportRequest {
   bool in_place = false;      // --root-motion in-place
 
   // --- the writer (WriterOptions) ---
-  double corrective_epsilon = 0.0;  // --corrective-epsilon M: metres in [0, 0.01] (glTF)
-  bool quantize_morphs = false;     // --quantize-morphs (glTF int16 deltas)
-  bool draco = false;               // --draco (glTF)
-  bool meshopt = false;             // --meshopt (glTF): EXT_meshopt_compression
-  bool quantize_animation = false;  // --quantize-animation (glTF): normalised int16 keys
-  bool gltf_embed = false;          // --gltf-embed: .gltf buffer as a data URI (else FILE.bin)
-  std::string fbx_units = "m";      // --fbx-units m|cm
-  int fbx_version = 7400;           // --fbx-version 7400|7500
-  int fbx_compress_level = 1;       // --fbx-compress-level N: 0..12
-  std::string bvh_units = "m";      // --bvh-units m|cm
+  double corrective_epsilon = 0.0;    // --corrective-epsilon M: metres in [0, 0.01] (glTF)
+  bool quantize_morphs = false;       // --quantize-morphs (glTF int16 deltas)
+  bool draco = false;                 // --draco (glTF)
+  bool meshopt = false;               // --meshopt (glTF): EXT_meshopt_compression
+  bool quantize_animation = false;    // --quantize-animation (glTF): normalised int16 keys
+  bool gltf_embed = false;            // --gltf-embed: .gltf buffer as a data URI (else FILE.bin)
+  std::string fbx_units = "m";        // --fbx-units m|cm
+  int fbx_version = 7400;             // --fbx-version 7400|7500
+  int fbx_compress_level = 1;         // --fbx-compress-level N: 0..12
+  std::string bvh_units = "m";        // --bvh-units m|cm
+  double density = 1000.0;            // --density KG_M3: (0, 1e5] kg/m^3 (MJCF body masses)
+  std::string mjcf_joints = "hinge";  // --mjcf-joints hinge|ball
+  bool mjcf_motors = false;           // --mjcf-motors: a motor per hinge (MJCF)
 
   // --- the run ---
   std::string out;     // --out FILE: .glb, .gltf, .fbx or .bvh (batch: the job's output)

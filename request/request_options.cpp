@@ -50,6 +50,9 @@ WriterOptions writerOptionsOf(const ExportRequest& r, const std::string& buffer_
   w.meshopt = r.meshopt;
   w.quantize_animation = r.quantize_animation;
   w.bvh_units = r.bvh_units;
+  w.density = r.density;
+  w.mjcf_joints = r.mjcf_joints;
+  w.mjcf_motors = r.mjcf_motors;
   return w;
 }
 

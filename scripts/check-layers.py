@@ -23,10 +23,12 @@ ALLOWED = {
                      "core/models"],
     "core/demo": ["core", "core/math"],
     "exporter": ["core", "core/math", "core/io", "core/models", "core/motions"],
-    "writers": ["core", "core/math", "exporter", "writers/gltf", "writers/fbx", "writers/bvh"],
+    "writers": ["core", "core/math", "exporter", "writers/gltf", "writers/fbx", "writers/bvh",
+                "writers/mjcf"],
     "writers/gltf": ["core", "core/math", "exporter", "writers"],
     "writers/fbx": ["core", "core/math", "exporter", "writers"],
     "writers/bvh": ["core", "core/math", "exporter", "writers"],
+    "writers/mjcf": ["core", "core/math", "exporter", "writers"],
     # The export request, a top-level layer: above exporter/ and the writers (it
     # picks one), below the front ends (cli/, tools/) that fill it.
     "request": ["core", "core/math", "core/io", "core/io/pickle", "core/models", "core/motions", "core/demo",

@@ -29,7 +29,7 @@ build_pkgs=(cmake g++ make libeigen3-dev zlib1g-dev libtinygltf-dev nlohmann-jso
 test_pkgs=(libgtest-dev clang libclang-rt-14-dev python3-numpy python3-scipy python3-torch python3-joblib blender
            libassimp-dev mono-mcs ccache chromium clang-format zsh fish groff-base python3-pybind11
            python3-pytest python3-venv python3-pip python3-setuptools python3-wheel godot3-server
-           slurm-wlm munge)
+           slurm-wlm munge libmujoco-dev)
 windows_pkgs=(mingw-w64 libz-mingw-w64-dev dpkg-dev wine wine64 emscripten)
 
 pkgs=("${build_pkgs[@]}")

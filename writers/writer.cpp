@@ -7,6 +7,7 @@
 #include "writers/bvh/bvh_writer.h"
 #include "writers/fbx/fbx_writer.h"
 #include "writers/gltf/gltf_writer.h"
+#include "writers/mjcf/mjcf_writer.h"
 
 namespace smpl {
 namespace {
@@ -76,6 +77,15 @@ std::deque<WriterFormat>& table() {
          false,
          &bvhWriter(),
          /*single_clip=*/true},
+        {"mjcf",
+         {".xml"},
+         {"--density", "--mjcf-joints", "--mjcf-motors"},
+         /*needs_mesh=*/true,
+         true,
+         false,
+         &mjcfWriter(),
+         /*single_clip=*/false,
+         /*animated=*/false},
     };
   }();
   return rows;

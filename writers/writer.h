@@ -35,6 +35,11 @@ struct WriterOptions {
   // (u)int16 where they fit (core glTF 2.0; writers/gltf/gltf_writer.cpp)
   bool quantize_animation = false;
   std::string bvh_units = "m";  // BVH: "m" or "cm" (--bvh-units), offsets and positions
+  // MJCF (writers/mjcf/mjcf_writer.h): --density kg/m^3 in (0, 1e5], --mjcf-joints
+  // "hinge" (three per joint) or "ball", --mjcf-motors (a motor per hinge)
+  double density = 1000.0;
+  std::string mjcf_joints = "hinge";
+  bool mjcf_motors = false;
 };
 
 struct Writer {
@@ -101,9 +106,12 @@ struct WriterFormat {
   // true: the file holds one animation (BVH); the request refuses a second
   // --motion (request/check_request.cpp). Last: initialisers stay valid.
   bool single_clip = false;
+  // false: the file holds no animation (MJCF); the request refuses --motion
+  // and batch mode for it. Last, as above.
+  bool animated = true;
 };
 
-// Every row, in usage order (glb, gltf, fbx, bvh; test rows last). Rows stay where
+// Every row, in usage order (glb, gltf, fbx, bvh, mjcf; test rows last). Rows stay where
 // they are while the table grows (pointers to them remain valid).
 const std::deque<WriterFormat>& writerFormats();
 

@@ -44,7 +44,7 @@ TEST(CheckRequest, ValidRequestsPass) {
   EXPECT_TRUE(checkRequest(batch).ok());
   batch.format = "obj";
   EXPECT_EQ(checkRequest(batch).message(),
-            "--format: expected 'glb', 'gltf', 'fbx' or 'bvh', got 'obj'");
+            "--format: expected 'glb', 'gltf', 'fbx', 'bvh' or 'mjcf', got 'obj'");
   ExportRequest edges = valid();  // every range at its ends
   edges.fps = 1000;
   edges.source_fps = 1;
@@ -66,9 +66,10 @@ TEST(CheckRequest, EachRangeAndConflictHasItsMessage) {
   const Case cases[] = {
       {[](ExportRequest* r) { r->model.clear(); },
        "missing --model PATH (use --model builtin for the demo body)"},
-      {[](ExportRequest* r) { r->out.clear(); }, "missing --out FILE (.glb, .gltf, .fbx or .bvh)"},
+      {[](ExportRequest* r) { r->out.clear(); },
+       "missing --out FILE (.glb, .gltf, .fbx, .bvh or .xml)"},
       {[](ExportRequest* r) { r->out = "a.obj"; },
-       "--out a.obj: unknown format (expected .glb, .gltf, .fbx or .bvh)"},
+       "--out a.obj: unknown format (expected .glb, .gltf, .fbx, .bvh or .xml)"},
       {[](ExportRequest* r) {
          r->out = "a.bvh", r->motions = {"a.npz", "b.npz"};
        },

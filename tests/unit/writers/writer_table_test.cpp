@@ -91,13 +91,16 @@ void expectTheCommandLineFollows(const std::string& usage) {
   const size_t at = usage.find(format);
   ASSERT_NE(at, std::string::npos) << usage;
   EXPECT_TRUE(std::isspace(static_cast<unsigned char>(usage[at + format.size()]))) << usage;
-  EXPECT_NE(usage.find("--out FILE" + joined(extensions, "|") + " [options]"), std::string::npos);
+  EXPECT_NE(usage.find("--out FILE" + joined(extensions, "|") + "\n         [options]"),
+            std::string::npos);
   EXPECT_NE(flat(usage).find("(" + joined(extensions, ", ") + ")"), std::string::npos);
   for (const WriterFormat& row : writerFormats()) {
     Result<Settings> batch = parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o",
                                     "--format", row.name.c_str()});
     ASSERT_TRUE(batch.ok()) << row.name << ": " << batch.message();
-    EXPECT_TRUE(checkRequest(batch->request).ok()) << checkRequest(batch->request).message();
+    // A format that holds no animation (MJCF) refuses batch mode: its motions would be lost.
+    EXPECT_EQ(checkRequest(batch->request).ok(), row.animated)
+        << row.name << ": " << checkRequest(batch->request).message();
     for (const std::string& ext : row.extensions) {
       ExportRequest r;
       r.model = "builtin";
@@ -109,8 +112,10 @@ void expectTheCommandLineFollows(const std::string& usage) {
         ASSERT_NE(o, nullptr) << option;
         EXPECT_EQ(o->applies, Applies::Format) << option;
         std::vector<const char*> args = {"--model", "builtin", "--out", r.out.c_str(), o->name};
-        const std::map<std::string, const char*> values = {
-            {"--fbx-units", "cm"}, {"--fbx-version", "7500"}, {"--bvh-units", "cm"}};
+        const std::map<std::string, const char*> values = {{"--fbx-units", "cm"},
+                                                           {"--fbx-version", "7500"},
+                                                           {"--bvh-units", "cm"},
+                                                           {"--mjcf-joints", "ball"}};
         if (o->value) args.push_back(values.count(option) ? values.at(option) : "1");
         Result<Settings> s = parse(args);
         EXPECT_TRUE(s.ok()) << option << " on " << ext << ": " << s.message();
@@ -125,8 +130,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
 }
 
 TEST(WriterTable, CommandLineFollowsTheTable) {
-  ASSERT_EQ(writerFormats().size(), 4u);
-  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx or .bvh");
+  ASSERT_EQ(writerFormats().size(), 5u);
+  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx, .bvh or .xml");
   expectTheCommandLineFollows(usageText());
   EXPECT_EQ(writerForPath("x.FBX"), writerFormatByName("fbx")->writer);
 }
@@ -135,8 +140,9 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
   {
     ScopedWriterFormat skel(skeletonRow());
     const std::string usage = usageText();
-    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|skel"), std::string::npos) << usage;
-    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .skel)"), std::string::npos) << usage;
+    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|mjcf|skel"), std::string::npos) << usage;
+    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .xml, .skel)"), std::string::npos)
+        << usage;
     expectTheCommandLineFollows(usage);
     // the glTF/FBX-only options do not apply to it
     Result<Settings> draco = parse({"--model", "builtin", "--out", "a.skel", "--draco"});
@@ -147,7 +153,7 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
       parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--format", "skel"});
   ASSERT_TRUE(gone.ok()) << gone.message();  // the parser stores it; the request checks it
   EXPECT_EQ(checkRequest(gone->request).message(),
-            "--format: expected 'glb', 'gltf', 'fbx' or 'bvh', got 'skel'");
+            "--format: expected 'glb', 'gltf', 'fbx', 'bvh' or 'mjcf', got 'skel'");
   EXPECT_EQ(writerFormatForPath("a.skel"), nullptr);
 }
 
