@@ -83,7 +83,7 @@ ExportRequest jobRequest(const ExportRequest& base, const PlannedOutput& p, bool
   job.motions = {p.motion};
   job.producer_hash = p.producer_hash;
   job.clean_temporaries = false;
-  if (one_thread) job.threads = 1;
+  if (one_thread) job.writer.threads = 1;
   return job;
 }
 
@@ -99,8 +99,9 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   const std::vector<PlannedOutput>& motions = plan.outputs;
   std::vector<ManifestEntry> manifest(motions.size());
   const bool record = !s.request.manifest.empty();
-  const unsigned threads =
-      s.request.threads ? static_cast<unsigned>(*s.request.threads) : hardwareThreads();
+  const unsigned threads = s.request.writer.threads
+                               ? static_cast<unsigned>(*s.request.writer.threads)
+                               : hardwareThreads();
   const size_t workers = std::min<size_t>(threads, std::max<size_t>(1, motions.size()));
   // Files in parallel, or one file's FBX arrays in parallel, never both:
   // `workers` jobs each compressing on `threads` cores would run threads^2.

@@ -64,7 +64,8 @@ int runBatchMode(const Settings& s, ModelSource* models, Stage* stage) {
   Result<RunInputs> inputs = loadRunInputs(s.request, models);
   if (!inputs) return report(inputs.message(), exitCodeFor(inputs.kind()));
   // The motions of one subject fit once: one subject per worker in flight, and the next.
-  const unsigned workers = s.request.threads ? unsigned(*s.request.threads) : hardwareThreads();
+  const unsigned workers =
+      s.request.writer.threads ? unsigned(*s.request.writer.threads) : hardwareThreads();
   inputs->skins = std::make_shared<SkinCache>(std::max(2u, workers + 1));
   if (!inputs->betas_note.empty() && !s.quiet)
     std::fprintf(stderr, "note: %s\n", inputs->betas_note.c_str());

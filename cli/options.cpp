@@ -82,12 +82,12 @@ Status parseFrames(const std::string& value, ExportRequest* r) {
   if (!first.empty()) {
     Result<int> v = parseInt(first, "--frames");
     if (!v) return usageError("--frames: bad start '" + first + "'");
-    r->first_frame = *v;
+    r->animation.first_frame = *v;
   }
   if (!end.empty()) {
     Result<int> v = parseInt(end, "--frames");
     if (!v) return usageError("--frames: bad end '" + end + "'");
-    r->end_frame = *v;
+    r->animation.end_frame = *v;
   }
   return Status();
 }
@@ -139,7 +139,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<std::vector<double>> list = parseList(v, "--betas");
        if (!list) return Status(list.error());
-       return s->request.betas = *list, Status();
+       return s->request.asset.betas = *list, Status();
      }},
     {"--betas-file", nullptr, "FILE", Applies::Any, nullptr,
      "betas from .npy, .npz (key 'betas') or .json; per-frame (T,B) betas: identical rows -> that "
@@ -149,7 +149,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<std::vector<double>> list = parseList(v, "--expression");
        if (!list) return Status(list.error());
-       return s->request.expression = *list, Status();
+       return s->request.asset.expression = *list, Status();
      }},
     {"--max-influences", nullptr, "N|all", Applies::Mesh, nullptr,
      "skin influences per vertex, 1..K (the model's joints) or all (default 4); glTF writes "
@@ -157,9 +157,15 @@ const std::vector<OptionSpec> kOptions = {
      "JOINTS_n/WEIGHTS_n sets (engines that read one set: keep 4), FBX has no limit; all: as many "
      "as "
      "the model's vertices use",
-     [](V v, S* s) {
-       if (v == "all") return s->request.all_influences = true, Status();
-       return intInto(v, "--max-influences", &s->request.max_influences);
+     [](V v, S* s) -> Status {
+       if (v == "all") return s->request.asset.max_influences = kAllInfluences, Status();
+       Result<int> n = parseInt(v, "--max-influences");
+       if (!n) return n.error();
+       // kAllInfluences is 0: a count below 1 is refused here, never read as "all"
+       if (*n < 1)
+         return usageError(
+             "--max-influences must be between 1 and the model's joints or 'all', got " + v);
+       return s->request.asset.max_influences = *n, Status();
      }},
     {"--skin-weights", nullptr, "truncated|optimized", Applies::Mesh, nullptr,
      "truncated: the N largest weights, renormalised; optimized (default): the best-fitting N "
@@ -168,7 +174,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--skin-weights", {"truncated", "optimized"});
        if (!c) return Status(c.error());
-       return s->request.skin_weights =
+       return s->request.asset.skin_weights =
                   *c == 0 ? SkinWeightMethod::Truncated : SkinWeightMethod::Optimized,
               Status();
      }},
@@ -180,14 +186,14 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--corrective-refit", {"on", "off"});
        if (!c) return Status(c.error());
-       return s->request.corrective_refit = *c == 0, Status();
+       return s->request.asset.corrective_refit = *c == 0, Status();
      }},
     {"--correctives", nullptr, "all|none", Applies::Mesh, nullptr,
      "pose-corrective morph targets (default all)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--correctives", {"all", "none"});
        if (!c) return Status(c.error());
-       return s->request.correctives = *c == 0, Status();
+       return s->request.asset.correctives = *c == 0, Status();
      }},
     {"--corrective-weights", nullptr, "signed|unit|split", Applies::Mesh, nullptr,
      "signed: weight = pose feature f, in [-2, 1] (default without --motion);\n"
@@ -203,34 +209,36 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        const CorrectiveEncoding e[] = {CorrectiveEncoding::Signed, CorrectiveEncoding::Unit,
                                        CorrectiveEncoding::Split};
-       return s->request.encoding = e[*c], Status();
+       return s->request.asset.encoding = e[*c], Status();
      }},
     {"--corrective-basis", nullptr, "K", Applies::Mesh, nullptr,
      "replace the corrective targets by K principal components of posedirs (weights = C f; C in "
      "the "
      "metadata; runtime scripts apply it)",
-     [](V v, S* s) { return intInto(v, "--corrective-basis", &s->request.corrective_basis); }},
+     [](V v, S* s) {
+       return intInto(v, "--corrective-basis", &s->request.asset.corrective_basis);
+     }},
     {"--corrective-epsilon", nullptr, "M", Applies::Format, nullptr,
      "glTF: drop morph deltas up to M metres, write sparse accessors",
      [](V v, S* s) {
        Result<double> m = parseNumber(v, "--corrective-epsilon");
        if (!m) return Status(m.error());
-       return s->request.corrective_epsilon = *m, Status();
+       return s->request.writer.morph_epsilon = *m, Status();
      }},
     {"--quantize-morphs", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: int16 morph deltas (KHR_mesh_quantization)",
-     [](V, S* s) { return s->request.quantize_morphs = true, Status(); }},
+     [](V, S* s) { return s->request.asset.quantize_morphs = true, Status(); }},
     {"--draco", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: Draco-compress the base mesh (KHR_draco_mesh_compression)",
-     [](V, S* s) { return s->request.draco = true, Status(); }},
+     [](V, S* s) { return s->request.writer.draco = true, Status(); }},
     {"--meshopt", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: meshopt-compress vertex, index, morph-target and animation data "
      "(EXT_meshopt_compression; three.js, Babylon.js and glTFast decode it)",
-     [](V, S* s) { return s->request.meshopt = true, Status(); }},
+     [](V, S* s) { return s->request.writer.meshopt = true, Status(); }},
     {"--quantize-animation", nullptr, nullptr, Applies::Format, nullptr,
      "glTF: rotation keys as normalised int16, morph weight keys as normalised 16-bit integers "
      "where they fit (core glTF 2.0, no extension); needs a motion",
-     [](V, S* s) { return s->request.quantize_animation = true, Status(); }},
+     [](V, S* s) { return s->request.writer.quantize_animation = true, Status(); }},
     {"--preset", nullptr, "web|engine|archive", Applies::Any, nullptr,
      "a bundle of the size options; options given explicitly override it, and each applies only "
      "where it can (the glTF-only ones to glTF, --quantize-animation with a motion); their "
@@ -244,17 +252,17 @@ const std::vector<OptionSpec> kOptions = {
      [](V, S* s) { return s->request.gltf_embed = true, Status(); }},
     {"--shape-keys", nullptr, "N", Applies::Mesh, nullptr,
      "also export the first N shape directions as morph targets shape_<i>",
-     [](V v, S* s) { return intInto(v, "--shape-keys", &s->request.shape_keys); }},
+     [](V v, S* s) { return intInto(v, "--shape-keys", &s->request.asset.shape_keys); }},
     {"--expression-keys", nullptr, "N", Applies::Mesh, nullptr,
      "also export the first N expression directions (SMPL-X) as expr_<i>",
-     [](V v, S* s) { return intInto(v, "--expression-keys", &s->request.expression_keys); }},
+     [](V v, S* s) { return intInto(v, "--expression-keys", &s->request.asset.expression_keys); }},
     {"--uv", nullptr, "OBJ|NPY|none", Applies::Mesh, nullptr,
      "UVs (seams split vertices). Default: the model file's own vt/ft if it has them (SMPL-X "
      "release). OBJ sharing the model's vertex order, or a numpy pair <stem>_uv.npy (U,2) + "
      "<stem>_ft.npy (F,3) (give either); none: no UVs",
-     [](V v, S* s) { return s->request.uv = v, Status(); }, Hashed::Content},
+     [](V v, S* s) { return s->request.asset.uv_obj = v, Status(); }, Hashed::Content},
     {"--name", nullptr, "NAME", Applies::Mesh, nullptr, "mesh name (default body)",
-     [](V v, S* s) { return s->request.name = v, Status(); }},
+     [](V v, S* s) { return s->request.asset.name = v, Status(); }},
     {"--origin", nullptr, "model|floor", Applies::Any, nullptr,
      "model: the model's own origin (default; the pelvis near y = 0, the feet below); floor: one "
      "shift in y puts the body's lowest point at y = 0 (the rest mesh, or with --motion the lowest "
@@ -262,13 +270,13 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--origin", {"model", "floor"});
        if (!c) return Status(c.error());
-       return s->request.origin = *c == 0 ? Origin::Model : Origin::Floor, Status();
+       return s->request.asset.origin = *c == 0 ? Origin::Model : Origin::Floor, Status();
      }},
     {"--root-bone", nullptr, nullptr, Applies::Any, nullptr,
      "add a joint `root` on the floor below the pelvis (parent of pelvis; implies --origin floor); "
      "with --motion it carries the pelvis' ground-plane motion (root motion), the pelvis keeps "
      "its height and rotation",
-     [](V, S* s) { return s->request.root_bone = true, Status(); }},
+     [](V, S* s) { return s->request.asset.root_bone = true, Status(); }},
     {"--dmpl", nullptr, "FILE|DIR", Applies::Mesh, nullptr,
      "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
@@ -291,43 +299,45 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-units", {"m", "cm"});
        if (!c) return Status(c.error());
-       return s->request.fbx_units = v, Status();
+       return s->request.writer.fbx_units = v, Status();
      }},
     {"--fbx-version", nullptr, "7400|7500", Applies::Format, nullptr,
      "FBX binary version (default 7400)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--fbx-version", {"7400", "7500"});
        if (!c) return Status(c.error());
-       return s->request.fbx_version = *c == 0 ? 7400 : 7500, Status();
+       return s->request.writer.fbx_version = *c == 0 ? 7400 : 7500, Status();
      }},
     {"--fbx-compress-level", nullptr, "N", Applies::Format, nullptr,
      "array compression, as the FBX SDK's EXP_FBX_COMPRESS_LEVEL: 0 = stored uncompressed "
      "(fastest to write and read, largest), 1..12 = deflate level (default 1)",
-     [](V v, S* s) { return intInto(v, "--fbx-compress-level", &s->request.fbx_compress_level); }},
+     [](V v, S* s) {
+       return intInto(v, "--fbx-compress-level", &s->request.writer.fbx_compress_level);
+     }},
     {"--bvh-units", nullptr, "m|cm", Applies::Format, nullptr,
      "BVH offsets and positions in metres (default) or centimetres",
      [](V v, S* s) {
        Result<int> c = choice(v, "--bvh-units", {"m", "cm"});
        if (!c) return Status(c.error());
-       return s->request.bvh_units = v, Status();
+       return s->request.writer.bvh_units = v, Status();
      }},
     {"--density", nullptr, "KG_M3", Applies::Format, nullptr,
      "MJCF body masses: the closed rest mesh's volume times KG_M3 (default 1000, water)",
      [](V v, S* s) {
        Result<double> d = parseNumber(v, "--density");
        if (!d) return Status(d.error());
-       return s->request.density = *d, Status();
+       return s->request.writer.density = *d, Status();
      }},
     {"--mjcf-joints", nullptr, "hinge|ball", Applies::Format, nullptr,
      "MJCF joints below the root: three hinges <joint>_x/_y/_z (default) or one ball joint",
      [](V v, S* s) {
        Result<int> c = choice(v, "--mjcf-joints", {"hinge", "ball"});
        if (!c) return Status(c.error());
-       return s->request.mjcf_joints = v, Status();
+       return s->request.writer.mjcf_joints = v, Status();
      }},
     {"--mjcf-motors", nullptr, nullptr, Applies::Format, nullptr,
      "MJCF: a <motor> per hinge joint (ctrlrange -100..100 N m)",
-     [](V, S* s) { return s->request.mjcf_motors = true, Status(); }},
+     [](V, S* s) { return s->request.writer.mjcf_motors = true, Status(); }},
 
     {"--motion", nullptr, "FILE", Applies::Single,
      "Animation (recognised by content, not by name: AMASS, SMPLCodec .smpl, fits, AIST++, and "
@@ -347,14 +357,14 @@ const std::vector<OptionSpec> kOptions = {
      "folders of per-frame files (--motion-sequence, --hands DIR): skip an entry named like a "
      "frame that is no readable file (a folder, FIFO, device, link loop) or whose number has "
      "more than 12 digits, with a note naming it (default: an error naming it)",
-     [](V, S* s) { return s->request.skip_bad_frames = true, Status(); }},
+     [](V, S* s) { return s->request.reading.skip_bad_frames = true, Status(); }},
     {"--max-held-frames", nullptr, "N", Applies::Motion, nullptr,
      "folders of per-frame files: at most N copies of a frame fill a gap between two frame "
      "numbers (default 1000, at most 100000); a wider gap is an error naming its frames",
      [](V v, S* s) {
        Result<int64_t> n = parseInteger(v, 0, kMaxHeldFramesLimit);
        if (!n) return Status(usageError("--max-held-frames: " + n.message()));
-       return s->request.max_held_frames = *n, Status();
+       return s->request.reading.max_held_frames = *n, Status();
      }},
     {"--track", nullptr, "ID|longest|all", Applies::Motion, nullptr,
      "multi-person files: the person to bake (default longest: most detections, ties to the "
@@ -375,13 +385,13 @@ const std::vector<OptionSpec> kOptions = {
      [](V v, S* s) {
        Result<int> c = choice(v, "--source-params", {"global", "incam"});
        if (!c) return Status(c.error());
-       s->request.source_params = *c == 0 ? SourceParams::Global : SourceParams::Incam;
+       s->request.reading.source_params = *c == 0 ? SourceParams::Global : SourceParams::Incam;
        return Status();
      }},
     {"--source-fps", nullptr, "R", Applies::Motion, nullptr,
      "the motion's frame rate: overrides a stored one; without it a file that stores none is read "
      "at 30 fps (AIST++: 60) and a note says so",
-     [](V v, S* s) { return numberInto(v, "--source-fps", &s->request.source_fps); }},
+     [](V v, S* s) { return numberInto(v, "--source-fps", &s->request.reading.source_fps); }},
     {"--flat-hand-mean", nullptr, nullptr, Applies::Motion, nullptr,
      "fit hand poses (PCA or 45-d axis-angle) are relative to the flat hand: the model's "
      "hands_mean "
@@ -398,7 +408,7 @@ const std::vector<OptionSpec> kOptions = {
      [](V, S* s) { return s->request.hands_wrist = true, Status(); }},
     {"--fps", nullptr, "F", Applies::Motion, nullptr,
      "resample to F frames per second (slerp/lerp; default: the motion's rate)",
-     [](V v, S* s) { return numberInto(v, "--fps", &s->request.fps); }},
+     [](V v, S* s) { return numberInto(v, "--fps", &s->request.animation.fps); }},
     {"--frames", nullptr, "A:B", Applies::Motion, nullptr,
      "bake source frames A (inclusive) to B (exclusive), counted in the motion file before any "
      "resampling; either may be empty (0:300 = the first 300 frames, 100: = from frame 100 on). "
@@ -416,14 +426,14 @@ const std::vector<OptionSpec> kOptions = {
        Result<int> c = choice(v, "--up", {"y", "z", "-y"});
        if (!c) return Status(c.error());
        const UpAxis axes[] = {UpAxis::Y, UpAxis::Z, UpAxis::NegY};
-       return s->request.up = axes[*c], Status();
+       return s->request.animation.up = axes[*c], Status();
      }},
     {"--root-motion", nullptr, "keep|in-place", Applies::Motion, nullptr,
      "keep or drop horizontal root motion (default keep)",
      [](V v, S* s) {
        Result<int> c = choice(v, "--root-motion", {"keep", "in-place"});
        if (!c) return Status(c.error());
-       return s->request.in_place = *c == 1, Status();
+       return s->request.animation.in_place = *c == 1, Status();
      }},
 
     {"--motion-dir", nullptr, "DIR", Applies::Batch, "Batch mode (--motion-dir DIR --out-dir DIR):",
@@ -445,7 +455,7 @@ const std::vector<OptionSpec> kOptions = {
     {"--threads", nullptr, "N", Applies::Any, nullptr,
      "worker threads: batch files converted at once (each compressing on one), or the FBX arrays "
      "of a single file compressed at once (default: all cores; the output does not depend on it)",
-     [](V v, S* s) { return numberInto(v, "--threads", &s->request.threads); }, Hashed::No},
+     [](V v, S* s) { return numberInto(v, "--threads", &s->request.writer.threads); }, Hashed::No},
     {"--shard", nullptr, "I/N", Applies::Batch, nullptr,
      "convert only share I of N (0 <= I < N): the motions sorted by path relative to DIR, the one "
      "at position p belongs to shard p mod N",

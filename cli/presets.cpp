@@ -27,7 +27,7 @@ bool applies(const Settings& s, const std::string& option) {
   const bool animated = !s.request.motions.empty() || isBatch(s);
   if (option == "--quantize-animation") return animated;
   if (option == "--quantize-morphs" || option == "--corrective-epsilon")
-    return s.request.correctives;
+    return s.request.asset.correctives;
   return true;
 }
 

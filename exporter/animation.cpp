@@ -227,7 +227,7 @@ Result<AnimationClip> bakeAnimation(const BodyModel& model, const Asset& asset,
   if (Status s = checkFrames(motion, o, context, &end); !s) return s.error();
   Result<MotionMapping> mapping = mapMotion(model, motion, context);
   if (!mapping) return mapping.error();
-  const double fps = o.fps > 0 ? o.fps : motion.fps;
+  const double fps = o.fps ? *o.fps : motion.fps;
   AnimationClip clip;
   if (Status st = chargeSamples(o.first_frame, end, motion.fps, fps, model.numJoints(),
                                 static_cast<Eigen::Index>(asset.mesh.morph_targets.size()), context,

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,9 +35,9 @@ Eigen::Matrix3d worldTurn(UpAxis up, MotionWorld world);
 // they are preconditions: fps >= 0, and a frame range outside a motion is
 // that motion's export error.
 struct AnimationOptions {
-  double fps = 0.0;     // output rate (fps); 0 keeps the motion's rate
-  int first_frame = 0;  // --frames A:B, source frames, B exclusive
-  int end_frame = -1;   // -1: to the end
+  std::optional<double> fps;  // output rate (fps); none keeps the motion's rate
+  int first_frame = 0;        // --frames A:B, source frames, B exclusive
+  int end_frame = -1;         // -1: to the end
   UpAxis up = UpAxis::Auto;
   bool in_place = false;  // --root-motion in-place: drop horizontal root motion
 };

@@ -5,6 +5,7 @@
 // what only needs the options (the request, the skin) does not include it.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -72,8 +73,10 @@ struct ExportOptions {
   // false: a skeleton-only asset (the writer has no mesh, writers/writer.h):
   // no UVs, no skin (nothing fitted), no morph targets.
   bool mesh = true;
-  Origin origin = Origin::Model;  // --origin (exportAsset applies it after baking)
-  bool root_bone = false;         // --root-bone: a `root` joint (placement.h); implies Floor
+  // --origin (exportAsset applies it after baking); none: Model, or Floor
+  // with root_bone (a root joint stands on the floor)
+  std::optional<Origin> origin;
+  bool root_bone = false;  // --root-bone: a `root` joint (placement.h); implies Floor
 };
 
 // Whether an export with `o` refits its correctives: corrective_refit, with

@@ -27,33 +27,36 @@ Status checkRate(const std::optional<double>& v, const char* option, double lo, 
 
 // Values that need no model: each option's own range.
 Status checkRanges(const ExportRequest& r) {
-  if (Status st = checkCoefficients(r.betas, "--betas", "value"); !st) return usage(st.message());
-  if (Status st = checkCoefficients(r.expression, "--expression", "value"); !st)
+  if (Status st = checkCoefficients(r.asset.betas, "--betas", "value"); !st)
     return usage(st.message());
-  if (Status st = checkRate(r.source_fps, "--source-fps", 1, 1000, false); !st) return st;
-  if (Status st = checkRate(r.fps, "--fps", 0, 1000, true); !st) return st;
-  if (r.max_held_frames < 0 || r.max_held_frames > kMaxHeldFramesLimit)
+  if (Status st = checkCoefficients(r.asset.expression, "--expression", "value"); !st)
+    return usage(st.message());
+  if (Status st = checkRate(r.reading.source_fps, "--source-fps", 1, 1000, false); !st) return st;
+  if (Status st = checkRate(r.animation.fps, "--fps", 0, 1000, true); !st) return st;
+  if (r.reading.max_held_frames < 0 || r.reading.max_held_frames > kMaxHeldFramesLimit)
     return usage("--max-held-frames: expected 0.." + std::to_string(kMaxHeldFramesLimit) +
                  " (held copies of a frame per gap; more is a lost folder, not a pause), got '" +
-                 std::to_string(r.max_held_frames) + "'");
-  if (r.first_frame < 0)
-    return usage("--frames: bad start '" + std::to_string(r.first_frame) + "'");
-  if (r.end_frame >= 0 && r.end_frame <= r.first_frame)
-    return usage("--frames: end must be after start in '" + std::to_string(r.first_frame) + ":" +
-                 std::to_string(r.end_frame) + "'");
-  if (!(r.corrective_epsilon >= 0 && r.corrective_epsilon <= 0.01))
+                 std::to_string(r.reading.max_held_frames) + "'");
+  if (r.animation.first_frame < 0)
+    return usage("--frames: bad start '" + std::to_string(r.animation.first_frame) + "'");
+  if (r.animation.end_frame >= 0 && r.animation.end_frame <= r.animation.first_frame)
+    return usage("--frames: end must be after start in '" +
+                 std::to_string(r.animation.first_frame) + ":" +
+                 std::to_string(r.animation.end_frame) + "'");
+  if (!(r.writer.morph_epsilon >= 0 && r.writer.morph_epsilon <= 0.01))
     return usage("--corrective-epsilon: expected metres in [0, 0.01], got '" +
-                 number(r.corrective_epsilon) + "'");
-  if (r.fbx_compress_level < 0 || r.fbx_compress_level > 12)
+                 number(r.writer.morph_epsilon) + "'");
+  if (r.writer.fbx_compress_level < 0 || r.writer.fbx_compress_level > 12)
     return usage("--fbx-compress-level: expected 0..12, got '" +
-                 std::to_string(r.fbx_compress_level) + "'");
-  if (r.threads && (*r.threads < 1 || *r.threads > 1024))
-    return usage("--threads: expected 1..1024, got '" + std::to_string(*r.threads) + "'");
-  if (!(r.density > 0 && r.density <= 1e5))
-    return usage("--density: expected kg/m^3 in (0, 100000], got '" + number(r.density) + "'");
-  if (r.mjcf_joints != "hinge" && r.mjcf_joints != "ball")
-    return usage("--mjcf-joints: expected 'hinge' or 'ball', got '" + r.mjcf_joints + "'");
-  if (r.mjcf_motors && r.mjcf_joints != "hinge")
+                 std::to_string(r.writer.fbx_compress_level) + "'");
+  if (r.writer.threads && (*r.writer.threads < 1 || *r.writer.threads > 1024))
+    return usage("--threads: expected 1..1024, got '" + std::to_string(*r.writer.threads) + "'");
+  if (!(r.writer.density > 0 && r.writer.density <= 1e5))
+    return usage("--density: expected kg/m^3 in (0, 100000], got '" + number(r.writer.density) +
+                 "'");
+  if (r.writer.mjcf_joints != "hinge" && r.writer.mjcf_joints != "ball")
+    return usage("--mjcf-joints: expected 'hinge' or 'ball', got '" + r.writer.mjcf_joints + "'");
+  if (r.writer.mjcf_motors && r.writer.mjcf_joints != "hinge")
     return usage("--mjcf-motors drives hinge joints: it conflicts with --mjcf-joints ball");
   if (r.dmpl_count && *r.dmpl_count < 1)
     return usage("--dmpl-count: expected N >= 1, got '" + std::to_string(*r.dmpl_count) + "'");
@@ -62,23 +65,24 @@ Status checkRanges(const ExportRequest& r) {
 
 // Size options that would otherwise be silently ignored together.
 Status checkMorphOptions(const ExportRequest& r) {
-  if (r.corrective_basis > 0 && !r.correctives)
+  if (r.asset.corrective_basis > 0 && !r.asset.correctives)
     return usage("--corrective-basis conflicts with --correctives none");
-  if (r.encoding != CorrectiveEncoding::Auto && !r.correctives)
+  if (r.asset.encoding != CorrectiveEncoding::Auto && !r.asset.correctives)
     return usage(
         "--corrective-weights conflicts with --correctives none (no corrective targets to encode)");
-  if (r.quantize_morphs && !r.correctives)
+  if (r.asset.quantize_morphs && !r.asset.correctives)
     return usage(
         "--quantize-morphs quantizes corrective targets; with --correctives none there are none");
-  if (r.corrective_epsilon > 0 && !r.correctives && r.shape_keys == 0 && r.expression_keys == 0)
+  if (r.writer.morph_epsilon > 0 && !r.asset.correctives && r.asset.shape_keys == 0 &&
+      r.asset.expression_keys == 0)
     return usage(
         "--corrective-epsilon thins morph targets; with --correctives none and no --shape-keys/"
         "--expression-keys there are none");
-  if (r.quantize_animation && r.motions.empty() && r.motion_dir.empty())
+  if (r.writer.quantize_animation && r.motions.empty() && r.motion_dir.empty())
     return usage(
         "--quantize-animation quantises animation keys; without --motion or --motion-dir there are "
         "none");
-  if (r.corrective_basis > 0 && r.encoding == CorrectiveEncoding::Split)
+  if (r.asset.corrective_basis > 0 && r.asset.encoding == CorrectiveEncoding::Split)
     return usage(
         "--corrective-basis conflicts with --corrective-weights split (basis weights are signed or "
         "unit)");
@@ -103,9 +107,9 @@ Status checkHandOptions(const ExportRequest& r) {
 
 Status checkConflicts(const ExportRequest& r) {
   if (r.model.empty()) return usage("missing --model PATH (use --model builtin for the demo body)");
-  if (!r.betas.empty() && !r.betas_file.empty())
+  if (!r.asset.betas.empty() && !r.betas_file.empty())
     return usage("--betas and --betas-file conflict: give one");
-  if (r.betas_from_motion && (!r.betas.empty() || !r.betas_file.empty()))
+  if (r.betas_from_motion && (!r.asset.betas.empty() || !r.betas_file.empty()))
     return usage("--betas-from-motion conflicts with --betas/--betas-file");
   if (r.dmpl_count && r.dmpl.empty()) return usage("--dmpl-count needs --dmpl");
   if (r.dmpl_regressed_joints && r.dmpl.empty()) return usage("--dmpl-joints needs --dmpl");
@@ -116,7 +120,7 @@ Status checkConflicts(const ExportRequest& r) {
   if (r.track.kind == TrackChoice::Kind::All && r.motions.size() != 1)
     return usage(
         "--track all writes one output per person: give one --motion or --motion-sequence");
-  if (r.root_bone && r.origin == Origin::Model)
+  if (r.asset.root_bone && r.asset.origin == Origin::Model)
     return usage(
         "--root-bone conflicts with --origin model (the root bone stands on the floor: it implies "
         "--origin floor)");
@@ -128,13 +132,13 @@ Status checkConflicts(const ExportRequest& r) {
 
 // A format without a mesh (writer.h needs_mesh false) refuses what only a mesh has.
 Status checkMeshOptions(const ExportRequest& r, const WriterFormat& format) {
-  const char* option = !r.dmpl.empty()          ? "--dmpl"
-                       : r.shape_keys > 0       ? "--shape-keys"
-                       : r.expression_keys > 0  ? "--expression-keys"
-                       : !r.uv.empty()          ? "--uv"
-                       : r.corrective_basis > 0 ? "--corrective-basis"
-                       : r.quantize_morphs      ? "--quantize-morphs"
-                                                : nullptr;
+  const char* option = !r.dmpl.empty()                ? "--dmpl"
+                       : r.asset.shape_keys > 0       ? "--shape-keys"
+                       : r.asset.expression_keys > 0  ? "--expression-keys"
+                       : !r.asset.uv_obj.empty()      ? "--uv"
+                       : r.asset.corrective_basis > 0 ? "--corrective-basis"
+                       : r.asset.quantize_morphs      ? "--quantize-morphs"
+                                                      : nullptr;
   if (!option) return Status();
   return usage(std::string(option) + " needs an output format with a mesh; " + format.name +
                " output has none");
@@ -166,13 +170,13 @@ Status checkSceneOptions(const ExportRequest& r, const WriterFormat& format) {
     return usage(
         "--scene writes every track into one file; --track all writes one file per track: give "
         "one or the other");
-  if (r.first_frame != 0 || r.end_frame >= 0)
+  if (r.animation.first_frame != 0 || r.animation.end_frame >= 0)
     return usage("--scene exports the file's whole timeline: --frames is not supported with it");
-  if (r.root_bone || r.origin == Origin::Floor)
+  if (r.asset.root_bone || r.asset.origin == Origin::Floor)
     return usage(
         "--scene keeps every body in the file's world: --origin floor and --root-bone (which "
         "raise each body by its own rest height) are not supported with it");
-  if (r.in_place)
+  if (r.animation.in_place)
     return usage(
         "--scene keeps every body in the file's world: --root-motion in-place is not supported "
         "with it");
@@ -200,11 +204,11 @@ Status checkRequest(const ExportRequest& r) {
   }
   if (!format)
     return usage("--out " + r.out + ": unknown format (expected " + writerExtensionList() + ")");
-  if (r.draco && !dracoAvailable())
+  if (r.writer.draco && !dracoAvailable())
     return usage(
         "--draco: this smpl-export was built without Draco (the Windows and WebAssembly builds: "
         "Debian ships no Draco for them); use --meshopt, or a Linux build");
-  if (r.meshopt && !meshoptAvailable())
+  if (r.writer.meshopt && !meshoptAvailable())
     return usage(
         "--meshopt: this smpl-export was built without meshoptimizer (the static build: "
         "Debian ships no static libmeshoptimizer); use the Debian package build");
@@ -223,24 +227,27 @@ Status checkRequestForModel(const ExportRequest& r, const std::vector<double>& b
   if (static_cast<int>(betas.size()) > model.numBetas())
     return usage("betas: " + std::to_string(betas.size()) + " values given; the model " +
                  model.name + " has " + std::to_string(model.numBetas()));
-  if (static_cast<int>(r.expression.size()) > model.numExpressions())
-    return usage("expression: " + std::to_string(r.expression.size()) +
+  if (static_cast<int>(r.asset.expression.size()) > model.numExpressions())
+    return usage("expression: " + std::to_string(r.asset.expression.size()) +
                  " values given; the model " + model.name + " has " +
                  std::to_string(model.numExpressions()));
-  if (!r.all_influences && (r.max_influences < 1 || r.max_influences > model.numJoints()))
+  if (r.asset.max_influences != kAllInfluences &&
+      (r.asset.max_influences < 1 || r.asset.max_influences > model.numJoints()))
     return usage("--max-influences must be between 1 and " + std::to_string(model.numJoints()) +
-                 " (the model's joints) or 'all', got " + std::to_string(r.max_influences));
-  if (Status st = checkCount(r.shape_keys, model.numBetas(), "--shape-keys", "shape directions");
+                 " (the model's joints) or 'all', got " + std::to_string(r.asset.max_influences));
+  if (Status st =
+          checkCount(r.asset.shape_keys, model.numBetas(), "--shape-keys", "shape directions");
       !st)
     return st;
-  if (Status st = checkCount(r.expression_keys, model.numExpressions(), "--expression-keys",
+  if (Status st = checkCount(r.asset.expression_keys, model.numExpressions(), "--expression-keys",
                              "expression directions");
       !st)
     return st;
   const int p = model.numPoseFeatures();
-  if (r.corrective_basis < 0 || r.corrective_basis > p)
-    return usage("--corrective-basis " + std::to_string(r.corrective_basis) + ": expected 1.." +
-                 std::to_string(p) + " (the model has " + std::to_string(p) + " pose correctives)");
+  if (r.asset.corrective_basis < 0 || r.asset.corrective_basis > p)
+    return usage("--corrective-basis " + std::to_string(r.asset.corrective_basis) +
+                 ": expected 1.." + std::to_string(p) + " (the model has " + std::to_string(p) +
+                 " pose correctives)");
   return Status();
 }
 

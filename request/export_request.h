@@ -20,6 +20,7 @@
 #include "exporter/animation.h"
 #include "exporter/export_options.h"
 #include "exporter/pruning_error.h"
+#include "writers/writer.h"
 
 namespace smpl {
 
@@ -30,66 +31,55 @@ struct ExportRequest {
                                      // --motion-sequence DIR is one of them too
   std::string motion_sequence;  // --motion-sequence DIR: per-frame files joined (motion_sequence.h)
   TrackChoice track;            // --track ID|longest|all (core/motions/motion_tracks.h)
-  bool skip_bad_frames = false;    // --skip-bad-frames: folders of frames skip unreadable entries
-  int64_t max_held_frames = 1000;  // --max-held-frames N: 0..kMaxHeldFramesLimit per gap
-  bool scene = false;              // --scene: every track a body of one file (run_request.h)
-  SourceParams source_params = SourceParams::Default;  // --source-params global|incam
-  std::optional<double> source_fps;    // --source-fps R, fps in [1, 1000]; none: the stored rate
+  // How the motion files are read (core/motions/motion.h): source_fps
+  // --source-fps R in [1, 1000]; source_params --source-params global|incam;
+  // skip_bad_frames --skip-bad-frames; max_held_frames --max-held-frames N,
+  // 0..kMaxHeldFramesLimit per gap. up_given and frame_file are set by the
+  // run (request_motions.h).
+  MotionOptions reading;
+  bool scene = false;                  // --scene: every track a body of one file (run_request.h)
   bool flat_hand_mean = false;         // --flat-hand-mean: fit hands are flat-hand relative
   std::vector<std::string> hands;      // --hands FILE|DIR, at most 2: MANO tracks, the fingers
   bool hands_wrist = false;            // --hands-wrist: the wrists from the hand tracks too
-  std::vector<double> betas;           // --betas v,v,...: |v| <= 1000, at most the model's B
   std::string betas_file;              // --betas-file FILE: .npy, .npz (key 'betas') or .json
   bool betas_from_motion = false;      // --betas-from-motion: the first motion must carry betas
-  std::vector<double> expression;      // --expression v,v,...: SMPL-X, |v| <= 1000
-  std::string uv;                      // --uv OBJ|NPY|none ("" = the model file's own vt/ft)
   std::string dmpl;                    // --dmpl FILE|DIR: DMPL basis (DIR: per motion gender)
   std::optional<int> dmpl_count;       // --dmpl-count N >= 1: the first N directions (none: all)
   bool dmpl_regressed_joints = false;  // --dmpl-joints regressed (false: fixed)
 
-  // --- the asset (ExportOptions) ---
-  int max_influences = 4;       // --max-influences N: 1..K (the model's joints)
-  bool all_influences = false;  // --max-influences all: as many as the model's vertices use
-  SkinWeightMethod skin_weights = SkinWeightMethod::Optimized;  // --skin-weights
-  bool correctives = true;                                      // --correctives all|none
-  bool corrective_refit = true;  // --corrective-refit on|off (core/math/corrective_refit.h)
-  CorrectiveEncoding encoding = CorrectiveEncoding::Auto;  // --corrective-weights
-  int corrective_basis = 0;      // --corrective-basis K: 1..P principal components (0 = none)
-  int shape_keys = 0;            // --shape-keys N: 0..B shape_<i> targets
-  int expression_keys = 0;       // --expression-keys N: 0..E expr_<i> targets
-  std::string name = "body";     // --name NAME: the mesh name
-  std::optional<Origin> origin;  // --origin model|floor (none: model, or floor with --root-bone)
-  bool root_bone = false;        // --root-bone: a `root` joint on the floor (implies floor)
+  // --- the asset, as exportAsset takes it (exporter/export_options.h) ---
+  //   betas            --betas v,v,...: |v| <= 1000, at most the model's B; the run
+  //                    replaces them with the betas it resolved (file, motion)
+  //   expression       --expression v,v,...: SMPL-X, |v| <= 1000
+  //   max_influences   --max-influences N|all: 1..K, or kAllInfluences
+  //   skin_weights     --skin-weights; correctives --correctives all|none;
+  //   corrective_refit --corrective-refit on|off; encoding --corrective-weights;
+  //   corrective_basis --corrective-basis K; shape_keys --shape-keys N;
+  //   expression_keys  --expression-keys N; uv_obj --uv OBJ|NPY|none; name --name;
+  //   quantize_morphs  --quantize-morphs; origin --origin; root_bone --root-bone
+  //   mesh             set by the run from the output's writer row (needs_mesh)
+  ExportOptions asset;
 
-  // --- animation (AnimationOptions) ---
-  std::optional<double> fps;  // --fps F: output rate in (0, 1000] fps; none: each motion's rate
-  int first_frame = 0;        // --frames A:B, A >= 0 (source frames, before resampling)
-  int end_frame = -1;         // --frames A:B, B > A exclusive; -1: to the end
-  UpAxis up = UpAxis::Auto;   // --up y|z (Auto: z for AMASS files, else y)
-  bool in_place = false;      // --root-motion in-place
+  // --- the bake (exporter/animation.h) ---
+  //   fps --fps F in (0, 1000]; first_frame, end_frame --frames A:B;
+  //   up --up y|z; in_place --root-motion in-place
+  AnimationOptions animation;
 
-  // --- the writer (WriterOptions) ---
-  double corrective_epsilon = 0.0;    // --corrective-epsilon M: metres in [0, 0.01] (glTF)
-  bool quantize_morphs = false;       // --quantize-morphs (glTF int16 deltas)
-  bool draco = false;                 // --draco (glTF)
-  bool meshopt = false;               // --meshopt (glTF): EXT_meshopt_compression
-  bool quantize_animation = false;    // --quantize-animation (glTF): normalised int16 keys
-  bool gltf_embed = false;            // --gltf-embed: .gltf buffer as a data URI (else FILE.bin)
-  std::string fbx_units = "m";        // --fbx-units m|cm
-  int fbx_version = 7400;             // --fbx-version 7400|7500
-  int fbx_compress_level = 1;         // --fbx-compress-level N: 0..12
-  std::string bvh_units = "m";        // --bvh-units m|cm
-  double density = 1000.0;            // --density KG_M3: (0, 1e5] kg/m^3 (MJCF body masses)
-  std::string mjcf_joints = "hinge";  // --mjcf-joints hinge|ball
-  bool mjcf_motors = false;           // --mjcf-motors: a motor per hinge (MJCF)
+  // --- the writer (writers/writer.h) ---
+  //   morph_epsilon --corrective-epsilon M in [0, 0.01] m; draco, meshopt,
+  //   quantize_animation; fbx_units, fbx_version, fbx_compress_level;
+  //   bvh_units; density, mjcf_joints, mjcf_motors; threads --threads N,
+  //   1..1024 (none: all cores). binary and buffer_uri are set by the run
+  //   from the output's path (request_options.h writerOptionsOf).
+  WriterOptions writer;
+  bool gltf_embed = false;  // --gltf-embed: .gltf buffer as a data URI (else FILE.bin)
 
   // --- the run ---
   std::string out;     // --out FILE: .glb, .gltf, .fbx or .bvh (batch: the job's output)
   std::string format;  // --format (batch): the outputs' writer row name ("" = the table's first)
-  std::string motion_dir;      // --motion-dir DIR (batch): read by the path guard (run_paths.h)
-  std::string manifest;        // --manifest FILE (batch): an output of the run for the guard
-  std::optional<int> threads;  // --threads N, 1..1024 (none: all cores): this export's FBX workers
-  uint64_t memory_limit = 0;   // --memory-limit, bytes (0 = defaultMemoryLimit())
+  std::string motion_dir;     // --motion-dir DIR (batch): read by the path guard (run_paths.h)
+  std::string manifest;       // --manifest FILE (batch): an output of the run for the guard
+  uint64_t memory_limit = 0;  // --memory-limit, bytes (0 = defaultMemoryLimit())
   // (name, value) of each option that changes the bytes written, as given;
   // the producer hash (producer.h) sorts and hashes them.
   std::vector<std::pair<std::string, std::string>> hashed_options;

@@ -71,7 +71,7 @@ Result<ContentHash> producerBase(const ExportRequest& s) {
   for (const auto& [name, value] : options) h.add(name + "=" + value);
   if (Status st = addInput("model", s.model, &h); !st) return st.error();
   if (Status st = addInput("betas", s.betas_file, &h); !st) return st.error();
-  if (Status st = addInput("uv", s.uv, &h); !st) return st.error();
+  if (Status st = addInput("uv", s.asset.uv_obj, &h); !st) return st.error();
   if (Status st = addInput("dmpl", s.dmpl, &h); !st) return st.error();
   if (Status st = addDmplFolder(s.dmpl, &h); !st) return st.error();
   return h;

@@ -15,10 +15,10 @@ namespace {
 // and --max-held-frames) or one file.
 // Its world and rate are the body clip's: no notes about them (up_given).
 Result<MotionSet> decodeHandFile(const std::string& path, const ExportRequest& r) {
-  MotionOptions options;
+  MotionOptions options = r.reading;
   options.up_given = true;
-  options.skip_bad_frames = r.skip_bad_frames;
-  options.max_held_frames = r.max_held_frames;
+  options.source_fps.reset();  // the body clip's rate and world, not the body file's options
+  options.source_params = SourceParams::Default;
   std::error_code ec;
   if (std::filesystem::is_directory(os::fsPath(path), ec)) return loadMotionSequence(path, options);
   return loadMotionSet(path, options);

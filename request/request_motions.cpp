@@ -15,12 +15,8 @@ namespace {
 std::atomic<uint64_t> decoded{0};
 
 MotionOptions motionOptionsOf(const ExportRequest& r) {
-  MotionOptions options;
-  options.source_fps = r.source_fps.value_or(0.0);
-  options.up_given = r.up != UpAxis::Auto;  // no note about the layout's default turn
-  options.source_params = r.source_params;
-  options.skip_bad_frames = r.skip_bad_frames;
-  options.max_held_frames = r.max_held_frames;
+  MotionOptions options = r.reading;
+  options.up_given = r.animation.up != UpAxis::Auto;  // no note about the layout's default turn
   return options;
 }
 

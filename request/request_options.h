@@ -1,7 +1,8 @@
-// The request's fields as the options of the library stages below it: the
-// asset (ExportOptions, exporter/export_options.h), the bake (AnimationOptions,
-// exporter/animation.h) and the writer (WriterOptions, writers/writer.h).
-// Pure translations: the values were checked by check_request.h.
+// The request holds the options of the stages below it as they are
+// (ExportRequest::asset, ::animation, ::writer); these add what only the run
+// knows: the resolved betas, whether the output's writer has a mesh, binary
+// or not, and the external buffer's name. The values were checked by
+// check_request.h.
 #pragma once
 
 #include <string>
@@ -18,8 +19,6 @@ namespace smpl {
 // (Auto is resolved by exportAsset, export_asset.h); no mesh when the
 // output's writer row has none (writers/writer.h needs_mesh).
 ExportOptions exportOptionsOf(const ExportRequest& request, const std::vector<double>& betas);
-
-AnimationOptions animationOptionsOf(const ExportRequest& request);
 
 // For writing request.out; `buffer_path`: its external buffer (run_paths.h
 // gltfBufferPath), "" = none.

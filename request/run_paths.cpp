@@ -142,7 +142,7 @@ RunPaths runPaths(const ExportRequest& r, const std::vector<std::string>& outs,
   else if (r.model != "builtin")
     paths.inputs.push_back(r.model);
   paths.inputs.push_back(r.betas_file);
-  addUv(r.uv, &paths.inputs);
+  addUv(r.asset.uv_obj, &paths.inputs);
   if (isDirectory(r.dmpl))
     addDmplFolder(r.dmpl, &paths.inputs);
   else

@@ -151,7 +151,7 @@ Status betasFromMotion(const BodyModel& model, const ExportRequest& r,
 std::vector<MotionInput> motionInputs(const ExportRequest& r, std::vector<Motion>* motions,
                                       std::vector<std::string>* frame_notes) {
   std::vector<MotionInput> inputs;
-  const AnimationOptions animation = animationOptionsOf(r);
+  const AnimationOptions& animation = r.animation;
   for (size_t i = 0; i < motions->size(); ++i) {
     Motion& motion = (*motions)[i];
     frame_notes->emplace_back();
@@ -182,7 +182,7 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, Loaded* 
   if (!asset) return exportFailure(r.out, asset.error(), options.uv_obj);
   noteMotions(loaded.motions, frame_notes, inputs.betas_given, *asset, report);
   noteDmplJointCost(*asset, report);
-  if (r.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
+  if (r.asset.quantize_morphs && (options.shape_keys > 0 || options.expression_keys > 0))
     report->notes.push_back(
         "--quantize-morphs: shape_/expr_ targets stay float (their weights are the coefficients)");
   report->options = options;
@@ -307,8 +307,8 @@ Result<RunInputs> loadRunInputs(const ExportRequest& r, ModelSource* models) {
   Stage stage;
   return guarded<RunInputs>(&stage, [&]() -> Result<RunInputs> {
     RunInputs inputs;
-    inputs.betas = r.betas;
-    inputs.betas_given = !r.betas.empty() || !r.betas_file.empty();
+    inputs.betas = r.asset.betas;
+    inputs.betas_given = !r.asset.betas.empty() || !r.betas_file.empty();
     if (!r.betas_file.empty()) {
       stage.set("loading", r.betas_file, ErrorKind::Load);
       std::string note;  // per-frame (T,B) betas that differ: their mean, with a note
@@ -363,11 +363,12 @@ Status checkTrackOutputs(const std::string& motion, const std::vector<Motion>& t
 Status checkTrackFrames(const ExportRequest& r, const std::vector<Motion>& tracks) {
   for (const Motion& m : tracks) {
     const int total = static_cast<int>(m.frames.size());
-    const int end = r.end_frame < 0 ? total : std::min(r.end_frame, total);
-    if (r.first_frame < end) continue;
+    const int end = r.animation.end_frame < 0 ? total : std::min(r.animation.end_frame, total);
+    if (r.animation.first_frame < end) continue;
     return fail(ErrorKind::Export, "exporting", r.motions.front(),
-                "track " + printable(m.track, 64) + ": --frames " + std::to_string(r.first_frame) +
-                    ":" + std::to_string(r.end_frame) + " is outside the track's " +
+                "track " + printable(m.track, 64) + ": --frames " +
+                    std::to_string(r.animation.first_frame) + ":" +
+                    std::to_string(r.animation.end_frame) + " is outside the track's " +
                     std::to_string(total) + " frames (nothing written)");
   }
   return Status();
@@ -459,7 +460,7 @@ Result<MotionSet> sceneTracks(const ExportRequest& r, Stage* stage) {
 Result<Asset> sceneBody(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
                         Stage* stage, Motion track, ExportReport* report) {
   ExportRequest job = r;
-  job.name = bodyName(r.name, track.track);
+  job.asset.name = bodyName(r.asset.name, track.track);
   std::vector<Motion> given;
   given.push_back(std::move(track));
   Result<Loaded> loaded = loadJob(job, inputs, models, stage, std::move(given));
@@ -510,7 +511,7 @@ Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, M
     bodies.push_back(SceneBodyInput{std::move(*asset), id, std::move(detected)});
   }
   Result<SceneAsset> scene = composeScene(name, std::move(bodies), fps, set->camera,
-                                          worldTurn(r.up, world), r.motions.front());
+                                          worldTurn(r.animation.up, world), r.motions.front());
   if (!scene) return fail(ErrorKind::Load, "loading", r.motions.front(), scene.message());
   for (const std::string& note : scene->notes) report.notes.push_back(note);
   returnFreedHeap();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,8 @@ struct WriterOptions {
   // FBX: arrays' compression, --fbx-compress-level (the FBX SDK's
   // EXP_FBX_COMPRESS_LEVEL): 0 stored uncompressed, 1..12 libdeflate level.
   int fbx_compress_level = 1;
-  int threads = 0;  // FBX: compression workers (--threads; 0 = all cores); same bytes for any
+  // FBX: compression workers (--threads; none = all cores); same bytes for any
+  std::optional<int> threads;
   // glTF compact encodings (each optional; see README "Size"):
   double morph_epsilon =
       0.0;             // > 0: drop morph deltas with |d| <= epsilon (metres), sparse accessors

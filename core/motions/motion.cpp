@@ -70,13 +70,13 @@ namespace {
 // note says what was assumed or overridden (single frames need no rate).
 void settleFps(const MotionOptions& o, double fallback, const char* why, Motion* m) {
   char text[200];
-  if (o.source_fps > 0) {
-    if (m->fps > 0 && std::abs(m->fps - o.source_fps) > 1e-9) {
+  if (o.source_fps) {
+    if (m->fps > 0 && std::abs(m->fps - *o.source_fps) > 1e-9) {
       std::snprintf(text, sizeof text, "the stored rate %g fps is overridden by --source-fps %g",
-                    m->fps, o.source_fps);
+                    m->fps, *o.source_fps);
       m->notes.push_back(text);
     }
-    m->fps = o.source_fps;
+    m->fps = *o.source_fps;
     m->fps_assumed = false;
     return;
   }

@@ -105,9 +105,10 @@ enum class SourceParams { Default, Global, Incam };
 
 // Options of loadMotion.
 struct MotionOptions {
-  double source_fps = 0.0;  // --source-fps: the source rate; 0 = stored rate, else the layout's
-                            // default (30 fps; AIST++ 60, as documented) with a note
-  bool up_given = false;    // --up was given: no note about the layout's default world turn
+  // --source-fps: the source rate; none = the stored rate, else the layout's
+  // default (30 fps; AIST++ 60, as documented) with a note
+  std::optional<double> source_fps;
+  bool up_given = false;  // --up was given: no note about the layout's default world turn
   SourceParams source_params = SourceParams::Default;  // --source-params global|incam
   // Set by loadMotionSequence (motion_sequence.h): the file is one frame of a
   // --motion-sequence, so a layout whose rows are that frame's hands (HaMeR)

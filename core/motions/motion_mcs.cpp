@@ -85,7 +85,7 @@ Status decodeMcs(const DataNode& root, const LayoutInput& in, MotionSet* out) {
     if (fps <= 0) fps = m.fps;
     out->tracks.push_back(std::move(m));
   }
-  if (in.options.source_fps > 0) fps = in.options.source_fps;
+  if (in.options.source_fps) fps = *in.options.source_fps;
   if (fps <= 0) fps = 30.0;  // settleFps says so for the tracks
   Result<SceneCamera> camera = mcs::readCamera(root, fps, *num_frames, in.path, &out->notes);
   if (!camera) return camera.error();

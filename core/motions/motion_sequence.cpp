@@ -286,7 +286,7 @@ Result<MotionSet> loadMotionSequence(const std::string& dir, const MotionOptions
     m.name = folderName(dir);
     if (Status st = assembleTrack(p.frames, dir, &m); !st) return st.error();
     if (Status st = settleBetas(p, dir, &m); !st) return st.error();
-    if (options.source_fps <= 0 && m.fps_assumed && m.frames.size() > 1) {
+    if (!options.source_fps && m.fps_assumed && m.frames.size() > 1) {
       std::snprintf(text, sizeof text,
                     "no frame rate is stored; assumed %g fps (state the rate with --source-fps R)",
                     m.fps);

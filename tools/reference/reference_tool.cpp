@@ -140,8 +140,10 @@ bool writeFiles(const Options& o, const smpl::BodyModel& model, const Output& ou
   json << "],\"parents\":[";
   for (int k = 0; k < model.numJoints(); ++k) json << (k ? "," : "") << model.parents[k];
   const smpl::ExportRequest& r = o.request();
-  json << "],\"max_influences\":" << (r.all_influences ? model.numJoints() : r.max_influences)
-       << ",\"skin_weights\":" << quoted(smpl::skinWeightMethodName(r.skin_weights))
+  json << "],\"max_influences\":"
+       << (r.asset.max_influences == smpl::kAllInfluences ? model.numJoints()
+                                                          : r.asset.max_influences)
+       << ",\"skin_weights\":" << quoted(smpl::skinWeightMethodName(r.asset.skin_weights))
        << ",\"num_vertices\":" << model.numVertices() << ",\"num_joints\":" << model.numJoints()
        << ",\"arrays\":{" << out.arrays.str() << "}}\n";
   return bin.good() && json.good();
@@ -164,7 +166,7 @@ int main(int argc, char** argv) {
     return 3;
   }
   const smpl::BodyModel* model = pick->model;
-  if (smpl::Status st = smpl::checkRequestForModel(request, request.betas, *model); !st) {
+  if (smpl::Status st = smpl::checkRequestForModel(request, request.asset.betas, *model); !st) {
     std::fprintf(stderr, "smpl-reference: %s\n", st.message().c_str());
     return 2;
   }
@@ -176,8 +178,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   const int n = model->numVertices(), k = model->numJoints(), p = o.poses;
-  const smpl::ExportOptions export_options = smpl::exportOptionsOf(request, request.betas);
-  const std::vector<double>& beta_values = request.betas;
+  const smpl::ExportOptions export_options = smpl::exportOptionsOf(request, request.asset.betas);
+  const std::vector<double>& beta_values = request.asset.betas;
   const Eigen::VectorXd betas =
       Eigen::Map<const Eigen::VectorXd>(beta_values.data(), Eigen::Index(beta_values.size()));
   smpl::Result<smpl::ShapedBody> body = smpl::shapeBody(*model, betas);

@@ -31,7 +31,7 @@ class FbxWriter : public Writer {
   static Result<std::string> encode(std::vector<FbxNode> nodes, const WriterOptions& options) {
     FbxEncodeOptions encode;
     encode.compress_level = options.fbx_compress_level;
-    encode.threads = options.threads;
+    encode.threads = options.threads.value_or(0);
     return encodeFbx(std::move(nodes), static_cast<uint32_t>(options.fbx_version), encode);
   }
 };

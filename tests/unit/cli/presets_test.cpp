@@ -19,12 +19,12 @@ TEST(Presets, WebSetsEverySizeOptionOfGltf) {
       parse({"--model", "builtin", "--out", "a.glb", "--motion", "w.npz", "--preset", "web"});
   ASSERT_TRUE(s.ok()) << s.message();
   const ExportRequest& r = s->request;
-  EXPECT_TRUE(r.meshopt);
-  EXPECT_TRUE(r.quantize_morphs);
-  EXPECT_TRUE(r.quantize_animation);
-  EXPECT_DOUBLE_EQ(r.corrective_epsilon, 1e-5);
-  EXPECT_EQ(r.max_influences, 4);
-  EXPECT_FALSE(r.draco);
+  EXPECT_TRUE(r.writer.meshopt);
+  EXPECT_TRUE(r.asset.quantize_morphs);
+  EXPECT_TRUE(r.writer.quantize_animation);
+  EXPECT_DOUBLE_EQ(r.writer.morph_epsilon, 1e-5);
+  EXPECT_EQ(r.asset.max_influences, 4);
+  EXPECT_FALSE(r.writer.draco);
   // The preset is hashed by its name; what it expands to is not given_options.
   EXPECT_EQ(r.hashed_options.back(), (std::pair<std::string, std::string>{"--preset", "web"}));
 }
@@ -33,9 +33,9 @@ TEST(Presets, ExplicitOptionsOverride) {
   Result<Settings> s = parse({"--model", "builtin", "--out", "a.glb", "--max-influences", "8",
                               "--preset", "web", "--corrective-epsilon", "0"});
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_EQ(s->request.max_influences, 8);
-  EXPECT_EQ(s->request.corrective_epsilon, 0.0);
-  EXPECT_TRUE(s->request.meshopt);
+  EXPECT_EQ(s->request.asset.max_influences, 8);
+  EXPECT_EQ(s->request.writer.morph_epsilon, 0.0);
+  EXPECT_TRUE(s->request.writer.meshopt);
 }
 
 TEST(Presets, OptionsApplyOnlyWhereTheyCan) {
@@ -43,20 +43,20 @@ TEST(Presets, OptionsApplyOnlyWhereTheyCan) {
   Result<Settings> s =
       parse({"--model", "builtin", "--out", "a.glb", "--correctives", "none", "--preset", "web"});
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_FALSE(s->request.quantize_animation);
-  EXPECT_FALSE(s->request.quantize_morphs);
-  EXPECT_EQ(s->request.corrective_epsilon, 0.0);
-  EXPECT_TRUE(s->request.meshopt);
+  EXPECT_FALSE(s->request.writer.quantize_animation);
+  EXPECT_FALSE(s->request.asset.quantize_morphs);
+  EXPECT_EQ(s->request.writer.morph_epsilon, 0.0);
+  EXPECT_TRUE(s->request.writer.meshopt);
   // FBX takes none of the glTF-only options: engine keeps the influences only.
   Result<Settings> fbx =
       parse({"--model", "builtin", "--out", "a.fbx", "--motion", "w.npz", "--preset", "engine"});
   ASSERT_TRUE(fbx.ok()) << fbx.message();
-  EXPECT_EQ(fbx->request.corrective_epsilon, 0.0);
-  EXPECT_EQ(fbx->request.max_influences, 4);
+  EXPECT_EQ(fbx->request.writer.morph_epsilon, 0.0);
+  EXPECT_EQ(fbx->request.asset.max_influences, 4);
   Result<Settings> archive = parse({"--model", "builtin", "--out", "a.fbx", "--preset", "archive"});
   ASSERT_TRUE(archive.ok()) << archive.message();
-  EXPECT_TRUE(archive->request.all_influences);
-  EXPECT_EQ(archive->request.skin_weights, SkinWeightMethod::Truncated);
+  EXPECT_EQ(archive->request.asset.max_influences, kAllInfluences);
+  EXPECT_EQ(archive->request.asset.skin_weights, SkinWeightMethod::Truncated);
 }
 
 TEST(Presets, BadUsesAreUsageErrors) {

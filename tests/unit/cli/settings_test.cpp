@@ -21,15 +21,15 @@ Result<Settings> parse(std::vector<const char*> args) {
 TEST(Settings, DefaultsAndValues) {
   Result<Settings> s = parse({"--model", "builtin", "--out", "a.glb", "--betas", "1,-2.5,3e-1"});
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_EQ(s->request.max_influences, 4);
-  EXPECT_TRUE(s->request.correctives);
-  EXPECT_EQ(s->request.betas, (std::vector<double>{1, -2.5, 0.3}));
+  EXPECT_EQ(s->request.asset.max_influences, 4);
+  EXPECT_TRUE(s->request.asset.correctives);
+  EXPECT_EQ(s->request.asset.betas, (std::vector<double>{1, -2.5, 0.3}));
   Result<Settings> eq =
       parse({"--model=builtin", "--out=a.gltf", "--max-influences=8", "--correctives=none"});
   ASSERT_TRUE(eq.ok()) << eq.message();
   EXPECT_EQ(eq->request.out, "a.gltf");
-  EXPECT_EQ(eq->request.max_influences, 8);
-  EXPECT_FALSE(eq->request.correctives);
+  EXPECT_EQ(eq->request.asset.max_influences, 8);
+  EXPECT_FALSE(eq->request.asset.correctives);
 }
 
 // Only the options that change the bytes enter the producer hash, as given.
@@ -40,20 +40,20 @@ TEST(Settings, HashedOptionsFollowTheTable) {
   using Option = std::pair<std::string, std::string>;
   EXPECT_EQ(s->request.hashed_options,
             (std::vector<Option>{{"--name", "x"}, {"--max-influences", "all"}}));
-  EXPECT_TRUE(s->request.all_influences);
+  EXPECT_EQ(s->request.asset.max_influences, kAllInfluences);
 }
 
 TEST(Settings, FbxCompressLevelAndThreads) {
   Result<Settings> d = parse({"--model", "builtin", "--out", "a.fbx"});
   ASSERT_TRUE(d.ok()) << d.message();
-  EXPECT_EQ(d->request.fbx_compress_level, 1);
-  EXPECT_FALSE(d->request.threads.has_value());  // all cores
-  for (int level : {0, 12, 13}) {                // 13: the request's range check refuses it
+  EXPECT_EQ(d->request.writer.fbx_compress_level, 1);
+  EXPECT_FALSE(d->request.writer.threads.has_value());  // all cores
+  for (int level : {0, 12, 13}) {                       // 13: the request's range check refuses it
     const std::string v = std::to_string(level);
     Result<Settings> s =
         parse({"--model", "builtin", "--out", "a.fbx", "--fbx-compress-level", v.c_str()});
     ASSERT_TRUE(s.ok()) << s.message();
-    EXPECT_EQ(s->request.fbx_compress_level, level);
+    EXPECT_EQ(s->request.writer.fbx_compress_level, level);
   }
   Result<Settings> bad =
       parse({"--model", "builtin", "--out", "a.fbx", "--fbx-compress-level", "x"});
@@ -63,7 +63,7 @@ TEST(Settings, FbxCompressLevelAndThreads) {
   // One export (not batch mode): --threads sets the FBX compression workers.
   Result<Settings> t = parse({"--model", "builtin", "--out", "a.fbx", "--threads", "3"});
   ASSERT_TRUE(t.ok()) << t.message();
-  EXPECT_EQ(t->request.threads, 3);
+  EXPECT_EQ(t->request.writer.threads, 3);
 }
 
 // Syntax and where options apply: refused by the parser, before any check of
@@ -120,14 +120,17 @@ TEST(Settings, SkinWeightsInfluencesAndSplitEncoding) {
   Result<Settings> s = parse({"--model", "builtin", "--out", "a.glb", "--skin-weights", "truncated",
                               "--max-influences", "all", "--corrective-weights", "split"});
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_EQ(s->request.skin_weights, SkinWeightMethod::Truncated);
-  EXPECT_TRUE(s->request.all_influences);
-  EXPECT_EQ(s->request.encoding, CorrectiveEncoding::Split);
+  EXPECT_EQ(s->request.asset.skin_weights, SkinWeightMethod::Truncated);
+  EXPECT_EQ(s->request.asset.max_influences, kAllInfluences);
+  EXPECT_EQ(s->request.asset.encoding, CorrectiveEncoding::Split);
   Result<Settings> d = parse({"--model", "builtin", "--out", "a.glb", "--max-influences", "12"});
   ASSERT_TRUE(d.ok()) << d.message();
-  EXPECT_EQ(d->request.skin_weights, SkinWeightMethod::Optimized);
-  EXPECT_EQ(d->request.max_influences, 12);
-  EXPECT_FALSE(d->request.all_influences);
+  EXPECT_EQ(d->request.asset.skin_weights, SkinWeightMethod::Optimized);
+  EXPECT_EQ(d->request.asset.max_influences, 12);
+  Result<Settings> zero = parse({"--model", "builtin", "--out", "a.glb", "--max-influences", "0"});
+  ASSERT_FALSE(zero.ok());  // 0 is kAllInfluences inside: the option refuses it, never "all"
+  EXPECT_EQ(zero.message(),
+            "--max-influences must be between 1 and the model's joints or 'all', got 0");
 }
 
 TEST(Settings, MotionFormatAndShardOptions) {
@@ -135,7 +138,7 @@ TEST(Settings, MotionFormatAndShardOptions) {
       parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--source-fps", "59.94",
              "--flat-hand-mean", "--shard", "3/8", "--manifest", "s3.jsonl"});
   ASSERT_TRUE(s.ok()) << s.message();
-  EXPECT_EQ(s->request.source_fps, 59.94);
+  EXPECT_EQ(s->request.reading.source_fps, 59.94);
   EXPECT_TRUE(s->request.flat_hand_mean);
   EXPECT_EQ(s->shard_index, 3);
   EXPECT_EQ(s->shard_count, 8);
@@ -247,7 +250,7 @@ TEST(SettingsNumbers, EveryNumericOptionUsesTheOneGrammar) {
   }
   Result<Settings> spaced = parse({"--model", "builtin", "--out", "a.glb", "--betas", "0.5, -1.2"});
   ASSERT_TRUE(spaced.ok()) << spaced.message();
-  EXPECT_EQ(spaced->request.betas, (std::vector<double>{0.5, -1.2}));
+  EXPECT_EQ(spaced->request.asset.betas, (std::vector<double>{0.5, -1.2}));
   Result<Settings> limit =
       parse({"--model", "builtin", "--out", "a.glb", "--memory-limit", "1e3M"});
   ASSERT_TRUE(limit.ok()) << limit.message();

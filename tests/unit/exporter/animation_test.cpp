@@ -100,7 +100,8 @@ TEST(Animation, ResampleZUpAndWeights) {
 // range), the frames it passed are empty, the others and the count stay.
 TEST(Animation, ReleaseFreesPassedFramesAndBakesTheSameClip) {
   Loaded l = load("smplh_small.npz", "amass_smplh.npz");
-  for (double fps : {30.0, 50.0, 0.0}) {  // every 4th frame, slerped, every frame
+  for (std::optional<double> fps : {std::optional<double>(30.0), std::optional<double>(50.0),
+                                    std::optional<double>()}) {  // every 4th, slerped, every frame
     AnimationOptions o;
     o.fps = fps;
     o.first_frame = 3;
@@ -112,7 +113,7 @@ TEST(Animation, ReleaseFreesPassedFramesAndBakesTheSameClip) {
     ASSERT_TRUE(kept.ok() && freed.ok()) << kept.message() << freed.message();
     ASSERT_EQ(consumed.frames.size(), l.motion.frames.size());
     for (size_t f = 0; f < consumed.frames.size(); ++f)
-      EXPECT_EQ(consumed.frames[f].empty(), f >= 3 && f < 90) << fps << " frame " << f;
+      EXPECT_EQ(consumed.frames[f].empty(), f >= 3 && f < 90) << fps.value_or(0) << " frame " << f;
     ASSERT_EQ(freed->rotations.size(), kept->rotations.size());
     for (size_t j = 0; j < kept->rotations.size(); ++j)
       for (size_t i = 0; i < kept->rotations[j].size(); ++i)

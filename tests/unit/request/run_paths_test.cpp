@@ -116,7 +116,7 @@ TEST_F(RunPathsTest, InputsCoverFoldersPartnersAndDmpl) {
   std::ofstream(dir_ + "/body_ft.npy") << "x";
   ExportRequest r;
   r.model = dir_ + "/models";
-  r.uv = dir_ + "/body_uv.npy";
+  r.asset.uv_obj = dir_ + "/body_uv.npy";
   r.dmpl = dir_ + "/dmpl.npz";
   r.betas_file = dir_ + "/b.npy";
   r.out = dir_ + "/o.gltf";

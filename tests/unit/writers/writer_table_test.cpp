@@ -190,7 +190,7 @@ TEST(WriterTable, RowWithoutAMeshSkipsSkinAndMorphs) {
   EXPECT_NE(text.find("\nclip smpl_72 60\n"), std::string::npos) << text;
   EXPECT_TRUE(fs::exists(r.out + ".smpl.json"));
   // What only a mesh has is refused for it, before any work.
-  r.shape_keys = 2;
+  r.asset.shape_keys = 2;
   Result<ExportReport> keys = runExportRequest(r, &models);
   ASSERT_FALSE(keys.ok());
   EXPECT_EQ(keys.message(),
@@ -204,7 +204,7 @@ TEST(WriterTable, RowWithoutAMeshSkipsSkinAndMorphs) {
   EXPECT_EQ(checkRequest(batch).message(),
             "--dmpl needs an output format with a mesh; skel output has none");
   // The same request for a row with a mesh fits a skin.
-  r.shape_keys = 0;
+  r.asset.shape_keys = 0;
   r.out = dir + "/walk.glb";
   r.skin_error_poses = 0;
   Result<ExportReport> glb = runExportRequest(r, &models);
