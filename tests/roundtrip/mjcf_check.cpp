@@ -170,7 +170,8 @@ MotionRef readMotion(const char* path) {
       r.poses.push_back(p);
     }
   }
-  if (r.names.empty() || r.rows.empty() || r.poses.empty()) fail(std::string(path) + ": incomplete");
+  if (r.names.empty() || r.rows.empty() || r.poses.empty())
+    fail(std::string(path) + ": incomplete");
   return r;
 }
 
@@ -183,13 +184,15 @@ void checkLayout(const mjModel* m, const MotionRef& r) {
     const int j = mj_name2id(m, mjOBJ_JOINT, name.c_str());
     if (j < 0) fail("(m) no joint named '" + name + "'");
     if (m->jnt_qposadr[j] != offset)
-      fail("(m) joint '" + name + "' at qpos " + std::to_string(m->jnt_qposadr[j]) + ", the row has it at " +
-           std::to_string(offset));
+      fail("(m) joint '" + name + "' at qpos " + std::to_string(m->jnt_qposadr[j]) +
+           ", the row has it at " + std::to_string(offset));
     offset += widthOf(m->jnt_type[j]);
   }
-  if (offset != m->nq) fail("(m) the joints cover " + std::to_string(offset) + " of nq " + std::to_string(m->nq));
+  if (offset != m->nq)
+    fail("(m) the joints cover " + std::to_string(offset) + " of nq " + std::to_string(m->nq));
   for (const auto& row : r.rows) {
-    if (int(row.second.size()) != m->nq) fail("(m) row " + std::to_string(row.first) + " length differs from nq");
+    if (int(row.second.size()) != m->nq)
+      fail("(m) row " + std::to_string(row.first) + " length differs from nq");
     for (int j = 0; j < m->njnt; ++j)
       if (m->jnt_type[j] == mjJNT_HINGE && std::fabs(row.second[size_t(m->jnt_qposadr[j])]) > M_PI)
         fail("(m) a hinge angle outside [-pi, pi] at frame " + std::to_string(row.first));
@@ -199,7 +202,8 @@ void checkLayout(const mjModel* m, const MotionRef& r) {
 }
 
 // qpos from a row, joint by joint by name; `xyzw`: quaternions read x, y, z, w.
-void setQpos(const mjModel* m, mjData* d, const MotionRef& r, const std::vector<double>& row, bool xyzw) {
+void setQpos(const mjModel* m, mjData* d, const MotionRef& r, const std::vector<double>& row,
+             bool xyzw) {
   size_t at = 0;
   for (const std::string& name : r.names) {
     const int j = mj_name2id(m, mjOBJ_JOINT, name.c_str());
@@ -225,8 +229,8 @@ double checkPoses(const mjModel* m, mjData* d, const MotionRef& r, bool xyzw) {
     setQpos(m, d, r, row.second, xyzw);
     mj_kinematics(m, d);
     const double e = maxError(m, d, joints, true);
-    std::printf("(p) frame %d: max |xpos - numpy posed joint| = %.3g m over %zu bodies\n", row.first, e,
-                joints.size());
+    std::printf("(p) frame %d: max |xpos - numpy posed joint| = %.3g m over %zu bodies\n",
+                row.first, e, joints.size());
     worst = std::fmax(worst, e);
   }
   return worst;
@@ -235,20 +239,23 @@ double checkPoses(const mjModel* m, mjData* d, const MotionRef& r, bool xyzw) {
 // (k): keyframes equal the .npz rows.
 void checkKeys(const mjModel* m, const MotionRef& r) {
   const int want = std::min(r.frames, 100);
-  if (m->nkey != want) fail("(k) " + std::to_string(m->nkey) + " keyframes, expected " + std::to_string(want));
+  if (m->nkey != want)
+    fail("(k) " + std::to_string(m->nkey) + " keyframes, expected " + std::to_string(want));
   double worst = 0.0;
   int compared = 0;
   for (const auto& row : r.rows) {
     if (row.first >= m->nkey || (row.first != 0 && row.first != m->nkey - 1)) continue;
     for (int i = 0; i < m->nq; ++i)
-      worst = std::fmax(worst, std::fabs(m->key_qpos[row.first * m->nq + i] - row.second[size_t(i)]));
+      worst =
+          std::fmax(worst, std::fabs(m->key_qpos[row.first * m->nq + i] - row.second[size_t(i)]));
     if (std::fabs(m->key_time[row.first] - row.first / r.fps) > 1e-9)
       fail("(k) key " + std::to_string(row.first) + " time differs from i / fps");
     ++compared;
   }
-  std::printf("(k) %d keyframes (T = %d); keys 0 and %d: max |key_qpos - .npz row| = %.3g\n", m->nkey, r.frames,
-              m->nkey - 1, worst);
-  if (compared != (m->nkey > 1 ? 2 : 1) || !(worst <= 1e-12)) fail("(k) keyframes differ from the .npz rows");
+  std::printf("(k) %d keyframes (T = %d); keys 0 and %d: max |key_qpos - .npz row| = %.3g\n",
+              m->nkey, r.frames, m->nkey - 1, worst);
+  if (compared != (m->nkey > 1 ? 2 : 1) || !(worst <= 1e-12))
+    fail("(k) keyframes differ from the .npz rows");
 }
 
 int motionMain(int argc, char** argv) {

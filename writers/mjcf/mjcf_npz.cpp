@@ -25,7 +25,8 @@ std::string npyBytes(const NpyMember& m) {
   std::string shape;
   for (size_t d : m.shape) shape += (shape.empty() ? "" : ", ") + std::to_string(d);
   shape = "(" + shape + (m.shape.size() == 1 ? ",)" : ")");  // (), (3,), (3, 4)
-  std::string dict = "{'descr': '" + m.descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
+  std::string dict =
+      "{'descr': '" + m.descr + "', 'fortran_order': False, 'shape': " + shape + ", }";
   const size_t prefix = 10;  // magic (6), version (2), header length (2)
   while ((prefix + dict.size() + 1) % 64 != 0) dict += ' ';
   dict += '\n';
@@ -72,14 +73,19 @@ Result<NpyMember> npyStrings(const std::string& name, const std::vector<std::str
     const std::string& s = values[i];
     for (size_t at = 0; at < s.size();) {
       const auto c = static_cast<unsigned char>(s[at]);
-      const int extra = c < 0x80 ? 0 : (c >> 5) == 6 ? 1 : (c >> 4) == 14 ? 2 : (c >> 3) == 30 ? 3 : -1;
+      const int extra = c < 0x80         ? 0
+                        : (c >> 5) == 6  ? 1
+                        : (c >> 4) == 14 ? 2
+                        : (c >> 3) == 30 ? 3
+                                         : -1;
       if (extra < 0 || (extra > 0 && at + size_t(extra) >= s.size()))
         return makeError("npz writer: '" + name + "' entry " + std::to_string(i) + " is not UTF-8");
       uint32_t cp = extra == 0 ? c : c & (0x3fu >> extra);
       for (int k = 1; k <= extra; ++k) {
         const auto t = static_cast<unsigned char>(s[at + size_t(k)]);
         if ((t >> 6) != 2)
-          return makeError("npz writer: '" + name + "' entry " + std::to_string(i) + " is not UTF-8");
+          return makeError("npz writer: '" + name + "' entry " + std::to_string(i) +
+                           " is not UTF-8");
         cp = (cp << 6) | (t & 0x3f);
       }
       points[i].push_back(cp);

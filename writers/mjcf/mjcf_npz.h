@@ -20,10 +20,10 @@
 namespace smpl {
 
 struct NpyMember {
-  std::string name;          // "qpos" (stored as "qpos.npy")
-  std::string descr;         // numpy dtype text: "<f8" or "<U12"
+  std::string name;           // "qpos" (stored as "qpos.npy")
+  std::string descr;          // numpy dtype text: "<f8" or "<U12"
   std::vector<size_t> shape;  // {} a scalar, {T, nq}, ...
-  std::string data;          // the raw little-endian elements, C order
+  std::string data;           // the raw little-endian elements, C order
 };
 
 // float64 (little-endian) members.

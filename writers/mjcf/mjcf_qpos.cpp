@@ -1,7 +1,7 @@
 // qpos rows of a clip (mjcf_qpos.h).
 #include "writers/mjcf/mjcf_qpos.h"
 
-#include <cmath>
+#include "core/math/libm.h"
 
 namespace smpl {
 namespace {
@@ -26,15 +26,15 @@ void pushQuaternion(const Eigen::Matrix3d& r, std::vector<double>* out) {
 
 Status checkTracks(const Asset& asset, const AnimationClip& clip, int root) {
   const size_t frames = clip.times.size(), joints = asset.skeleton.names.size();
-  if (clip.rotations.size() != joints || (!clip.root_translation.empty() &&
-                                          clip.root_translation.size() != frames))
+  if (clip.rotations.size() != joints ||
+      (!clip.root_translation.empty() && clip.root_translation.size() != frames))
     return makeError("MJCF writer: clip '" + clip.name + "' tracks do not match its " +
                      std::to_string(frames) + " frames and " + std::to_string(joints) + " joints");
   for (size_t k = 0; k < joints; ++k) {
     if (clip.rotations[k].size() != frames)
       return makeError("MJCF writer: clip '" + clip.name + "' joint " + asset.skeleton.names[k] +
-                       " has " + std::to_string(clip.rotations[k].size()) + " rotation keys, expected " +
-                       std::to_string(frames));
+                       " has " + std::to_string(clip.rotations[k].size()) +
+                       " rotation keys, expected " + std::to_string(frames));
     if (int(k) == root || clip.joint_translations.empty()) continue;
     const Eigen::Vector3d rest = asset.skeleton.rest_local.row(Eigen::Index(k)).transpose();
     for (const Eigen::Vector3d& p : clip.joint_translations[k])
@@ -63,9 +63,12 @@ std::vector<int> mjcfBodyOrder(const Skeleton& s) {
 }
 
 Eigen::Vector3d mjcfHingeAngles(const Eigen::Matrix3d& r) {
-  const double a = std::atan2(-r(1, 2), r(2, 2));
-  const Eigen::Matrix3d m = Eigen::AngleAxisd(-a, Eigen::Vector3d::UnitX()).toRotationMatrix() * r;
-  return {a, std::atan2(m(0, 2), m(2, 2)), std::atan2(m(1, 0), m(1, 1))};
+  const double a = libm::atan2(-r(1, 2), r(2, 2));
+  const double ca = libm::cos(a), sa = libm::sin(a);
+  Eigen::Matrix3d undo_x;  // Rx(-a)
+  undo_x << 1, 0, 0, 0, ca, sa, 0, -sa, ca;
+  const Eigen::Matrix3d m = undo_x * r;
+  return {a, libm::atan2(m(0, 2), m(2, 2)), libm::atan2(m(1, 0), m(1, 1))};
 }
 
 Result<MjcfMotion> mjcfMotion(const Asset& asset, const AnimationClip& clip,
@@ -84,7 +87,8 @@ Result<MjcfMotion> mjcfMotion(const Asset& asset, const AnimationClip& clip,
     if (k == root || !hinge)
       m.joint_names.push_back(s.names[size_t(k)]);
     else
-      for (const char* axis : {"_x", "_y", "_z"}) m.joint_names.push_back(s.names[size_t(k)] + axis);
+      for (const char* axis : {"_x", "_y", "_z"})
+        m.joint_names.push_back(s.names[size_t(k)] + axis);
   const Eigen::Matrix3d c = zUpTurn();
   m.qpos.reserve(clip.times.size() * size_t(m.nq));
   for (size_t f = 0; f < clip.times.size(); ++f) {

@@ -39,10 +39,10 @@ namespace smpl {
 
 struct MjcfMotion {
   int nq = 0;
-  std::vector<double> qpos;               // T x nq, row-major
-  std::vector<double> times;              // T seconds
+  std::vector<double> qpos;   // T x nq, row-major
+  std::vector<double> times;  // T seconds
   double fps = 0.0;
-  std::vector<std::string> joint_names;   // the MuJoCo joints in qpos order (the free root first)
+  std::vector<std::string> joint_names;  // the MuJoCo joints in qpos order (the free root first)
 };
 
 // The written model's bodies (skeleton joints) in MuJoCo's order: depth first

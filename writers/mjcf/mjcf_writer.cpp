@@ -32,6 +32,13 @@ std::string num(double v) {
   return text;
 }
 
+// `v` for a reader (%g: "120", not the shortest round-trip "1.2e+02").
+std::string plain(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
 // Y up -> Z up: +90 degrees about X, (x, y, z) -> (x, -z, y).
 Eigen::Vector3d zUp(const Eigen::Vector3d& p) { return {p.x(), -p.z(), p.y()}; }
 
@@ -199,7 +206,8 @@ std::string keyframes(const MjcfMotion& m) {
   for (size_t f = 0; f < frames; ++f) {
     out += "    <key name=\"frame_" + std::to_string(f) + "\" time=\"" + num(m.times[f]) +
            "\" qpos=\"";
-    for (int i = 0; i < m.nq; ++i) out += (i ? " " : "") + num(m.qpos[f * size_t(m.nq) + size_t(i)]);
+    for (int i = 0; i < m.nq; ++i)
+      out += (i ? " " : "") + num(m.qpos[f * size_t(m.nq) + size_t(i)]);
     out += "\"/>\n";
   }
   return out + "  </keyframe>\n";
@@ -245,8 +253,10 @@ struct MjcfWriter : Writer {
            num(options.density) + " kg/m^3, mesh volume " + num(parts->mesh_volume) + " m^3 -->\n";
     if (!asset.animations.empty())
       out += "  <!-- reference motion: " + std::to_string(motion.times.size()) + " frames at " +
-             num(motion.fps) + " fps, nq " + std::to_string(motion.nq) + "; qpos of every frame in " +
-             escaped(options.buffer_uri.empty() ? "the .qpos.npz beside this file" : options.buffer_uri) +
+             plain(motion.fps) + " fps, nq " + std::to_string(motion.nq) +
+             "; qpos of every frame in " +
+             escaped(options.buffer_uri.empty() ? "the .qpos.npz beside this file"
+                                                : options.buffer_uri) +
              ", the first " + std::to_string(std::min(motion.times.size(), kMaxKeyframes)) +
              " as keyframes -->\n";
     out += "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n";
