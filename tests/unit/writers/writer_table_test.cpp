@@ -179,6 +179,11 @@ TEST(WriterTable, MjcfRowWritesTheMotionBesideTheXml) {
   EXPECT_EQ(gltfBufferPath(r, "DIR/walk.xml"), "DIR/walk.qpos.npz");
   r.out = "DIR/body.glb";
   EXPECT_EQ(gltfBufferPath(r, r.out), "");
+  // The motion options apply to .xml as to the other animated formats.
+  Result<Settings> s = parse({"--model", "builtin", "--motion", "walk.npz", "--out", "a.xml",
+                              "--fps", "30", "--frames", "0:10", "--root-motion", "in-place"});
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_TRUE(checkRequest(s->request).ok()) << checkRequest(s->request).message();
 }
 
 TEST(WriterTable, AStaticRowRefusesMotions) {
