@@ -15,10 +15,10 @@ Volume: sum over triangles of v0 . (v1 x v2) / 6 (signed tetrahedra from the
 origin, divergence theorem), in float64.
 
     mjcf_reference.py --model MODEL.npz --motion MOTION.npz --qpos BODY.qpos.npz
-                      [--first A] OUT.txt
+                      [--first A] [--step S] OUT.txt
         the reference motion check (mjcf_check --motion): the posed joints of
-        output frames 0, T/2 and T-1 (source frame A + i; the export's
-        --frames A:, no resampling) computed here: betas = the motion's
+        output frames 0, T/2 and T-1 (source frame A + S i: the export's
+        --frames A: and an integer --fps ratio S, so no interpolation) computed here: betas = the motion's
         first min(16, B) (as smpl-export takes them), model_math.shape, one
         Rodrigues rotation per joint from the motion's axis-angle poses
         (joints matched by name; absent ones at rest), forward kinematics over
@@ -127,17 +127,18 @@ def motion_reference(args):
     assert qpos.dtype == np.float64 and qpos.ndim == 2, (qpos.dtype, qpos.shape)
     count = len(qpos)
     checked = sorted({0, count // 2, count - 1})
-    joints = posed_joints(args.model, args.motion, [args.first + i for i in checked])
+    source = {i: args.first + args.step * i for i in checked}
+    joints = posed_joints(args.model, args.motion, sorted(source.values()))
     with open(args.out, "w") as f:
         f.write("names %d %s\n" % (len(names), " ".join(names)))
         f.write("frames %d\nfps %.17g\n" % (count, fps))
         for i in sorted(set(checked) | {min(count, 100) - 1}):
             f.write("row %d %s\n" % (i, " ".join("%.17g" % v for v in qpos[i])))
         for i in checked:
-            for name, p in joints[args.first + i]:
+            for name, p in joints[source[i]]:
                 f.write("pose %d %s %.17g %.17g %.17g\n" % (i, name, p[0], p[1], p[2]))
-    print("qpos (%d, %d) at %g fps, %d joint names; posed joints of frames %s (source + %d)"
-          % (count, qpos.shape[1], fps, len(names), checked, args.first))
+    print("qpos (%d, %d) at %g fps, %d joint names; posed joints of frames %s (source %s)"
+          % (count, qpos.shape[1], fps, len(names), checked, [source[i] for i in checked]))
 
 
 def reorder_hinges(src, out):
@@ -161,6 +162,7 @@ def main():
     ap.add_argument("--motion")
     ap.add_argument("--qpos")
     ap.add_argument("--first", type=int, default=0)
+    ap.add_argument("--step", type=int, default=1)
     ap.add_argument("--reorder-hinges")
     ap.add_argument("out")
     args = ap.parse_args()

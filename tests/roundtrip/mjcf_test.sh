@@ -9,7 +9,8 @@
 #        motion        the SMPL-X fixture with the AMASS SMPL-X motion (120 frames, 60 fps,
 #                      Z-up world, trans): the .qpos.npz and keyframes against numpy's posed
 #                      joints (mjcf_check --motion), and the wrong readings (Rz Ry Rx, x y z w)
-#        motion_ball   the same with --mjcf-joints ball and --frames 10:50
+#        motion_ball   the same with --mjcf-joints ball, --frames 10:50 and --fps 30 (every
+#                      second source frame: 20 frames)
 #        refusals      hostile values and options that do not apply: one line, exit 1, no file;
 #                      and the same bytes twice
 set -u
@@ -46,15 +47,15 @@ case "$case" in
     ;;
   motion | motion_ball)
     motion=$fixtures/motions/amass_smplx.npz
-    extra=() first=0
-    [ "$case" = motion_ball ] && extra=(--mjcf-joints ball --frames 10:50) first=10
+    extra=() first=0 step=1
+    [ "$case" = motion_ball ] && extra=(--mjcf-joints ball --frames 10:50 --fps 30) first=10 step=2
     rm -f "$work/$case.xml" "$work/$case.qpos.npz"
     run "$exe" --model "$model" --motion "$motion" --out "$work/$case.xml" --quiet "${extra[@]}"
     [ -s "$work/$case.qpos.npz" ] || { echo "FAIL: no $case.qpos.npz beside the XML"; exit 1; }
     grep -q "\"$case.qpos.npz\"" "$work/$case.xml.smpl.json" ||
       { echo "FAIL: the sidecar does not record $case.qpos.npz"; exit 1; }
     run "$python" "$ref_py" --model "$model" --motion "$motion" --qpos "$work/$case.qpos.npz" \
-      --first $first "$work/${case}_motion.txt"
+      --first $first --step $step "$work/${case}_motion.txt"
     run "$check" --motion "$work/$case.xml" "$work/${case}_motion.txt"
     run "$check" --motion "$work/$case.xml" "$work/${case}_motion.txt" --quat-xyzw
     # Deterministic: the same XML and .npz bytes again.
