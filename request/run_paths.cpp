@@ -161,8 +161,10 @@ RunPaths runPaths(const ExportRequest& r, const std::vector<std::string>& outs,
 
 std::string gltfBufferPath(const ExportRequest& r, const std::string& out) {
   const WriterFormat* format = writerFormatForPath(out);
-  if (r.gltf_embed || !format || !format->external_buffer) return "";
   const size_t dot = out.rfind('.');  // the row's extension, whatever its case
+  if (format && !format->motion_file.empty() && (!r.motions.empty() || !r.motion_dir.empty()))
+    return out.substr(0, dot) + format->motion_file;  // MJCF: <stem>.qpos.npz
+  if (r.gltf_embed || !format || !format->external_buffer) return "";
   return out.substr(0, dot) + ".bin";
 }
 

@@ -34,8 +34,9 @@ RunPaths runPaths(const ExportRequest& request, const std::vector<std::string>& 
                   const std::vector<std::string>& motions);
 
 // The external buffer file written beside an output whose writer row has
-// one (writers/writer.h external_buffer: DIR/body.gltf -> DIR/body.bin), or ""
-// (GLB, FBX, or --gltf-embed).
+// one (writers/writer.h external_buffer: DIR/body.gltf -> DIR/body.bin; with
+// a motion, motion_file: DIR/body.xml -> DIR/body.qpos.npz), or "" (GLB, FBX,
+// --gltf-embed, an MJCF file without a motion).
 std::string gltfBufferPath(const ExportRequest& request, const std::string& out);
 
 // The guard, one line naming both paths (kind Usage, exit 1; no prefix):

@@ -84,8 +84,9 @@ std::deque<WriterFormat>& table() {
          true,
          false,
          &mjcfWriter(),
-         /*single_clip=*/false,
-         /*animated=*/false},
+         /*single_clip=*/true,
+         /*animated=*/true,
+         /*motion_file=*/".qpos.npz"},
     };
   }();
   return rows;

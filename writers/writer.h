@@ -108,9 +108,13 @@ struct WriterFormat {
   // true: the file holds one animation (BVH); the request refuses a second
   // --motion (request/check_request.cpp). Last: initialisers stay valid.
   bool single_clip = false;
-  // false: the file holds no animation (MJCF); the request refuses --motion
-  // and batch mode for it. Last, as above.
+  // false: the file holds no animation; the request refuses --motion and
+  // batch mode for it. Last, as above.
   bool animated = true;
+  // Non-empty: with a motion, the writer's Files::buffer is written beside
+  // the output as <stem> + this suffix (MJCF: ".qpos.npz", the reference
+  // motion as MuJoCo qpos; request/run_paths.h gltfBufferPath). Last, as above.
+  std::string motion_file = {};
 };
 
 // Every row, in usage order (glb, gltf, fbx, bvh, mjcf; test rows last). Rows stay where

@@ -17,14 +17,33 @@
 //   (b) 1000 mj_step under gravity: qpos and qvel finite at every step and no
 //       MuJoCo warning (an unstable simulation is reset by MuJoCo with a
 //       warning, which would hide a NaN).
+//
+//   mjcf_check --motion MODEL.xml MOTION.txt [--wrong-order | --quat-xyzw]
+//
+// The reference motion (MOTION.txt from mjcf_reference.py --motion: the
+// .qpos.npz rows read by numpy and numpy's posed joints):
+//   (m) every name of the .npz's joint_names is a MuJoCo joint whose qpos
+//       address is the running offset of the row (the row is in MuJoCo's
+//       qpos order) and the row's length is nq; hinge values in [-pi, pi];
+//   (p) at frames 0, T/2 and T-1, qpos = the row (set joint by joint, by
+//       name), mj_kinematics: every body's xpos equals numpy's posed joint
+//       turned Z up within 1e-5 m;
+//   (k) the model has min(T, 100) keyframes; key 0 and the last key equal
+//       their .npz rows (|difference| <= 1e-12) at time i / fps.
+// A wrong reading must miss: --wrong-order (MODEL.xml with each body's
+// hinges listed z, y, x, so MuJoCo applies Rz Ry Rx) and --quat-xyzw (every
+// quaternion of the row read as x, y, z, w) require the (p) error to exceed
+// 1e-3 m and skip (m) and (k).
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -113,9 +132,161 @@ void checkSteps(const mjModel* m, mjData* d) {
               d->qpos[2]);
 }
 
+struct MotionRef {
+  std::vector<std::string> names;  // the MuJoCo joints in row order
+  int frames = 0;
+  double fps = 0.0;
+  std::vector<std::pair<int, std::vector<double>>> rows;  // frame, qpos row
+  std::vector<std::pair<int, Joint>> poses;               // frame, posed joint (Y up)
+};
+
+MotionRef readMotion(const char* path) {
+  std::ifstream in(path);
+  if (!in) fail(std::string("cannot read ") + path);
+  MotionRef r;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string kind;
+    s >> kind;
+    if (kind == "names") {
+      size_t n = 0;
+      s >> n;
+      r.names.resize(n);
+      for (std::string& name : r.names) s >> name;
+    } else if (kind == "frames") {
+      s >> r.frames;
+    } else if (kind == "fps") {
+      s >> r.fps;
+    } else if (kind == "row") {
+      int f = 0;
+      s >> f;
+      std::vector<double> row;
+      for (double v; s >> v;) row.push_back(v);
+      r.rows.emplace_back(f, row);
+    } else if (kind == "pose") {
+      std::pair<int, Joint> p;
+      s >> p.first >> p.second.name >> p.second.p[0] >> p.second.p[1] >> p.second.p[2];
+      r.poses.push_back(p);
+    }
+  }
+  if (r.names.empty() || r.rows.empty() || r.poses.empty())
+    fail(std::string(path) + ": incomplete");
+  return r;
+}
+
+int widthOf(int type) { return type == mjJNT_FREE ? 7 : type == mjJNT_BALL ? 4 : 1; }
+
+// (m): the row is MuJoCo's qpos, joint by joint, in order.
+void checkLayout(const mjModel* m, const MotionRef& r) {
+  int offset = 0;
+  for (const std::string& name : r.names) {
+    const int j = mj_name2id(m, mjOBJ_JOINT, name.c_str());
+    if (j < 0) fail("(m) no joint named '" + name + "'");
+    if (m->jnt_qposadr[j] != offset)
+      fail("(m) joint '" + name + "' at qpos " + std::to_string(m->jnt_qposadr[j]) +
+           ", the row has it at " + std::to_string(offset));
+    offset += widthOf(m->jnt_type[j]);
+  }
+  if (offset != m->nq)
+    fail("(m) the joints cover " + std::to_string(offset) + " of nq " + std::to_string(m->nq));
+  for (const auto& row : r.rows) {
+    if (int(row.second.size()) != m->nq)
+      fail("(m) row " + std::to_string(row.first) + " length differs from nq");
+    for (int j = 0; j < m->njnt; ++j)
+      if (m->jnt_type[j] == mjJNT_HINGE && std::fabs(row.second[size_t(m->jnt_qposadr[j])]) > M_PI)
+        fail("(m) a hinge angle outside [-pi, pi] at frame " + std::to_string(row.first));
+  }
+  std::printf("(m) %zu joints, nq %d: the .npz row order is MuJoCo's; hinge angles in [-pi, pi]\n",
+              r.names.size(), m->nq);
+}
+
+// qpos from a row, joint by joint by name; `xyzw`: quaternions read x, y, z, w.
+void setQpos(const mjModel* m, mjData* d, const MotionRef& r, const std::vector<double>& row,
+             bool xyzw) {
+  size_t at = 0;
+  for (const std::string& name : r.names) {
+    const int j = mj_name2id(m, mjOBJ_JOINT, name.c_str());
+    if (j < 0) fail("(m) no joint named '" + name + "'");
+    const int w = widthOf(m->jnt_type[j]), adr = m->jnt_qposadr[j];
+    for (int i = 0; i < w; ++i) d->qpos[adr + i] = row[at + size_t(i)];
+    const int q = w == 7 ? 3 : w == 4 ? 0 : -1;  // the quaternion's first value
+    if (xyzw && q >= 0)
+      for (int i = 0; i < 4; ++i) d->qpos[adr + q + i] = row[at + size_t(q + (i + 3) % 4)];
+    at += size_t(w);
+  }
+}
+
+// (p): the largest body error over the checked frames.
+double checkPoses(const mjModel* m, mjData* d, const MotionRef& r, bool xyzw) {
+  double worst = 0.0;
+  for (const auto& row : r.rows) {
+    std::vector<Joint> joints;
+    for (const auto& p : r.poses)
+      if (p.first == row.first) joints.push_back(p.second);
+    if (joints.empty()) continue;  // a keyframe row only
+    mj_resetData(m, d);
+    setQpos(m, d, r, row.second, xyzw);
+    mj_kinematics(m, d);
+    const double e = maxError(m, d, joints, true);
+    std::printf("(p) frame %d: max |xpos - numpy posed joint| = %.3g m over %zu bodies\n",
+                row.first, e, joints.size());
+    worst = std::fmax(worst, e);
+  }
+  return worst;
+}
+
+// (k): keyframes equal the .npz rows.
+void checkKeys(const mjModel* m, const MotionRef& r) {
+  const int want = std::min(r.frames, 100);
+  if (m->nkey != want)
+    fail("(k) " + std::to_string(m->nkey) + " keyframes, expected " + std::to_string(want));
+  double worst = 0.0;
+  int compared = 0;
+  for (const auto& row : r.rows) {
+    if (row.first >= m->nkey || (row.first != 0 && row.first != m->nkey - 1)) continue;
+    for (int i = 0; i < m->nq; ++i)
+      worst =
+          std::fmax(worst, std::fabs(m->key_qpos[row.first * m->nq + i] - row.second[size_t(i)]));
+    if (std::fabs(m->key_time[row.first] - row.first / r.fps) > 1e-9)
+      fail("(k) key " + std::to_string(row.first) + " time differs from i / fps");
+    ++compared;
+  }
+  std::printf("(k) %d keyframes (T = %d); keys 0 and %d: max |key_qpos - .npz row| = %.3g\n",
+              m->nkey, r.frames, m->nkey - 1, worst);
+  if (compared != (m->nkey > 1 ? 2 : 1) || !(worst <= 1e-12))
+    fail("(k) keyframes differ from the .npz rows");
+}
+
+int motionMain(int argc, char** argv) {
+  const std::string mode = argc == 5 ? argv[4] : "";
+  if ((argc != 4 && argc != 5) || (argc == 5 && mode != "--wrong-order" && mode != "--quat-xyzw"))
+    fail("usage: mjcf_check --motion MODEL.xml MOTION.txt [--wrong-order | --quat-xyzw]");
+  const MotionRef r = readMotion(argv[3]);
+  char error[1000] = "";
+  mjModel* m = mj_loadXML(argv[2], nullptr, error, sizeof error);
+  if (!m) fail(std::string("(m) mj_loadXML: ") + error);
+  mjData* d = mj_makeData(m);
+  if (mode.empty()) checkLayout(m, r);
+  const double worst = checkPoses(m, d, r, mode == "--quat-xyzw");
+  if (mode.empty()) {
+    std::printf("(p) max joint error %.3g m (tolerance 1e-5)\n", worst);
+    if (!(worst <= 1e-5)) fail("(p) MuJoCo's bodies differ from numpy's posed joints");
+    checkKeys(m, r);
+  } else {
+    std::printf("(p) %s: max joint error %.3g m (must exceed 1e-3)\n", mode.c_str(), worst);
+    if (!(worst > 1e-3)) fail("(p) " + mode + " matches too: the check cannot tell the convention");
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+  std::printf("mjcf_check --motion: OK\n");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 2 && std::string(argv[1]) == "--motion") return motionMain(argc, argv);
   if (argc != 4) fail("usage: mjcf_check MODEL.xml REFERENCE.txt DENSITY");
   double volume = 0.0;
   std::vector<Joint> joints;

@@ -14,7 +14,26 @@ a source other than the MJCF writer.
 Volume: sum over triangles of v0 . (v1 x v2) / 6 (signed tetrahedra from the
 origin, divergence theorem), in float64.
 
-OUT.txt: "volume V" then one "joint NAME X Y Z" line per joint (metres).
+    mjcf_reference.py --model MODEL.npz --motion MOTION.npz --qpos BODY.qpos.npz
+                      [--first A] [--step S] OUT.txt
+        the reference motion check (mjcf_check --motion): the posed joints of
+        output frames 0, T/2 and T-1 (source frame A + S i: the export's
+        --frames A: and an integer --fps ratio S, so no interpolation) computed here: betas = the motion's
+        first min(16, B) (as smpl-export takes them), model_math.shape, one
+        Rodrigues rotation per joint from the motion's axis-angle poses
+        (joints matched by name; absent ones at rest), forward kinematics over
+        the kintree (model_math.forward), plus trans, an AMASS motion's Z-up
+        world turned Y up (-90 degrees about X, as the exporter does); and the
+        .qpos.npz read with numpy (np.load, no pickle): its joint names, fps,
+        the rows of those frames and the row of the last keyframe (min(T, 100)-1).
+
+    mjcf_reference.py --reorder-hinges BODY.xml OUT.xml
+        a copy of BODY.xml whose bodies list their hinges z, y, x (MuJoCo then
+        applies Rz Ry Rx: the wrong reading mjcf_check --wrong-order must catch).
+
+OUT.txt: "volume V" then one "joint NAME X Y Z" line per joint (metres);
+--motion: "names N NAME..", "frames T", "fps F", "row I Q..", "pose I NAME X Y Z"
+(model axes, Y up; mjcf_check turns them Z up).
 """
 import argparse
 import os
@@ -65,13 +84,92 @@ def from_model(path, betas):
     return list(zip(names, joints)), signed_volume(v_shaped, faces)
 
 
+# AMASS world (Z up) -> the exported model axes (Y up): -90 degrees about X.
+Z_UP_TO_Y_UP = np.array([[1.0, 0, 0], [0, 0, 1], [0, -1, 0]])
+
+
+def read_motion(path):
+    """Axis-angle poses (T, J, 3) with their joint names, trans (T, 3), betas, AMASS or not."""
+    data = np.load(path, allow_pickle=False)
+    if "root_orient" in data.files:  # AMASS SMPL-X release: split keys
+        keys = ("root_orient", "pose_body", "pose_jaw", "pose_eye", "pose_hand")
+        poses = np.concatenate([data[k] for k in keys], axis=1)
+    else:
+        poses = np.asarray(data["poses"], np.float64)
+    poses = poses.reshape(poses.shape[0], -1, 3)
+    trans = np.asarray(data["trans"], np.float64) if "trans" in data.files else np.zeros((len(poses), 3))
+    betas = np.asarray(data["betas"], np.float64) if "betas" in data.files else np.zeros(0)
+    amass = "mocap_framerate" in data.files or "mocap_frame_rate" in data.files
+    return poses, model_math.joint_names(poses.shape[1]), trans, betas, amass
+
+
+def posed_joints(model_path, motion_path, frames):
+    """Frame -> [(name, (3,) joint position, model axes)] for the source frames listed."""
+    model = model_math.load_model_npz(model_path)
+    poses, motion_names, trans, betas, amass = read_motion(motion_path)
+    b = min(model["shapedirs"].shape[2], 300)  # SMPL-X stores 300 shape + 100 expression columns
+    v_shaped, rest = model_math.shape(model, betas[:min(16, b)])
+    names = model_math.joint_names(len(model["parents"]))
+    column = {n: j for j, n in enumerate(motion_names)}
+    up = Z_UP_TO_Y_UP if amass else np.eye(3)
+    out = {}
+    for f in frames:
+        pose = np.array([poses[f, column[n]] if n in column else np.zeros(3) for n in names])
+        _, joints, _ = model_math.forward(model, v_shaped, rest, pose, model["weights"])
+        out[f] = list(zip(names, (joints + trans[f]) @ up.T))
+    return out
+
+
+def motion_reference(args):
+    q = np.load(args.qpos, allow_pickle=False)
+    assert sorted(q.files) == ["fps", "joint_names", "qpos"], q.files
+    qpos, names, fps = q["qpos"], [str(n) for n in q["joint_names"]], float(q["fps"])
+    assert qpos.dtype == np.float64 and qpos.ndim == 2, (qpos.dtype, qpos.shape)
+    count = len(qpos)
+    checked = sorted({0, count // 2, count - 1})
+    source = {i: args.first + args.step * i for i in checked}
+    joints = posed_joints(args.model, args.motion, sorted(source.values()))
+    with open(args.out, "w") as f:
+        f.write("names %d %s\n" % (len(names), " ".join(names)))
+        f.write("frames %d\nfps %.17g\n" % (count, fps))
+        for i in sorted(set(checked) | {min(count, 100) - 1}):
+            f.write("row %d %s\n" % (i, " ".join("%.17g" % v for v in qpos[i])))
+        for i in checked:
+            for name, p in joints[source[i]]:
+                f.write("pose %d %s %.17g %.17g %.17g\n" % (i, name, p[0], p[1], p[2]))
+    print("qpos (%d, %d) at %g fps, %d joint names; posed joints of frames %s (source %s)"
+          % (count, qpos.shape[1], fps, len(names), checked, [source[i] for i in checked]))
+
+
+def reorder_hinges(src, out):
+    lines = open(src).read().split("\n")
+    swapped = 0
+    for i in range(len(lines) - 2):
+        if ('_x" type="hinge"' in lines[i] and '_y" type="hinge"' in lines[i + 1]
+                and '_z" type="hinge"' in lines[i + 2]):
+            lines[i], lines[i + 2] = lines[i + 2], lines[i]
+            swapped += 1
+    assert swapped > 0, "no hinge triple in " + src
+    open(out, "w").write("\n".join(lines))
+    print("%d bodies' hinges listed z, y, x" % swapped)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--glb")
     ap.add_argument("--model")
     ap.add_argument("--betas", default="")
+    ap.add_argument("--motion")
+    ap.add_argument("--qpos")
+    ap.add_argument("--first", type=int, default=0)
+    ap.add_argument("--step", type=int, default=1)
+    ap.add_argument("--reorder-hinges")
     ap.add_argument("out")
     args = ap.parse_args()
+    if args.motion:
+        return motion_reference(args)
+    if args.reorder_hinges:
+        return reorder_hinges(args.reorder_hinges, args.out)
     if args.glb:
         joints, volume = from_glb(args.glb)
     else:

@@ -6,6 +6,11 @@
 #   CASE builtin       the built-in body, hinges, motors; reference from its GLB export
 #        smplx         the SMPL-X fixture with betas, --density 985; reference: numpy on the model file
 #        smplx_ball    the same with --mjcf-joints ball
+#        motion        the SMPL-X fixture with the AMASS SMPL-X motion (120 frames, 60 fps,
+#                      Z-up world, trans): the .qpos.npz and keyframes against numpy's posed
+#                      joints (mjcf_check --motion), and the wrong readings (Rz Ry Rx, x y z w)
+#        motion_ball   the same with --mjcf-joints ball, --frames 10:50 and --fps 30 (every
+#                      second source frame: 20 frames)
 #        refusals      hostile values and options that do not apply: one line, exit 1, no file;
 #                      and the same bytes twice
 set -u
@@ -40,15 +45,38 @@ case "$case" in
       [ "$n" = 54 ] || { echo "FAIL: $n ball joints, expected 54"; exit 1; }
     fi
     ;;
+  motion | motion_ball)
+    motion=$fixtures/motions/amass_smplx.npz
+    extra=() first=0 step=1
+    [ "$case" = motion_ball ] && extra=(--mjcf-joints ball --frames 10:50 --fps 30) first=10 step=2
+    rm -f "$work/$case.xml" "$work/$case.qpos.npz"
+    run "$exe" --model "$model" --motion "$motion" --out "$work/$case.xml" --quiet "${extra[@]}"
+    [ -s "$work/$case.qpos.npz" ] || { echo "FAIL: no $case.qpos.npz beside the XML"; exit 1; }
+    grep -q "\"$case.qpos.npz\"" "$work/$case.xml.smpl.json" ||
+      { echo "FAIL: the sidecar does not record $case.qpos.npz"; exit 1; }
+    run "$python" "$ref_py" --model "$model" --motion "$motion" --qpos "$work/$case.qpos.npz" \
+      --first $first --step $step "$work/${case}_motion.txt"
+    run "$check" --motion "$work/$case.xml" "$work/${case}_motion.txt"
+    run "$check" --motion "$work/$case.xml" "$work/${case}_motion.txt" --quat-xyzw
+    # Deterministic: the same XML and .npz bytes again.
+    cp "$work/$case.xml" "$work/$case.first.xml" && cp "$work/$case.qpos.npz" "$work/$case.first.npz"
+    run "$exe" --model "$model" --motion "$motion" --out "$work/$case.xml" --quiet "${extra[@]}"
+    cmp "$work/$case.xml" "$work/$case.first.xml" && cmp "$work/$case.qpos.npz" "$work/$case.first.npz" ||
+      { echo "FAIL: two exports with the motion differ"; exit 1; }
+    if [ "$case" = motion ]; then
+      run "$python" "$ref_py" --reorder-hinges "$work/$case.xml" "$work/${case}_zyx.xml"
+      run "$check" --motion "$work/${case}_zyx.xml" "$work/${case}_motion.txt" --wrong-order
+    fi
+    ;;
   refusals)
     failed=0
-    refuse() {  # expected stderr text, args...
+    refuse() {  # expected stderr text, args...; exit status ${code:-1} (3: an export error)
       local text=$1; shift
-      rm -f "$work/r.xml"
+      rm -f "$work/r.xml" "$work/r.qpos.npz"
       "$exe" "$@" >"$work/stdout" 2>"$work/stderr"
       local got=$?
-      if [ "$got" != 1 ] || ! grep -qF -- "$text" "$work/stderr" || [ "$(wc -l <"$work/stderr")" != 1 ] ||
-        [ -e "$work/r.xml" ]; then
+      if [ "$got" != "${code:-1}" ] || ! grep -qF -- "$text" "$work/stderr" ||
+        [ "$(wc -l <"$work/stderr")" != 1 ] || [ -e "$work/r.xml" ] || [ -e "$work/r.qpos.npz" ]; then
         echo "FAIL: $* -> exit $got, stderr: $(cat "$work/stderr") (expected '$text')"
         failed=1
       else
@@ -65,8 +93,11 @@ case "$case" in
     refuse "--mjcf-joints" --model builtin --out "$work/r.bvh" --mjcf-joints ball
     refuse "--draco" --model builtin --out "$work/r.xml" --draco
     refuse "--bvh-units" --model builtin --out "$work/r.xml" --bvh-units cm
-    refuse "--motion: mjcf output holds no animation" --model builtin --out "$work/r.xml" \
-      --motion "$fixtures/motions/smpl_72.npz"
+    refuse "--motion: mjcf output holds one motion" --model builtin --out "$work/r.xml" \
+      --motion "$fixtures/motions/smpl_72.npz" --motion "$fixtures/motions/smpl_72.npz"
+    # --root-bone moves the pelvis up and down with the AMASS motion's height: no hinge holds that.
+    code=3 refuse "MJCF writer: joint pelvis moves away from its rest offset" --model builtin \
+      --out "$work/r.xml" --motion "$fixtures/motions/amass_smplh.npz" --root-bone
     # Deterministic: the same bytes twice.
     "$exe" --model builtin --out "$work/a.xml" --quiet && "$exe" --model builtin --out "$work/b.xml" --quiet &&
       cmp "$work/a.xml" "$work/b.xml" || { echo "FAIL: two exports differ"; failed=1; }

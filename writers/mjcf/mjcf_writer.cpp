@@ -2,6 +2,7 @@
 // capsules from mjcf_parts.h, Z up.
 #include "writers/mjcf/mjcf_writer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,12 +11,15 @@
 #include <vector>
 
 #include "exporter/validate_asset.h"
+#include "writers/mjcf/mjcf_npz.h"
 #include "writers/mjcf/mjcf_parts.h"
+#include "writers/mjcf/mjcf_qpos.h"
 
 namespace smpl {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr size_t kMaxKeyframes = 100;  // <keyframe> holds the first min(T, 100) frames
 
 // The shortest %g text that reads back as `v`; "-0" is written "0".
 std::string num(double v) {
@@ -25,6 +29,13 @@ std::string num(double v) {
     std::snprintf(text, sizeof text, "%.*g", digits, v);
     if (std::strtod(text, nullptr) == v) break;
   }
+  return text;
+}
+
+// `v` for a reader (%g: "120", not the shortest round-trip "1.2e+02").
+std::string plain(double v) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%g", v);
   return text;
 }
 
@@ -172,8 +183,9 @@ Status checkInput(const Asset& asset, const WriterOptions& options) {
     return makeError("MJCF writer: joints '" + options.mjcf_joints + "'; expected hinge or ball");
   if (options.mjcf_motors && options.mjcf_joints != "hinge")
     return makeError("MJCF writer: motors drive hinge joints; ball joints have none");
-  if (!asset.animations.empty())
-    return makeError("MJCF writer: the asset has an animation; an MJCF file holds none");
+  if (asset.animations.size() > 1)
+    return makeError("MJCF writer: the asset has " + std::to_string(asset.animations.size()) +
+                     " animations; an MJCF file holds one");
   if (Status st = validateAsset(asset); !st) return st;  // the same rules for every writer
   if (asset.skeleton.names.empty()) return makeError("MJCF writer: the skeleton has no joints");
   std::set<std::string> seen;
@@ -186,19 +198,67 @@ Status checkInput(const Asset& asset, const WriterOptions& options) {
 
 double lowestY(const SkinnedMesh& m) { return double(m.positions.col(1).minCoeff()); }
 
+// <keyframe>: the first min(T, kMaxKeyframes) rows as <key name="frame_<i>">.
+std::string keyframes(const MjcfMotion& m) {
+  const size_t frames = std::min(m.times.size(), kMaxKeyframes);
+  if (frames == 0) return "";
+  std::string out = "  <keyframe>\n";
+  for (size_t f = 0; f < frames; ++f) {
+    out += "    <key name=\"frame_" + std::to_string(f) + "\" time=\"" + num(m.times[f]) +
+           "\" qpos=\"";
+    for (int i = 0; i < m.nq; ++i)
+      out += (i ? " " : "") + num(m.qpos[f * size_t(m.nq) + size_t(i)]);
+    out += "\"/>\n";
+  }
+  return out + "  </keyframe>\n";
+}
+
+// The <stem>.qpos.npz bytes: qpos (T, nq), fps (), joint_names (J,).
+Result<std::string> qposNpz(const MjcfMotion& m) {
+  Result<NpyMember> names = npyStrings("joint_names", m.joint_names);
+  if (!names) return names.error();
+  return npzBytes({npyDoubles("qpos", {m.times.size(), size_t(m.nq)}, m.qpos),
+                   npyDoubles("fps", {}, {m.fps}), std::move(*names)});
+}
+
 struct MjcfWriter : Writer {
   const char* name() const override { return "mjcf"; }
 
   Result<std::string> serialize(const Asset& asset, const WriterOptions& options) const override {
+    Result<Files> files = serializeFiles(asset, options);
+    if (!files) return files.error();
+    return std::move(files->bytes);
+  }
+
+  // The XML, and with a clip the qpos .npz as the buffer (mjcf_writer.h).
+  Result<Files> serializeFiles(const Asset& asset, const WriterOptions& options) const override {
     if (Status st = checkInput(asset, options); !st) return st.error();
     Result<MjcfParts> parts = mjcfParts(asset);
     if (!parts) return parts.error();
     const Context c{asset, options, *parts, treeOf(asset.skeleton)};
+    MjcfMotion motion;
+    std::string npz;
+    if (!asset.animations.empty()) {
+      Result<MjcfMotion> m = mjcfMotion(asset, asset.animations.front(), options.mjcf_joints);
+      if (!m) return m.error();
+      motion = std::move(*m);
+      Result<std::string> bytes = qposNpz(motion);
+      if (!bytes) return bytes.error();
+      npz = std::move(*bytes);
+    }
     std::string out = "<mujoco model=\"" + escaped(asset.name) + "\">\n";
     out += "  <!-- smpl-export: " + escaped(asset.metadata.model_kind) + " " +
            escaped(asset.metadata.model_name) +
            "; Z up (the model's Y up turned +90 degrees about X), metres, kilograms; density " +
            num(options.density) + " kg/m^3, mesh volume " + num(parts->mesh_volume) + " m^3 -->\n";
+    if (!asset.animations.empty())
+      out += "  <!-- reference motion: " + std::to_string(motion.times.size()) + " frames at " +
+             plain(motion.fps) + " fps, nq " + std::to_string(motion.nq) +
+             "; qpos of every frame in " +
+             escaped(options.buffer_uri.empty() ? "the .qpos.npz beside this file"
+                                                : options.buffer_uri) +
+             ", the first " + std::to_string(std::min(motion.times.size(), kMaxKeyframes)) +
+             " as keyframes -->\n";
     out += "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n";
     out += "  <option gravity=\"0 0 -9.81\" timestep=\"0.002\"/>\n";
     out += "  <default>\n    <joint damping=\"0.5\" armature=\"0.01\"/>\n";
@@ -207,8 +267,8 @@ struct MjcfWriter : Writer {
     out += "    <geom name=\"floor\" type=\"plane\" pos=\"0 0 " + num(lowestY(asset.mesh)) +
            "\" size=\"10 10 0.1\" contype=\"1\" conaffinity=\"1\"/>\n";
     writeBody(c, c.tree.root, 2, &out);
-    out += "  </worldbody>\n" + actuators(c) + "</mujoco>\n";
-    return out;
+    out += "  </worldbody>\n" + actuators(c) + keyframes(motion) + "</mujoco>\n";
+    return Files{std::move(out), std::move(npz)};
   }
 };
 

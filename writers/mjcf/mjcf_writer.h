@@ -32,11 +32,22 @@
 // (named as the hinge, gear 1, ctrlrange [-100, 100] N m, ctrllimited); with
 // ball joints motors are an error (MuJoCo motors drive scalar joints).
 //
+// Motion (at most one clip; the row is single_clip): the clip as MuJoCo
+// qpos rows (mjcf_qpos.h: free root position and quaternion, then per body
+// three hinge angles or a ball quaternion, Z up). serializeFiles returns them
+// as Files::buffer, the .npz (mjcf_npz.h) the request writes beside the XML
+// as <stem>.qpos.npz (the row's motion_file): `qpos` (T, nq) float64, `fps`
+// (), `joint_names` (J,) the MuJoCo joint names in qpos order. The XML holds
+// the first min(T, 100) rows as <keyframe><key name="frame_<i>" time="t_i"
+// qpos="..."/> (a longer clip would make the XML large; the .npz has them all)
+// and a comment naming the .npz (options.buffer_uri). serialize() returns
+// the XML alone.
+//
 // Numbers: the shortest text that reads back as the same double ("-0" as
-// 0); names XML-escaped. No clip is written (the request refuses --motion
-// for this format). Same asset, same bytes. Errors: a mesh without volume
-// (mjcf_parts.h), duplicate or empty joint names, density not in (0, 1e5],
-// joints not "hinge" or "ball".
+// 0), so a key's qpos equals the .npz row exactly; names XML-escaped. Same
+// asset, same bytes. Errors: a mesh without volume (mjcf_parts.h), duplicate
+// or empty joint names, density not in (0, 1e5], joints not "hinge" or
+// "ball", more than one clip, the clip errors of mjcf_qpos.h.
 //
 //   Result<std::string> xml = mjcfWriter().serialize(asset, WriterOptions{});
 #pragma once

@@ -17,6 +17,7 @@
 #include "cli/settings.h"
 #include "core/io/file_io.h"
 #include "request/check_request.h"
+#include "request/run_paths.h"
 #include "request/run_request.h"
 #include "writers/writer.h"
 
@@ -98,7 +99,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
     Result<Settings> batch = parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o",
                                     "--format", row.name.c_str()});
     ASSERT_TRUE(batch.ok()) << row.name << ": " << batch.message();
-    // A format that holds no animation (MJCF) refuses batch mode: its motions would be lost.
+    // A format that holds no animation refuses batch mode: its motions would be lost
+    // (every real row is animated now; AStaticRowRefusesMotions checks such a row).
     EXPECT_EQ(checkRequest(batch->request).ok(), row.animated)
         << row.name << ": " << checkRequest(batch->request).message();
     for (const std::string& ext : row.extensions) {
@@ -155,6 +157,48 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
   EXPECT_EQ(checkRequest(gone->request).message(),
             "--format: expected 'glb', 'gltf', 'fbx', 'bvh' or 'mjcf', got 'skel'");
   EXPECT_EQ(writerFormatForPath("a.skel"), nullptr);
+}
+
+TEST(WriterTable, MjcfRowWritesTheMotionBesideTheXml) {
+  const WriterFormat* mjcf = writerFormatByName("mjcf");
+  ASSERT_NE(mjcf, nullptr);
+  EXPECT_TRUE(mjcf->animated);
+  EXPECT_TRUE(mjcf->single_clip);
+  ExportRequest r;
+  r.model = "builtin";
+  r.out = "DIR/body.XML";
+  EXPECT_EQ(gltfBufferPath(r, r.out), "");  // no motion: the XML alone
+  r.motions = {"walk.npz"};
+  EXPECT_EQ(gltfBufferPath(r, r.out), "DIR/body.qpos.npz");
+  EXPECT_TRUE(checkRequest(r).ok()) << checkRequest(r).message();
+  r.motions = {"walk.npz", "run.npz"};
+  EXPECT_EQ(checkRequest(r).message(),
+            "--motion: mjcf output holds one motion; got 2 (one output per motion: --motion-dir)");
+  r.motions.clear();
+  r.motion_dir = "m";  // batch: every output has a motion
+  EXPECT_EQ(gltfBufferPath(r, "DIR/walk.xml"), "DIR/walk.qpos.npz");
+  r.out = "DIR/body.glb";
+  EXPECT_EQ(gltfBufferPath(r, r.out), "");
+  // The motion options apply to .xml as to the other animated formats.
+  Result<Settings> s = parse({"--model", "builtin", "--motion", "walk.npz", "--out", "a.xml",
+                              "--fps", "30", "--frames", "0:10", "--root-motion", "in-place"});
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_TRUE(checkRequest(s->request).ok()) << checkRequest(s->request).message();
+}
+
+TEST(WriterTable, AStaticRowRefusesMotions) {
+  WriterFormat row = skeletonRow();
+  row.name = "still";
+  row.extensions = {".still"};
+  row.animated = false;
+  ScopedWriterFormat still(row);
+  ExportRequest r;
+  r.model = "builtin";
+  r.out = "a.still";
+  EXPECT_TRUE(checkRequest(r).ok()) << checkRequest(r).message();
+  r.motions = {"walk.npz"};
+  EXPECT_EQ(checkRequest(r).message(),
+            "--motion: still output holds no animation (the model only)");
 }
 
 TEST(WriterTable, RowWithoutAMeshSkipsSkinAndMorphs) {
