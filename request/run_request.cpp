@@ -580,6 +580,10 @@ Result<ExportedBytes> exportToMemory(const ExportRequest& r, std::vector<Motion>
   if (const WriterFormat* format = writerFormatForPath(r.out);
       format && format->external_buffer && !r.gltf_embed)
     return usage(r.out + ": a .gltf held in memory needs --gltf-embed (its buffer is a file)");
+  if (const WriterFormat* format = writerFormatForPath(r.out);
+      format && !format->motion_file.empty() && !r.motions.empty())
+    return usage(r.out + ": with a motion, " + format->name + " writes <stem>" +
+                 format->motion_file + " beside it, which memory cannot hold: give an output path");
   ExportedBytes out;
   Result<ExportReport> report = runDecoded(r, std::move(motions), models, &out.bytes);
   if (!report) return report.error();

@@ -238,8 +238,9 @@ def export(model, motion=None, betas=None, format="glb", out=None, **options):
     motion: None (the rest pose), a path, a Motion (read_motion), or a dict of arrays in any
         layout the readers know (numpy or torch values; read as read_motion reads it).
     betas: (B,) shape coefficients (--betas), or None (the motion's, else zeros).
-    format: "glb" (default), "fbx", "bvh", "gltf" (needs gltf_embed=True in memory) when
-        out is None; with out, its extension decides.
+    format: "glb" (default), "fbx", "bvh", "gltf" (needs gltf_embed=True in memory), "xml"
+        (MJCF; with a motion it needs out: its qpos .npz is a second file) when out is
+        None; with out, its extension decides.
     out: None: return the output's bytes (nothing is written); a path: write it atomically,
         with its sidecar <out>.smpl.json, as the CLI does, and return the path.
     options: every CLI option, '-' -> '_' (max_influences=4 or "all", up="-y", preset="web",

@@ -46,6 +46,16 @@ def test_gltf_in_memory_needs_embed(se, tmp_path):
         tmp_path, "builtin", "gltf", "--gltf-embed")
 
 
+def test_mjcf_motion_in_memory_is_refused(se):
+    """An .xml with a motion is two files (the XML and <stem>.qpos.npz): memory
+    would keep one of them, so it is refused; without a motion the XML alone is
+    the whole output."""
+    model = se.load_model("builtin")
+    with pytest.raises(se.UsageError, match="qpos.npz beside it"):
+        se.export(model, motion=str(AMASS), format="xml")
+    assert se.export(model, format="xml").startswith(b"<mujoco")
+
+
 @pytest.mark.parametrize("dtype", ["float64", "float32"])
 def test_dict_exports_as_its_npz(se, tmp_path, dtype):
     """A dict of arrays (numpy, or torch tensors) exports the bytes the CLI writes for np.savez
