@@ -66,18 +66,7 @@ void buildSceneCamera(SceneContext& ctx, const SceneCameraClip& c, int64_t layer
 
   int64_t model = ctx.ids.id("camera/model");
   FbxNode& m = ctx.addObject("Model", model, "camera", "Model", "Camera");
-  m.add("Version").addInt32(232);
-  FbxNode& p = m.add("Properties70");  // the first key, for readers without animation
-  pVector(p, "Lcl Translation", "Lcl Translation", "", "A", position[0].x(), position[0].y(),
-          position[0].z());
-  pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", euler[0].x(), euler[0].y(), euler[0].z());
-  pVector(p, "Lcl Scaling", "Lcl Scaling", "", "A", 1, 1, 1);
-  pInt(p, "DefaultAttributeIndex", 0);
-  pEnum(p, "InheritType", 1);
-  m.add("MultiLayer").addInt32(0);
-  m.add("MultiTake").addInt32(0);
-  m.add("Shading").addBool(true);
-  m.add("Culling").addString("CullingOff");
+  addModelBody(m, position[0], euler[0]);  // the first key, for readers without animation
   ctx.connectOO(model, 0);
   addCameraAttribute(ctx, c, model);
   addPropertyCurves(ctx, "camera/T", "T", layer, model, "Lcl Translation", c.times, position,

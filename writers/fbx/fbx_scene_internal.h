@@ -59,6 +59,9 @@ void pVector(FbxNode& p70, const std::string& name, const char* type, const char
 // Properties70 (Lcl Translation x y z, no rotation, unit scale, attribute 0,
 // InheritType 1) and the display flags.
 void addModelBody(FbxNode& model, double x, double y, double z);
+// The same with a rest rotation: Euler XYZ degrees (a camera's first key).
+void addModelBody(FbxNode& model, const Eigen::Vector3d& translation,
+                  const Eigen::Vector3d& rotation_degrees);
 
 // 4x4 column-major matrix (FBX order: translation in elements 12..14).
 std::vector<double> translationMatrix(double x, double y, double z);

@@ -63,10 +63,14 @@ void pVector(FbxNode& p70, const std::string& name, const char* type, const char
 }
 
 void addModelBody(FbxNode& model, double x, double y, double z) {
+  addModelBody(model, Eigen::Vector3d(x, y, z), Eigen::Vector3d::Zero());
+}
+
+void addModelBody(FbxNode& model, const Eigen::Vector3d& t, const Eigen::Vector3d& r) {
   model.add("Version").addInt32(232);
   FbxNode& p = model.add("Properties70");
-  pVector(p, "Lcl Translation", "Lcl Translation", "", "A", x, y, z);
-  pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", 0, 0, 0);
+  pVector(p, "Lcl Translation", "Lcl Translation", "", "A", t.x(), t.y(), t.z());
+  pVector(p, "Lcl Rotation", "Lcl Rotation", "", "A", r.x(), r.y(), r.z());
   pVector(p, "Lcl Scaling", "Lcl Scaling", "", "A", 1, 1, 1);
   pInt(p, "DefaultAttributeIndex", 0);
   pEnum(p, "InheritType", 1);
