@@ -202,6 +202,7 @@ include(${CMAKE_CURRENT_LIST_DIR}/basis_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/dmpl_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/video_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/bvh_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/skeleton_names_tests.cmake)
 
 # --- --max-influences all: every joint an influence (SMPL-X: 55, 14 JOINTS/WEIGHTS
 # sets in glTF; FBX has no limit). Blender reads them all; the validator checks the GLB.
