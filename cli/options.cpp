@@ -277,6 +277,18 @@ const std::vector<OptionSpec> kOptions = {
      "with --motion it carries the pelvis' ground-plane motion (root motion), the pelvis keeps "
      "its height and rotation",
      [](V, S* s) { return s->request.asset.root_bone = true, Status(); }},
+    {"--skeleton-names", nullptr, "smpl|mixamo|ue5", Applies::Format, nullptr,
+     "bone names: smpl (default) the model's joint names; mixamo (mixamorig:Hips, ...) or ue5 "
+     "(the UE5 Mannequin's pelvis, thigh_l, ...) for those rigs' retarget presets; joints the rig "
+     "has no bone for keep their names, morph target names stay; the table: {retargeting-page}",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--skeleton-names", {"smpl", "mixamo", "ue5"});
+       if (!c) return Status(c.error());
+       s->request.asset.skeleton_names = *c == 0   ? SkeletonNames::Smpl
+                                         : *c == 1 ? SkeletonNames::Mixamo
+                                                   : SkeletonNames::Ue5;
+       return Status();
+     }},
     {"--dmpl", nullptr, "FILE|DIR", Applies::Mesh, nullptr,
      "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "
@@ -522,7 +534,8 @@ std::string expand(std::string text) {
       {"{extensions}", extensions},
       {"{extensions|}", bars},
       {"{presets}", text.find("{presets}") == std::string::npos ? "" : presetsHelp()},
-      {"{motions-page}", docsPageReference("motions.md")}};
+      {"{motions-page}", docsPageReference("motions.md")},
+      {"{retargeting-page}", docsPageReference("retargeting.md")}};
   for (const auto& [word, value] : words)
     for (size_t at; (at = text.find(word)) != std::string::npos;)
       text.replace(at, std::string(word).size(), value);

@@ -159,6 +159,12 @@ struct AssetMetadata {
   std::string corrective_encoding = "signed";  // "signed", "unit" or "split" (export_options.h)
   DmplInfo dmpl{};  // DMPL soft-tissue targets (empty without --dmpl); last, as above
   ExpressionInfo expression_targets{};  // animated expressions (empty: static); last, as above
+  // --skeleton-names (skeleton_names.h): "smpl" (the bones carry the model's
+  // joint names), "mixamo" or "ue5"; then model_joint_names holds the model's
+  // name of every Skeleton joint (Skeleton::names holds the bones' names).
+  // Last, as above.
+  std::string skeleton_names = "smpl";
+  std::vector<std::string> model_joint_names{};
 };
 
 // Where the asset stands (exporter/placement.h): --origin and --root-bone.

@@ -7,6 +7,7 @@
 #include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
 #include "exporter/placement.h"
+#include "exporter/skeleton_names.h"
 #include "exporter/validate_asset.h"
 
 namespace smpl {
@@ -88,6 +89,9 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
   // Names from file names or the command line may hold bytes that are not
   // UTF-8; every output format needs UTF-8 text (asset_names.h).
   escapeAssetNames(&*asset);
+  // Last: the bake, the placement and the morph target names above use the
+  // model's joint names (and they are escaped; the table's are ASCII).
+  renameSkeleton(options.skeleton_names, &*asset);
   if (Status st = validateAsset(*asset); !st) return st.error();
   return asset;
 }

@@ -45,6 +45,14 @@ enum class SkinWeightMethod { Truncated, Optimized };
 //          vertex over every frame of every clip (placement.h lowestPoint)
 enum class Origin { Model, Floor };
 
+// Which names the skeleton's bones carry (--skeleton-names, exporter/skeleton_names.h):
+//   Smpl    the model's joint names (pelvis, left_hip, ...), as always
+//   Mixamo  Adobe Mixamo's rig names (mixamorig:Hips, mixamorig:LeftUpLeg, ...)
+//   Ue5     the Unreal Engine 5 Mannequin's (pelvis, thigh_l, ...)
+// Joints the target rig has no bone for keep the model's name. Only bone
+// names change: morph target names and every number stay the same.
+enum class SkeletonNames { Smpl, Mixamo, Ue5 };
+
 // ExportOptions::max_influences value for "every joint" (--max-influences all).
 constexpr int kAllInfluences = 0;
 
@@ -77,6 +85,8 @@ struct ExportOptions {
   // with root_bone (a root joint stands on the floor)
   std::optional<Origin> origin;
   bool root_bone = false;  // --root-bone: a `root` joint (placement.h); implies Floor
+  // --skeleton-names: exportAsset renames the bones last (skeleton_names.h)
+  SkeletonNames skeleton_names = SkeletonNames::Smpl;
 };
 
 // Whether an export with `o` refits its correctives: corrective_refit, with

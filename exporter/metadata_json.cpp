@@ -117,17 +117,21 @@ Json morphTargetNamesJson(const std::vector<MorphTarget>& targets) {
   return names;
 }
 
-// The model's joints (asset.h Placement: without the root bone, which is not a model joint).
-void modelJointsJson(const Skeleton& s, bool root_bone, Json* o) {
-  if (!root_bone) {
-    (*o)["joint_names"] = s.names;
-    (*o)["parents"] = s.parents;
-    return;
-  }
+// The model's joints (asset.h Placement: without the root bone, which is not
+// a model joint). With --skeleton-names mixamo|ue5 (skeleton_names.h) also
+// "skeleton_names" and "bone_names": the bone of joint_names[k] in the file.
+void modelJointsJson(const Skeleton& s, const AssetMetadata& m, bool root_bone, Json* o) {
+  const bool renamed = m.skeleton_names != "smpl";
+  const std::vector<std::string>& names = renamed ? m.model_joint_names : s.names;
+  const size_t first = root_bone ? 1 : 0;
   std::vector<int> parents;
-  for (size_t k = 1; k < s.parents.size(); ++k) parents.push_back(s.parents[k] - 1);
-  (*o)["joint_names"] = std::vector<std::string>(s.names.begin() + 1, s.names.end());
+  for (size_t k = first; k < s.parents.size(); ++k)
+    parents.push_back(s.parents[k] < 0 ? -1 : s.parents[k] - int(first));
+  (*o)["joint_names"] = std::vector<std::string>(names.begin() + long(first), names.end());
   (*o)["parents"] = parents;
+  if (!renamed) return;
+  (*o)["skeleton_names"] = m.skeleton_names;
+  (*o)["bone_names"] = std::vector<std::string>(s.names.begin() + long(first), s.names.end());
 }
 
 // "origin": {"mode": "floor", "offset": [0, dy, 0]}: metres added to every
@@ -155,7 +159,7 @@ Json metadataObject(const Asset& asset) {
   o["model_kind"] = m.model_kind;
   o["model_name"] = m.model_name;
   o["exporter_version"] = m.exporter_version;
-  modelJointsJson(asset.skeleton, asset.placement.root_bone, &o);
+  modelJointsJson(asset.skeleton, m, asset.placement.root_bone, &o);
   o["betas"] = m.betas;
   o["expression"] = m.expression;
   o["max_influences"] = m.max_influences;

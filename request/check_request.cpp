@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/models/validate_inputs.h"
+#include "exporter/skeleton_names.h"
 #include "writers/writer.h"
 
 namespace smpl {
@@ -243,6 +244,11 @@ Status checkRequestForModel(const ExportRequest& r, const std::vector<double>& b
                              "expression directions");
       !st)
     return st;
+  if (r.asset.skeleton_names != SkeletonNames::Smpl && model.kind == ModelKind::Mano)
+    return usage(std::string("--skeleton-names ") + skeletonNamesName(r.asset.skeleton_names) +
+                 ": the model " + model.name +
+                 " is a MANO hand alone; the Mixamo and UE5 names are for SMPL, SMPL-H and SMPL-X "
+                 "bodies");
   const int p = model.numPoseFeatures();
   if (r.asset.corrective_basis < 0 || r.asset.corrective_basis > p)
     return usage("--corrective-basis " + std::to_string(r.asset.corrective_basis) +

@@ -55,8 +55,9 @@ namespace {
 
 std::deque<WriterFormat>& table() {
   static std::deque<WriterFormat> rows = [] {
-    const std::vector<std::string> gltf_options = {"--corrective-epsilon", "--quantize-morphs",
-                                                   "--draco", "--meshopt", "--quantize-animation"};
+    const std::vector<std::string> gltf_options = {
+        "--corrective-epsilon", "--quantize-morphs", "--draco", "--meshopt",
+        "--quantize-animation", "--skeleton-names"};
     std::vector<std::string> gltf_text_options = gltf_options;
     gltf_text_options.push_back("--gltf-embed");
     return std::deque<WriterFormat>{
@@ -64,14 +65,14 @@ std::deque<WriterFormat>& table() {
         {"gltf", {".gltf"}, gltf_text_options, true, false, true, &gltfWriter()},
         {"fbx",
          {".fbx"},
-         {"--fbx-units", "--fbx-version", "--fbx-compress-level"},
+         {"--fbx-units", "--fbx-version", "--fbx-compress-level", "--skeleton-names"},
          true,
          true,
          false,
          &fbxWriter()},
         {"bvh",
          {".bvh"},
-         {"--bvh-units"},
+         {"--bvh-units", "--skeleton-names"},
          /*needs_mesh=*/false,
          true,
          false,

@@ -82,7 +82,12 @@ def checked(metadata):
           and all(isinstance(n, str) for n in names) and all(isinstance(p, int) for p in parents)
           and len(parents) > 0 and parents[0] == -1 and all(0 <= p < k for k, p in enumerate(parents) if k))
     if not ok:
-        metadata = {k: v for k, v in metadata.items() if k not in ("joint_names", "parents")}
+        metadata = {k: v for k, v in metadata.items() if k not in ("joint_names", "parents", "bone_names")}
+    bones = metadata.get("bone_names")
+    if bones is not None and not (isinstance(bones, list) and all(isinstance(b, str) for b in bones)
+                                  and len(bones) == len(metadata.get("joint_names", [])) and
+                                  len(set(bones)) == len(bones)):
+        metadata = {k: v for k, v in metadata.items() if k != "bone_names"}
     if not isinstance(metadata.get("correctives", []), list):
         metadata = {k: v for k, v in metadata.items() if k != "correctives"}
     if not isinstance(metadata.get("corrective_basis", {}), dict) or (
@@ -249,11 +254,35 @@ def _find_basis_keys(key_names, targets):
     return found
 
 
+def bone_of_joint(metadata):
+    """Model joint name -> the bone's name in the file, from the metadata's
+    "bone_names" (an export with --skeleton-names mixamo|ue5: the bones are
+    renamed, the targets pose_<joint>_<rc> keep the model's joint names);
+    empty when the bones carry the joint names."""
+    names, bones = (metadata or {}).get("joint_names"), (metadata or {}).get("bone_names")
+    if not isinstance(names, list) or not isinstance(bones, list) or len(names) != len(bones):
+        return {}
+    return {j: b for j, b in zip(names, bones) if j != b}
+
+
 def make_plan(bone_parent, key_names, metadata):
     """Bind target names to joints. bone_parent: engine joint name -> parent
     joint name or None (every joint of the engine skeleton); key_names: the
     mesh's blend shape / shape key names in engine order; metadata: checked()
-    dict or None (names only: scale 1, offset 0, parents from the tree)."""
+    dict or None (names only: scale 1, offset 0, parents from the tree).
+    With the metadata's "bone_names" the engine's bones are matched through
+    them; plan.driven names the engine's bones either way."""
+    to_bone = bone_of_joint(metadata)
+    if to_bone:  # the plan is made in the model's joint names, then named by the bones
+        to_joint = {b: j for j, b in to_bone.items()}
+        named = {to_joint.get(b, b): (to_joint.get(p, p) if p else p) for b, p in bone_parent.items()}
+        plan = _make_plan(named, key_names, metadata)
+        plan.driven = [to_bone.get(j, j) for j in plan.driven]
+        return plan
+    return _make_plan(bone_parent, key_names, metadata)
+
+
+def _make_plan(bone_parent, key_names, metadata):
     table = corrective_table(metadata)
     found = [(i, name, find_target(name, bone_parent)) for i, name in enumerate(key_names)]
     found = [(i, name, hit) for i, name, hit in found if hit]

@@ -47,6 +47,9 @@ def parse_args():
     ap.add_argument("--poses", type=int, default=20)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--label", default="")
+    ap.add_argument("--skeleton-names", choices=("mixamo", "ue5"),
+                    help="the export's --skeleton-names: the bones are found by the metadata's "
+                         "bone_names (checked to differ from the joint names), the add-on binds through them")
     ap.add_argument("--tol", type=float, default=1e-5)
     ap.add_argument("--delta-tol", type=float, default=1e-6,
                     help="max |decoded morph delta - posedirs| (compact encodings add error)")
@@ -384,13 +387,22 @@ def main():
     arm, mesh_obj = import_asset(args.asset, args.import_option)
     meta = check_metadata(args.asset, names, parents)
     m = int(meta.get("max_influences", header["max_influences"] if header else 4))
-    check_skeleton(arm, names, parents)
+    bones = names  # the bone of each joint: the joint's name, or with --skeleton-names bone_names
+    if args.skeleton_names:
+        bones = list(meta.get("bone_names") or [])
+        check(meta.get("skeleton_names") == args.skeleton_names and len(bones) == len(names),
+              "metadata skeleton_names %r / %d bone_names, expected %r / %d"
+              % (meta.get("skeleton_names"), len(bones), args.skeleton_names, len(names)))
+        check(sum(b != n for b, n in zip(bones, names)) >= 20, "bone_names hardly differ from joint_names")
+        if len(bones) != len(names):
+            bones = names
+    check_skeleton(arm, bones, parents)
     targets = model_math.target_names(names)
     scale, offset = corrective_encoding(args.asset, len(targets))
     rest = rest_positions(mesh_obj, dict(zip(targets, offset))) if offset.any() else None
     index, _ = vertex_map(mesh_obj, v_shaped, rest)
     method = meta.get("skin_weights", "truncated")
-    got_weights = file_weights(mesh_obj, names, index, len(v_shaped))
+    got_weights = file_weights(mesh_obj, bones, index, len(v_shaped))
     pruned = check_weights(got_weights, m, method, model, ref)
     file_model = dict(model, posedirs=check_morph_targets(
         mesh_obj, names, model, index, scale, args.delta_tol, got_weights))
@@ -398,7 +410,7 @@ def main():
     check_axes(arm, correctives)
 
     poses = draw_poses(args, ref, k)
-    got, got_joints, cost = run_poses(arm, mesh_obj, names, poses, index)
+    got, got_joints, cost = run_poses(arm, mesh_obj, bones, poses, index)
     want, want_joints, features = numpy_reference(file_model, v_shaped, rest_joints, poses, pruned)
     want_full = numpy_reference(model, v_shaped, rest_joints, poses, model["weights"])[0]
     compare_reference(ref, "features", features)

@@ -46,11 +46,11 @@ function(smpl_roundtrip_reference name model m betas)
 endfunction()
 
 # smpl_roundtrip_case(<name> <format> <model> <M> <betas> [SUFFIX s] [TOL m] [DELTA_TOL m]
-#                     [EXPORT_ARGS ...] [IMPORT_ARGS key=value ...]): export, then Blender
+#                     [EXPORT_ARGS ...] [IMPORT_ARGS key=value ...] [SCRIPT_ARGS ...]): export, then Blender
 # (IMPORT_ARGS go to Blender's importer, e.g. automatic_bone_orientation=True; TOL is the
 # posed vertex tolerance, DELTA_TOL the decoded morph delta tolerance).
 function(smpl_roundtrip_case name format model m betas)
-  cmake_parse_arguments(RT "" "SUFFIX;TOL;DELTA_TOL" "EXPORT_ARGS;IMPORT_ARGS" ${ARGN})
+  cmake_parse_arguments(RT "" "SUFFIX;TOL;DELTA_TOL" "EXPORT_ARGS;IMPORT_ARGS;SCRIPT_ARGS" ${ARGN})
   if(NOT RT_TOL)
     set(RT_TOL 1e-5)
   endif()
@@ -75,7 +75,7 @@ function(smpl_roundtrip_case name format model m betas)
             --asset ${asset} --addon-dir ${PROJECT_SOURCE_DIR}/blender
             --reference ${SMPL_ROUNDTRIP_DIR}/${name}_m${m}_ref
             --betas=${betas} --label ${name} --tol ${RT_TOL} --delta-tol ${RT_DELTA_TOL}
-            ${numpy_model} ${import_args})
+            ${numpy_model} ${import_args} ${RT_SCRIPT_ARGS})
   set_tests_properties(roundtrip.export.${case} PROPERTIES
     FIXTURES_SETUP roundtrip_${case} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
   set_tests_properties(roundtrip.blender.${case} PROPERTIES
@@ -125,6 +125,14 @@ if(SMPL_ROUNDTRIP_FBX)
     smpl_roundtrip_case(${name} fbx ${SMPL_FIXTURE_DIR}/models/${name}.npz 8 ${SMPL_RT_BETAS}
                         SUFFIX _autobones IMPORT_ARGS automatic_bone_orientation=True)
   endforeach()
+endif()
+# --skeleton-names: the bones carry Mixamo / UE5 names; the add-on finds them through the
+# metadata's bone_names and drives the correctives as with the model's names.
+smpl_roundtrip_case(smplx_small glb ${SMPL_FIXTURE_DIR}/models/smplx_small.npz 8 ${SMPL_RT_BETAS}
+                    SUFFIX _ue5 EXPORT_ARGS --skeleton-names ue5 SCRIPT_ARGS --skeleton-names ue5)
+if(SMPL_ROUNDTRIP_FBX)
+  smpl_roundtrip_case(smpl_small fbx ${SMPL_FIXTURE_DIR}/models/smpl_small.npz 4 ${SMPL_RT_BETAS}
+                      SUFFIX _mixamo EXPORT_ARGS --skeleton-names mixamo SCRIPT_ARGS --skeleton-names mixamo)
 endif()
 # .gltf with its buffer in a separate .bin (the default) and embedded: both
 # import in Blender and pass the validator.
@@ -202,6 +210,7 @@ include(${CMAKE_CURRENT_LIST_DIR}/basis_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/dmpl_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/video_tests.cmake)
 include(${CMAKE_CURRENT_LIST_DIR}/bvh_tests.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/skeleton_names_tests.cmake)
 
 # --- --max-influences all: every joint an influence (SMPL-X: 55, 14 JOINTS/WEIGHTS
 # sets in glTF; FBX has no limit). Blender reads them all; the validator checks the GLB.

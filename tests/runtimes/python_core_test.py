@@ -89,8 +89,15 @@ class Fixture:
         return ["pose_%s_%d%d" % (self.names[n // 9 + 1], (n % 9) // 3, n % 3)
                 for n in range(9 * (len(self.names) - 1))]
 
-    def metadata(self, entries):
-        return core.checked({"joint_names": self.names, "parents": self.parents, "correctives": entries})
+    def metadata(self, entries, bones=None):
+        meta = {"joint_names": self.names, "parents": self.parents, "correctives": entries}
+        if bones:
+            meta.update(skeleton_names="mixamo", bone_names=bones)
+        return core.checked(meta)
+
+    def mixamo_bones(self):
+        """Bone names as --skeleton-names mixamo gives them (a colon, as the rig's)."""
+        return ["mixamorig:" + "".join(w.capitalize() for w in n.split("_")) for n in self.names]
 
 
 class FeatureTest(unittest.TestCase):
@@ -106,8 +113,11 @@ class FeatureTest(unittest.TestCase):
 
 
 class VertexTest(unittest.TestCase):
-    def check_encoding(self, encoding):
+    def check_encoding(self, encoding, renamed_bones=False):
         fx = Fixture()
+        # --skeleton-names: the engine's bones carry other names than the targets' joints
+        bones = fx.mixamo_bones() if renamed_bones else fx.names
+        bone_parent = {b: (bones[p] if p >= 0 else None) for b, p in zip(bones, fx.parents)}
         base, deltas, entries = encode(fx.a["posedirs"], fx.a["v_shaped"], encoding)
         rng = np.random.default_rng(5)
         orient = Rotation.random(len(fx.names), random_state=rng.integers(1 << 30)).as_matrix()
@@ -118,11 +128,11 @@ class VertexTest(unittest.TestCase):
             n = e["feature"]
             suffix = e["target"][len("pose_j_%d" % n):]
             renamed.append(dict(e, target="pose_%s_%d%d%s" % (fx.names[n // 9 + 1], (n % 9) // 3, n % 3, suffix)))
-        meta = fx.metadata(renamed)
+        meta = fx.metadata(renamed, bones if renamed_bones else None)
         keys = ["Key|" + e["target"] for e in renamed]
-        plan = core.make_plan(fx.bone_parent, keys, meta)
+        plan = core.make_plan(bone_parent, keys, meta)
         self.assertEqual(len(plan.key_index), len(keys))
-        order = [fx.names.index(n) for n in plan.driven]
+        order = [bones.index(n) for n in plan.driven]
         rest = engine_view(np.tile(np.eye(3), (len(fx.names), 1, 1)), axes, orient)
         worst = 0.0
         for i in range(fx.a["poses"].shape[0]):
@@ -145,6 +155,19 @@ class VertexTest(unittest.TestCase):
 
     def test_split(self):
         self.check_encoding("split")
+
+    def test_split_with_renamed_bones(self):
+        """--skeleton-names: the metadata's bone_names lead the core to the bones."""
+        self.check_encoding("split", renamed_bones=True)
+
+    def test_renamed_bones_without_bone_names_bind_nothing(self):
+        fx = Fixture()
+        bones = fx.mixamo_bones()
+        bone_parent = {b: (bones[p] if p >= 0 else None) for b, p in zip(bones, fx.parents)}
+        self.assertEqual(len(core.make_plan(bone_parent, fx.key_names(), fx.metadata([])).key_index), 0)
+        # malformed bone_names (too short, or a bone twice) are dropped, not trusted
+        self.assertNotIn("bone_names", fx.metadata([], bones[:-1]))
+        self.assertNotIn("bone_names", fx.metadata([], [bones[0]] * len(bones)))
 
 
 class NameAndMetadataTest(unittest.TestCase):

@@ -191,3 +191,25 @@ test('errors name the problem', () => {
   bare.metadata.correctives = [{ feature: 0, target: 'pose_left_hip_00', scale: 1, offset: 0 }];
   assert.throws(() => bindCorrectives(bare.root, bare.metadata), /no skinned mesh has a corrective morph target/);
 });
+
+test('--skeleton-names: bones found through the metadata\'s bone_names, as a loader names them', () => {
+  const rand = random(7);
+  const rig = buildRig(THREE, 'smplx');
+  // mixamo-like names with a colon; the loaders keep "mixamorigLeftUpLeg" (PropertyBinding)
+  const boneNames = rig.names.map((n) => 'mixamorig:' + n.split('_').map((w) => w[0].toUpperCase() + w.slice(1)).join(''));
+  rig.bones.forEach((b, k) => { b.name = boneNames[k].replace(':', ''); });
+  const plain = { ...rig.metadata };
+  assert.throws(() => bindCorrectives(rig.root, plain), /joint 'pelvis' of the metadata has no bone/);
+  assert.throws(() => bindCorrectives(rig.root, { ...plain, bone_names: boneNames.slice(1) }),
+                /'bone_names' must be a list of distinct strings/);
+  const meta = { ...plain, skeleton_names: 'mixamo', bone_names: boneNames };
+  const restWorld = rig.bones.map((b) => b.getWorldQuaternion(new THREE.Quaternion()));
+  const correctives = bindCorrectives(rig.root, meta);
+  const rot = rig.bones.map(() => randomQuaternion(rand, 1.2));
+  poseModelSpace(rig, rot, restWorld);
+  correctives.update();
+  const f = expectedFeatures(rot);
+  assert.ok(maxDiff(correctives.features, f) < 1e-12, `features off by ${maxDiff(correctives.features, f)}`);
+  const dict = rig.mesh.morphTargetDictionary, influences = rig.mesh.morphTargetInfluences;
+  targetNames(rig.names).forEach((t, n) => assert.equal(influences[dict[t]], correctives.features[n]));
+});

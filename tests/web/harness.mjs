@@ -87,10 +87,15 @@ export function vertexMap(asset, facesFrom) {
   return Int32Array.from(index.array);
 }
 
-/** Bone of each joint name (as the driver finds them). */
+/**
+ * Bone of each joint name (as the driver finds them): `names` are the file's
+ * bone names (the metadata's bone_names with --skeleton-names), which the
+ * loaders may have sanitised ("mixamorig:Hips" -> "mixamorigHips").
+ */
 export function jointBones(mesh, names) {
   return names.map((n) => {
-    const b = mesh.skeleton.bones.find((bone) => bone.name === n);
+    const wanted = THREE.PropertyBinding.sanitizeNodeName(n);
+    const b = mesh.skeleton.bones.find((bone) => bone.name === n || bone.name === wanted);
     if (!b) throw new Error(`no bone named ${n}`);
     return b;
   });

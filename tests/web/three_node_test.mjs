@@ -52,7 +52,7 @@ if (args.reference) {
     assert.equal(warnings.length, 0, `unexpected warnings: ${warnings}`);
     assert.equal(asset.metadata.joint_names.join(), names.join(), 'joint names of file and reference');
     assert.ok(correctives.weights.length > 0, 'the driver bound no target');
-    const bones = h.jointBones(asset.mesh, names);
+    const bones = h.jointBones(asset.mesh, asset.metadata.bone_names || names);  // --skeleton-names
     const rest = h.restWorldRotations(bones);
     const features = ref.arrays.features.data, verts = ref.arrays.vertices_pruned.data;
     let worst = 0, worstFeature = 0;

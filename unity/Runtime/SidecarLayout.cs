@@ -32,6 +32,9 @@ namespace SmplExport.Correctives
     public sealed class SidecarLayout
     {
         public string[] JointNames;
+        // --skeleton-names mixamo|ue5: the bone of each joint in the file ("mixamorig:Hips");
+        // null when the bones carry JointNames. The blend shapes keep JointNames.
+        public string[] BoneNames;
         public int[] Parents;
         public CorrectiveBinding[] Correctives;
         public CorrectiveBasisLayout Basis;   // null: no basis
@@ -125,6 +128,21 @@ namespace SmplExport.Correctives
                 if (!ReadInt(parents[k], out Parents[k])) return "'parents'[" + k + "] is not an integer";
                 if (k == 0 ? Parents[0] != -1 : Parents[k] < 0 || Parents[k] >= k)
                     return "'parents'[" + k + "] = " + Parents[k] + "; expected " + (k == 0 ? "-1 (the root)" : "0 <= parent < " + k);
+            }
+            object bonesValue;
+            if (meta.TryGetValue("bone_names", out bonesValue))
+            {
+                var bones = bonesValue as List<object>;
+                if (bones == null || bones.Count != JointNames.Length)
+                    return "'bone_names' must be an array as long as 'joint_names' (" + JointNames.Length + ")";
+                BoneNames = new string[bones.Count];
+                var seenBones = new HashSet<string>();
+                for (int k = 0; k < bones.Count; ++k)
+                {
+                    BoneNames[k] = bones[k] as string;
+                    if (BoneNames[k] == null || !seenBones.Add(BoneNames[k]))
+                        return "'bone_names'[" + k + "] is not a string or not unique";
+                }
             }
             object correctives;
             if (!meta.TryGetValue("correctives", out correctives) || !(correctives is List<object>))

@@ -170,7 +170,8 @@ namespace SmplExport.Correctives
             }
             var names = new List<string>(candidates.Count);
             foreach (Transform t in candidates) names.Add(t.name);
-            int[] match = NameMatch.Assign(layout.JointNames, names);
+            // --skeleton-names: the bones are named by the metadata's bone_names
+            int[] match = NameMatch.Assign(layout.BoneNames ?? layout.JointNames, names);
             jointBones = new Transform[match.Length];
             var missing = new List<string>();
             for (int k = 0; k < match.Length; ++k)

@@ -126,6 +126,7 @@ namespace SmplExport.Correctives.Tests
             BindPosesWithSidecar(model);
             WrongAxisConventionIsDetected(model);
             MissingBone(model);
+            RenamedBones(model);
             BasisSidecar(model);
             SplitSidecar(model);
             TestRig.DestroyAll();
@@ -327,6 +328,32 @@ namespace SmplExport.Correctives.Tests
             for (int i = 0; i < 9; ++i) expected[9 * (leaf - 1) + i] = 0;
             CorrectivesTests.CheckClose(CorrectivesTests.MaxError(rig.Driver.Features, expected), CorrectivesTests.FloatTolerance,
                                         model.Name + ": features with a missing leaf bone");
+        }
+
+        // --skeleton-names: bones named otherwise than the joints (no name match at all),
+        // found through the sidecar's bone_names; the features match as with joint names.
+        static void RenamedBones(ReferenceModel model)
+        {
+            var rig = new TestRig(model, "", "");
+            var bones = new string[model.JointCount];
+            for (int k = 0; k < model.JointCount; ++k) rig.Bones[k].name = bones[k] = "rig:Bone" + k + "x";
+            string sidecar = TestRig.Sidecar(model, 1.0, 0.0).Replace(
+                "],\"parents\"", "],\"skeleton_names\":\"mixamo\",\"bone_names\":[\"" + string.Join("\",\"", bones) + "\"],\"parents\"");
+            rig.Driver.sidecar = TestRig.Text("body.glb.smpl.json", sidecar);
+            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
+            rig.Pose(Identities(model.JointCount));
+            bool ready = rig.Driver.Initialize();
+            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
+                                   model.Name + ": renamed bones not found: " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            if (!ready) return;
+            double worst = 0;
+            foreach (ReferencePose pose in model.Poses)
+            {
+                rig.Pose(pose.IdentityRestWorld);
+                rig.Driver.Evaluate();
+                worst = Math.Max(worst, CorrectivesTests.MaxError(rig.Driver.Features, pose.Features));
+            }
+            CorrectivesTests.CheckClose(worst, CorrectivesTests.FloatTolerance, model.Name + ": features with renamed bones (bone_names)");
         }
 
         static double WeightError(TestRig rig, ReferenceModel model, double[] features, double scale, double offset)

@@ -74,6 +74,14 @@ namespace SmplExport.Correctives.Tests
             string bad = ok.Replace("[-1,0]", "[-1,1]");
             layout = SidecarLayout.Parse(bad, "x.smpl.json", out error);
             Check(layout == null && error != null && error.Contains("'parents'[1] = 1"), "bad parents rejected: " + error);
+            // --skeleton-names: bone_names (one per joint, distinct) name the bones
+            string renamed = ok.Replace("\"parents\"", "\"bone_names\":[\"mixamorig:Hips\",\"mixamorig:LeftUpLeg\"],\"parents\"");
+            layout = SidecarLayout.Parse(renamed, "x.smpl.json", out error);
+            Check(layout != null && layout.BoneNames != null && layout.BoneNames[1] == "mixamorig:LeftUpLeg" &&
+                  layout.JointNames[1] == "a", "bone_names read: " + error);
+            Check(SidecarLayout.Parse(ok, "x.smpl.json", out error).BoneNames == null, "no bone_names: null");
+            ExpectError(renamed.Replace(",\"mixamorig:LeftUpLeg\"]", "]"), "'bone_names' must be an array as long as");
+            ExpectError(renamed.Replace("mixamorig:LeftUpLeg", "mixamorig:Hips"), "'bone_names'[1] is not a string or not unique");
             CorrectiveMath math = CorrectiveMath.Create(new[] { -1, 1 }, CorrectiveMath.MirrorX, out error);
             Check(math == null && error != null && error.Contains("joint 1 has parent 1"), "bad parents rejected by Create: " + error);
         }

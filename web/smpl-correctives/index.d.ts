@@ -32,6 +32,10 @@ export interface SmplMetadata {
   joint_names?: string[];
   /** parent index per joint, -1 for the root */
   parents?: number[];
+  /** --skeleton-names: 'mixamo' or 'ue5' (absent: the bones carry joint_names) */
+  skeleton_names?: 'mixamo' | 'ue5' | string;
+  /** the bone of each joint in the file (with skeleton_names); bones are found by these */
+  bone_names?: string[];
   max_influences?: number;
   units?: string;
   up_axis?: string;

@@ -123,6 +123,13 @@ function checkMetadata(meta) {
       }
     });
   }
+  const bones = meta.bone_names;  // --skeleton-names mixamo|ue5: the bone of each joint
+  if (bones !== undefined) {
+    if (!Array.isArray(bones) || !bones.every((n) => typeof n === 'string') ||
+        !Array.isArray(names) || bones.length !== names.length || new Set(bones).size !== bones.length) {
+      fail("'bone_names' must be a list of distinct strings as long as 'joint_names'");
+    }
+  }
   if (meta.correctives === undefined) return;
   if (!Array.isArray(meta.correctives)) fail("'correctives' must be a list");
   const count = Array.isArray(names) ? 9 * (names.length - 1) : Infinity;
@@ -159,14 +166,21 @@ function findBone(bones, name) {
   return alias ? findBone(bones, alias) : -1;
 }
 
-/** Joint names, parents and bone indices: metadata first, else the bone tree. */
+/**
+ * Joint names, parents and bone indices: metadata first, else the bone tree.
+ * The bones are found by the metadata's bone_names when it has them (an export
+ * with --skeleton-names mixamo|ue5 renames the bones; the morph targets keep
+ * the model's joint names), else by joint_names.
+ */
 function resolveJoints(skeleton, meta) {
   const bones = skeleton.bones;
   const names = meta && Array.isArray(meta.joint_names) ? meta.joint_names.map(String) : null;
   const parents = meta && Array.isArray(meta.parents) ? meta.parents : null;
   if (names && parents && names.length === parents.length && names.length > 0) {
-    const bone = names.map((n) => findBone(bones, n));
-    const missing = names.filter((n, k) => bone[k] < 0);
+    const boneNames = Array.isArray(meta.bone_names) && meta.bone_names.length === names.length
+      ? meta.bone_names.map(String) : names;
+    const bone = boneNames.map((n) => findBone(bones, n));
+    const missing = boneNames.filter((n, k) => bone[k] < 0);
     if (missing.length) {
       throw new Error(`smpl-correctives: joint '${missing[0]}' of the metadata has no bone ` +
                       `(${missing.length} missing of ${names.length})`);

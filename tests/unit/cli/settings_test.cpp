@@ -9,6 +9,7 @@
 #include <map>
 
 #include "cli/options.h"
+#include "request/check_request.h"
 
 namespace smpl {
 namespace {
@@ -299,6 +300,7 @@ TEST(OptionTable, EveryRuleIsEnforced) {
                                                       {"--track", "all"},
                                                       {"--source-params", "incam"},
                                                       {"--bvh-units", "cm"},
+                                                      {"--skeleton-names", "ue5"},
                                                       {"--skin-weights", "truncated"},
                                                       {"--correctives", "none"},
                                                       {"--corrective-refit", "off"},
@@ -317,9 +319,48 @@ TEST(OptionTable, EveryRuleIsEnforced) {
     ++checked;
   }
   EXPECT_GE(checked, 27);
-  EXPECT_EQ(format_only, 13);  // the options the writer rows list
+  EXPECT_EQ(format_only, 14);  // the options the writer rows list
   EXPECT_EQ(mesh_only, 13);    // refused for a format without a mesh
   for (const OptionSpec& o : optionTable()) EXPECT_TRUE(o.help && *o.help) << o.name;
+}
+
+}  // namespace
+}  // namespace smpl
+
+namespace smpl {
+namespace {
+
+// --skeleton-names: the three names into the request; another value, an .xml
+// output and a MANO model are refused, naming the option.
+TEST(SkeletonNamesOption, ParsedAndRefusedWhereItDoesNotApply) {
+  const std::pair<const char*, SkeletonNames> cases[] = {{"smpl", SkeletonNames::Smpl},
+                                                         {"mixamo", SkeletonNames::Mixamo},
+                                                         {"ue5", SkeletonNames::Ue5}};
+  for (const auto& [value, want] : cases) {
+    Result<Settings> s = parse({"--model", "builtin", "--out", "a.bvh", "--skeleton-names", value});
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_EQ(s->request.asset.skeleton_names, want);
+  }
+  Result<Settings> bad = parse({"--model", "builtin", "--out", "a.fbx", "--skeleton-names", "ue4"});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_EQ(bad.message(), "--skeleton-names: expected 'smpl', 'mixamo' or 'ue5', got 'ue4'");
+  Result<Settings> xml =
+      parse({"--model", "builtin", "--out", "a.xml", "--skeleton-names", "mixamo"});
+  ASSERT_FALSE(xml.ok());
+  EXPECT_NE(xml.message().find("--skeleton-names applies only to .glb, .gltf, .fbx, .bvh"),
+            std::string::npos)
+      << xml.message();
+  ExportRequest r;
+  r.asset.skeleton_names = SkeletonNames::Ue5;
+  r.asset.max_influences = kAllInfluences;  // the model below has no joints to count
+  BodyModel mano;
+  mano.kind = ModelKind::Mano;
+  mano.name = "MANO_RIGHT";
+  EXPECT_EQ(checkRequestForModel(r, {}, mano).message(),
+            "--skeleton-names ue5: the model MANO_RIGHT is a MANO hand alone; the Mixamo and UE5 "
+            "names are for SMPL, SMPL-H and SMPL-X bodies");
+  mano.kind = ModelKind::SmplX;
+  EXPECT_TRUE(checkRequestForModel(r, {}, mano).ok());
 }
 
 }  // namespace

@@ -137,6 +137,36 @@ TEST(RuntimeAdapter, AJointWithoutABoneIsRigid) {
   }
 }
 
+// --skeleton-names: bones named otherwise than the joints are found through
+// the metadata's bone_names, and the curves are the same.
+TEST(RuntimeAdapter, RenamedBonesAreFoundThroughBoneNames) {
+  StandInSkeleton skel(model(), "");
+  sc::Layout layout = splitLayout();
+  layout.bone_names.resize(layout.joint_names.size());
+  for (size_t b = 0; b < skel.names.size(); ++b) {
+    const int k = skel.joint_of_bone[b];
+    if (k < 0) continue;
+    skel.names[b] = "bone_" + std::to_string(k) + "_x";  // matches no joint name
+    layout.bone_names[size_t(k)] = skel.names[b];
+  }
+  EXPECT_EQ(sc::matchBones(splitLayout(), skel.names).found, 0);  // by joint_names: none
+  EXPECT_EQ(sc::matchBones(layout, skel.names).found, int(layout.joint_names.size()));
+  Eigen::VectorXd f;
+  std::map<std::string, double> curves = curvesFor(skel, layout, 2, "", &f);
+  ASSERT_EQ(curves.size(), layout.correctives.size());
+  for (const sc::Corrective& c : layout.correctives) {
+    double w = c.scale * f(c.feature) + c.offset;
+    EXPECT_NEAR(curves[c.target], c.rectified ? std::max(0.0, w) : w, 1e-12) << c.target;
+  }
+  // a namespaced bone name also matches the engine's name without the namespace
+  sc::Layout mixamo;
+  mixamo.joint_names = {"pelvis", "left_hip"};
+  mixamo.bone_names = {"mixamorig:Hips", "mixamorig:LeftUpLeg"};
+  mixamo.parents = {-1, 0};
+  EXPECT_EQ(sc::matchBones(mixamo, {"root", "LeftUpLeg", "Hips", "pelvis"}).bone_of_joint,
+            (std::vector<int>{2, 1}));
+}
+
 TEST(RuntimeAdapter, MatchesBonesByName) {
   sc::Layout layout;
   layout.joint_names = {"pelvis", "left_eye_smplhf", "jaw"};

@@ -55,6 +55,27 @@ TEST(RuntimeMetadata, ReadsTheFieldsTheCorrectivesNeed) {
   EXPECT_TRUE(layout.basis.targets.empty());
 }
 
+TEST(RuntimeMetadata, ReadsBoneNames) {
+  nlohmann::json m = demoMetadata();
+  const size_t k = m["joint_names"].size();
+  std::vector<std::string> bones;
+  for (size_t j = 0; j < k; ++j) bones.push_back("b" + std::to_string(j));
+  m["skeleton_names"] = "ue5";
+  m["bone_names"] = bones;
+  sc::Layout layout;
+  ASSERT_EQ(sc::parseLayout(m.dump(), &layout), "");
+  EXPECT_EQ(layout.bone_names, bones);
+  bones.pop_back();
+  m["bone_names"] = bones;
+  EXPECT_EQ(sc::parseLayout(m.dump(), &layout),
+            "metadata: 'bone_names' must be as long as 'joint_names'");
+  m["bone_names"] = {1, 2};
+  EXPECT_EQ(sc::parseLayout(m.dump(), &layout), "metadata: 'bone_names' must hold strings");
+  sc::Layout plain;
+  ASSERT_EQ(sc::parseLayout(demoMetadata().dump(), &plain), "");
+  EXPECT_TRUE(plain.bone_names.empty());
+}
+
 TEST(RuntimeMetadata, DefaultsAndBasis) {
   nlohmann::json m = demoMetadata();
   m["correctives"] = {{{"feature", 3}, {"target", "t"}},

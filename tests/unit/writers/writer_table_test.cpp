@@ -117,6 +117,7 @@ void expectTheCommandLineFollows(const std::string& usage) {
         const std::map<std::string, const char*> values = {{"--fbx-units", "cm"},
                                                            {"--fbx-version", "7500"},
                                                            {"--bvh-units", "cm"},
+                                                           {"--skeleton-names", "mixamo"},
                                                            {"--mjcf-joints", "ball"}};
         if (o->value) args.push_back(values.count(option) ? values.at(option) : "1");
         Result<Settings> s = parse(args);

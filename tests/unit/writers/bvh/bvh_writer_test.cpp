@@ -327,7 +327,7 @@ TEST(BvhWriter, IsTheTableRowForBvh) {
   EXPECT_EQ(row->writer, &bvhWriter());
   EXPECT_FALSE(row->needs_mesh);
   EXPECT_TRUE(row->single_clip);
-  EXPECT_EQ(row->options, (std::vector<std::string>{"--bvh-units"}));
+  EXPECT_EQ(row->options, (std::vector<std::string>{"--bvh-units", "--skeleton-names"}));
 }
 
 }  // namespace

@@ -33,9 +33,13 @@ inline std::string shortBoneName(const std::string& name) {
 
 /// Joints matched to bones by name: exact, else the short name; SMPL-X's
 /// left_eye_smplhf / right_eye_smplhf also match an older left_eye / right_eye.
+/// With the metadata's bone_names (--skeleton-names) joint k's bone is the one
+/// named bone_names[k] ("thigh_l"; "mixamorig:Hips" also as "Hips").
 inline BoneMap matchBones(const Layout& layout, const std::vector<std::string>& bone_names) {
   BoneMap map;
-  for (const std::string& joint : layout.joint_names) {
+  for (size_t k = 0; k < layout.joint_names.size(); ++k) {
+    const bool renamed = layout.bone_names.size() == layout.joint_names.size();
+    const std::string& joint = renamed ? layout.bone_names[k] : layout.joint_names[k];
     int hit = -1;
     std::string alias = joint.size() > 7 && joint.compare(joint.size() - 7, 7, "_smplhf") == 0
                             ? joint.substr(0, joint.size() - 7)
@@ -43,7 +47,9 @@ inline BoneMap matchBones(const Layout& layout, const std::vector<std::string>& 
     for (int pass = 0; pass < 3 && hit < 0; ++pass)
       for (size_t b = 0; b < bone_names.size() && hit < 0; ++b) {
         const std::string name = pass == 0 ? bone_names[b] : shortBoneName(bone_names[b]);
-        if (name == joint || (pass == 2 && !alias.empty() && name == alias)) hit = int(b);
+        if (name == joint || (pass == 2 && !alias.empty() && name == alias) ||
+            (pass == 2 && renamed && name == shortBoneName(joint)))
+          hit = int(b);
       }
     map.bone_of_joint.push_back(hit);
     map.missing.push_back(hit < 0);

@@ -104,6 +104,9 @@ struct Basis {
 /// (docs/file-contract.md, "Metadata"); engine glue fills it from its JSON reader.
 struct Layout {
   std::vector<std::string> joint_names;  ///< K, the model authors' names
+  /// K or empty: --skeleton-names mixamo|ue5, the bone of each joint in the file
+  /// ("thigh_l"); empty when the bones carry joint_names
+  std::vector<std::string> bone_names;
   std::vector<int> parents;              ///< K, -1 for the root, parents[k] < k
   std::string up_axis = "+Y";
   std::vector<Corrective> correctives;
@@ -116,6 +119,8 @@ inline std::string validate(const Layout& layout) {
   size_t k = layout.parents.size();
   if (k == 0 || layout.joint_names.size() != k)
     return "metadata: 'joint_names' and 'parents' must be non-empty and of one length";
+  if (!layout.bone_names.empty() && layout.bone_names.size() != k)
+    return "metadata: 'bone_names' must be as long as 'joint_names'";
   if (layout.parents[0] != -1) return "metadata: 'parents'[0] must be -1 (the root)";
   for (size_t j = 1; j < k; ++j)
     if (layout.parents[j] < 0 || size_t(layout.parents[j]) >= j)

@@ -358,6 +358,13 @@ inline std::string parseLayout(const std::string& text, Layout* out) {
     if (!detail::readInt(p, &parent)) return "metadata: 'parents' must hold integers";
     layout.parents.push_back(parent);
   }
+  const json::Value* bones = root.find("bone_names");  // --skeleton-names
+  if (bones && bones->kind != json::Value::kArray) return "metadata: 'bone_names' must be an array";
+  for (size_t i = 0; bones && i < bones->items.size(); ++i) {
+    if (bones->items[i].kind != json::Value::kString)
+      return "metadata: 'bone_names' must hold strings";
+    layout.bone_names.push_back(bones->items[i].text);
+  }
   const json::Value* up = root.find("up_axis");
   if (up && up->kind == json::Value::kString) layout.up_axis = up->text;
   const json::Value* correctives = root.find("correctives");
