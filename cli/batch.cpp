@@ -112,6 +112,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   const bool eta =
       os::isTerminal(1);  // the time left, on a terminal only (output stays reproducible)
   size_t finished = 0;
+  StageSeconds summed;  // the converted exports' stage times, over all workers
   BatchNotes notes(motions.size()), warnings(motions.size());
   // One line per finished file, "[k/N] what", under the print lock.
   auto progress = [&](const std::string& what) {
@@ -165,6 +166,10 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         continue;
       }
       ++summary.converted;
+      summed.read += r->stages.read;
+      summed.fit += r->stages.fit;
+      summed.bake += r->stages.bake;
+      summed.write += r->stages.write;
       const std::string name = os::utf8(os::fsPath(motions[i].motion).stem());
       notes.set(i, name, r->notes);
       if (!r->model_note.empty()) warnings.set(i, name, {r->model_note});
@@ -183,6 +188,11 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         "betas and skin options)\n",
         computed, computed == 1 ? "" : "s", reused, reused == 1 ? "" : "s");
   }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count();
+  if (const std::string line = batchThroughputLine(summary.converted, wall, summed);
+      !line.empty() && !s.quiet)
+    std::printf("%s\n", line.c_str());
   std::printf("batch: %d converted, %d up to date, %d failed, %d skipped (no pose data)\n",
               summary.converted, summary.skipped, summary.failed, summary.no_poses);
   if (record)

@@ -25,6 +25,20 @@ std::string batchProgressPrefix(size_t k, size_t n, double elapsed_s, bool eta) 
   return text + "] ";
 }
 
+std::string batchThroughputLine(int converted, double wall_s, const StageSeconds& summed) {
+  if (converted <= 0) return "";
+  const double total = summed.read + summed.fit + summed.bake + summed.write;
+  auto share = [&](double s) { return total > 0.0 ? 100.0 * s / total : 0.0; };
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "batch: %d motion%s in %.2f s (%.2f motions/s); time in read %.0f%%, fit %.0f%%, "
+                "bake %.0f%%, write %.0f%%",
+                converted, converted == 1 ? "" : "s", wall_s,
+                wall_s > 0.0 ? converted / wall_s : 0.0, share(summed.read), share(summed.fit),
+                share(summed.bake), share(summed.write));
+  return text;
+}
+
 void BatchNotes::set(size_t index, const std::string& motion_name, std::vector<std::string> notes) {
   per_motion_[index] = Entry{motion_name, std::move(notes)};
 }

@@ -8,12 +8,22 @@
 #include <string>
 #include <vector>
 
+#include "request/export_request.h"
+
 namespace smpl {
 
 // "[k/N] " for the k-th finished of N files; with `eta` (a terminal), the time
 // left as "[k/N, ETA m:ss] ", estimated from `elapsed_s` seconds for k files
 // (elapsed / k per remaining file; nothing once k == N).
 std::string batchProgressPrefix(size_t k, size_t n, double elapsed_s, bool eta);
+
+// The batch's throughput line, after the files: "batch: K motions in W s
+// (R motions/s); time in read A%, fit B%, bake C%, write D%". `wall_s` is the
+// batch's wall time; `summed` the converted exports' stage times summed over
+// every worker (request/export_request.h StageSeconds), so the percentages
+// are shares of the export work, whatever the number of threads (they sum to
+// 100 up to rounding; all 0 when no time was measured). Empty for no motions.
+std::string batchThroughputLine(int converted, double wall_s, const StageSeconds& summed);
 
 // "m:ss" (or "h:mm:ss" from an hour) of a non-negative number of seconds, rounded up.
 std::string formatDuration(double seconds);

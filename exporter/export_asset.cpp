@@ -1,5 +1,6 @@
 #include "exporter/export_asset.h"
 
+#include <chrono>
 #include <cmath>
 
 #include "core/math/eigen_blocking.h"
@@ -56,13 +57,19 @@ Status placeAsset(const BodyModel& model, const ExportOptions& options,
 
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl,
-                          SkinCache* skins) {
+                          SkinCache* skins, ExportTimes* times) {
   useFixedEigenBlocking();
+  const auto start = std::chrono::steady_clock::now();
+  auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   ExportOptions resolved = options;
   resolved.encoding =
       resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
   Result<Asset> asset = buildAsset(model, resolved, skins);
   if (!asset) return asset;
+  const auto built = std::chrono::steady_clock::now();
+  if (times) times->fit = since(start);
   if (dmpl && dmpl->basis && !asset->skeleton_only)  // DMPL targets need a mesh
     addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
   std::vector<const Eigen::MatrixXd*> expressions;  // animated SMPL-X expressions
@@ -93,6 +100,7 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
   // model's joint names (and they are escaped; the table's are ASCII).
   renameSkeleton(options.skeleton_names, &*asset);
   if (Status st = validateAsset(*asset); !st) return st.error();
+  if (times) times->bake = since(built);
   return asset;
 }
 

@@ -23,6 +23,15 @@
 
 namespace smpl {
 
+// Wall time of exportAsset's two parts, in seconds: `fit` is buildAsset (the
+// shaped mesh, the skin fit or its reuse from a SkinCache, the corrective
+// refit), `bake` everything after it (DMPL and expression targets, the motions'
+// clips, placement, folding, validation). For benchmarks and batch totals.
+struct ExportTimes {
+  double fit = 0.0;
+  double bake = 0.0;
+};
+
 // One motion to bake into the asset: the motion (not owned, outlives the
 // call), the path or name that errors name, how to bake it (fps, frame range,
 // up axis) and an optional progress callback (fraction in [0, 1]).
@@ -56,8 +65,9 @@ CorrectiveEncoding resolveEncoding(CorrectiveEncoding encoding, size_t motions, 
 // baking (dmpl_targets.h).
 // `skins` (optional): the fitted skin shared with exports of the same subject
 // (buildAsset, exporter/skin_cache.h).
+// `times` (optional): where the call's wall time went, in seconds (ExportTimes).
 Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl = nullptr,
-                          SkinCache* skins = nullptr);
+                          SkinCache* skins = nullptr, ExportTimes* times = nullptr);
 
 }  // namespace smpl

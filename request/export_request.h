@@ -91,10 +91,19 @@ struct ExportRequest {
 };
 
 // What one export did, for the summary (cli/summary.h) and the batch lines.
+// Wall time of one export's stages, in seconds: reading (the motions decoded,
+// the model picked), the fit and the bake (exporter/export_asset.h
+// ExportTimes) and writing (serialising and committing the files). Their sum
+// is at most ExportReport::seconds.
+struct StageSeconds {
+  double read = 0.0, fit = 0.0, bake = 0.0, write = 0.0;
+};
+
 struct ExportReport {
   std::string out;       // the output written (with --track all: <stem>.track<ID>.<ext>)
   size_t bytes = 0;      // output plus external buffer
   double seconds = 0.0;  // wall time of the export (not of the skinning error)
+  StageSeconds stages;   // where `seconds` went
   int vertices = 0, joints = 0, morph_targets = 0, max_influences = 0;
   int frames = 0;                  // total animation frames written
   std::vector<std::string> notes;  // motion notes, dropped joints, DMPL, ..., in order

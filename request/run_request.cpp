@@ -177,8 +177,11 @@ Result<Asset> buildJob(const ExportRequest& r, const RunInputs& inputs, Loaded* 
   std::vector<std::string> frame_notes;
   // A mirrored hand model belongs to this job: its skin is not kept for others.
   SkinCache* skins = loaded.side.mirrored ? nullptr : inputs.skins.get();
+  ExportTimes times;
   Result<Asset> asset = exportAsset(model, options, motionInputs(r, &loaded.motions, &frame_notes),
-                                    &dmpl->input, skins);
+                                    &dmpl->input, skins, &times);
+  report->stages.fit = times.fit;
+  report->stages.bake = times.bake;
   if (!asset) return exportFailure(r.out, asset.error(), options.uv_obj);
   noteMotions(loaded.motions, frame_notes, inputs.betas_given, *asset, report);
   noteDmplJointCost(*asset, report);
@@ -248,6 +251,9 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
                             Stage* stage, std::vector<Motion> given = {},
                             std::string* memory = nullptr) {
   const auto start = std::chrono::steady_clock::now();
+  auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   const Writer* writer = writerForPath(r.out);
   if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
   if (r.clean_temporaries && !memory)
@@ -256,6 +262,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   Result<Loaded> loaded = loadJob(r, inputs, models, stage, std::move(given));
   if (!loaded) return loaded.error();
   ExportReport report;
+  report.stages.read = since(start);
   report.out = r.out;
   report.model_path = loaded->pick.path;
   report.model_note = loaded->pick.note;
@@ -274,8 +281,10 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
   if (!measure) asset->corrective_refit = CorrectiveRefit();
   returnFreedHeap();
+  const auto write_start = std::chrono::steady_clock::now();
   Result<size_t> bytes = writeJob(r, *asset, *writer, memory);
   if (!bytes) return bytes.error();
+  report.stages.write = since(write_start);
   if (measure) {  // after the write, without the clips: a long clip's tracks are gone first
     asset->animations.clear();
     returnFreedHeap();
@@ -287,7 +296,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   }
   report.bytes = *bytes;
   report.placement = asset->placement;
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.seconds = since(start);
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
   report.joints = static_cast<int>(asset->skeleton.names.size());
   report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
@@ -486,6 +495,9 @@ Result<Asset> sceneBody(const ExportRequest& r, const RunInputs& inputs, ModelSo
 Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
                               Stage* stage) {
   const auto start = std::chrono::steady_clock::now();
+  auto since = [](std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
   const Writer* writer = writerForPath(r.out);
   if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
   if (r.clean_temporaries)
@@ -530,7 +542,7 @@ Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, M
                          (scene->camera.present() ? ", and the camera" : ", no camera"));
   report.bytes = *bytes;
   report.frames = static_cast<int>(scene->end_frame - scene->first_frame);
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.seconds = since(start);
   return report;
 }
 

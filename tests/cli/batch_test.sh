@@ -39,6 +39,15 @@ outputs() {  # the files an out dir must hold, sorted
 run "$out" 3 "batch: 3 converted, 0 up to date, 1 failed, 0 skipped (no pose data)"
 [ "$(ls "$out" | sort)" = "$(outputs)" ]; st=$?; check "outputs: $(ls "$out" | tr '\n' ' ')" "$st"
 (cd "$out" && sha256sum $(outputs)) >"$work/first.sha"
+# The throughput line of the 3 converted, before the counts; its stage shares sum to 100 (rounded).
+line=$(grep '^batch: 3 motions in ' "$work/stdout")
+[[ "$line" =~ ^batch:\ 3\ motions\ in\ [0-9.]+\ s\ \([0-9.]+\ motions/s\)\;\ time\ in\ read\ ([0-9]+)%,\ fit\ ([0-9]+)%,\ bake\ ([0-9]+)%,\ write\ ([0-9]+)%$ ]]
+st=$?; check "throughput line: '$line'" "$st"
+sum=$(( ${BASH_REMATCH[1]:-0} + ${BASH_REMATCH[2]:-0} + ${BASH_REMATCH[3]:-0} + ${BASH_REMATCH[4]:-0} ))
+[ "$sum" -ge 98 ] && [ "$sum" -le 102 ]; st=$?; check "stage shares sum to $sum, not 100: '$line'" "$st"
+[ "${BASH_REMATCH[4]:-0}" -gt 0 ]; st=$?; check "write share 0: '$line'" "$st"
+[ "$(grep -n '^batch: 3 motions in ' "$work/stdout" | cut -d: -f1)" -lt "$(grep -n '^batch: 3 converted' "$work/stdout" | cut -d: -f1)" ]
+st=$?; check "the throughput line is not before the counts" "$st"
 
 # 2. Nothing changed: all up to date, the bad one still fails.
 run "$out" 3 "batch: 0 converted, 3 up to date, 1 failed, 0 skipped (no pose data)"

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/io/utf8.h"
+
 namespace smpl {
 namespace {
 
@@ -72,24 +74,12 @@ Result<NpyMember> npyStrings(const std::string& name, const std::vector<std::str
   for (size_t i = 0; i < values.size(); ++i) {
     const std::string& s = values[i];
     for (size_t at = 0; at < s.size();) {
-      const auto c = static_cast<unsigned char>(s[at]);
-      const int extra = c < 0x80         ? 0
-                        : (c >> 5) == 6  ? 1
-                        : (c >> 4) == 14 ? 2
-                        : (c >> 3) == 30 ? 3
-                                         : -1;
-      if (extra < 0 || (extra > 0 && at + size_t(extra) >= s.size()))
+      uint32_t cp = 0;
+      const size_t length = utf8SequenceLength(s, at, &cp);
+      if (length == 0)
         return makeError("npz writer: '" + name + "' entry " + std::to_string(i) + " is not UTF-8");
-      uint32_t cp = extra == 0 ? c : c & (0x3fu >> extra);
-      for (int k = 1; k <= extra; ++k) {
-        const auto t = static_cast<unsigned char>(s[at + size_t(k)]);
-        if ((t >> 6) != 2)
-          return makeError("npz writer: '" + name + "' entry " + std::to_string(i) +
-                           " is not UTF-8");
-        cp = (cp << 6) | (t & 0x3f);
-      }
       points[i].push_back(cp);
-      at += size_t(extra) + 1;
+      at += length;
     }
     if (points[i].size() > longest) longest = points[i].size();
   }

@@ -43,3 +43,18 @@ TEST(BatchReport, NoNotesNoLines) { EXPECT_TRUE(BatchNotes(4).folded().empty());
 
 }  // namespace
 }  // namespace smpl
+
+TEST(BatchReport, ThroughputLineGivesMotionsPerSecondAndStageShares) {
+  StageSeconds summed;
+  summed.read = 1.0;
+  summed.fit = 0.5;
+  summed.bake = 2.5;
+  summed.write = 6.0;
+  EXPECT_EQ(batchThroughputLine(20, 4.0, summed),
+            "batch: 20 motions in 4.00 s (5.00 motions/s); time in read 10%, fit 5%, bake 25%, "
+            "write 60%");
+  EXPECT_EQ(batchThroughputLine(1, 0.5, StageSeconds()),
+            "batch: 1 motion in 0.50 s (2.00 motions/s); time in read 0%, fit 0%, bake 0%, "
+            "write 0%");
+  EXPECT_EQ(batchThroughputLine(0, 3.0, summed), "");  // nothing converted: no line
+}
