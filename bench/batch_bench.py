@@ -18,7 +18,7 @@ whole process's wall time and motions per second, the shares of the export
 work in read / fit / bake / write, the baseline's time and the ratio of the
 two. A benchmark, not a test: it prints, it does not judge.
 
-Usage: bench/batch_bench.py [--exe build/smpl-export] [--motions 100]
+Usage: bench/batch_bench.py [--exe build/cli/smpl-export] [--motions 100]
        [--seconds 10] [--fps 60] [--format glb] [--work DIR]
 """
 import argparse
@@ -84,7 +84,7 @@ def files_alone(inputs, outputs, folder):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--exe", default=os.path.join(HERE, "..", "build", "smpl-export"))
+    ap.add_argument("--exe", default=os.path.join(HERE, "..", "build", "cli", "smpl-export"))
     ap.add_argument("--motions", type=int, default=100)
     ap.add_argument("--seconds", type=float, default=10.0)
     ap.add_argument("--fps", type=float, default=60.0)
@@ -92,6 +92,7 @@ def main():
     ap.add_argument("--work")
     a = ap.parse_args()
     work = a.work or tempfile.mkdtemp(prefix="batch_bench_")
+    os.makedirs(work, exist_ok=True)
     try:
         model = os.path.join(work, "standin_smpl.npz")
         if not os.path.exists(model):
@@ -99,6 +100,7 @@ def main():
         motions, out = os.path.join(work, "motions"), os.path.join(work, "out")
         shutil.rmtree(motions, ignore_errors=True)
         shutil.rmtree(out, ignore_errors=True)
+        shutil.rmtree(os.path.join(work, "alone"), ignore_errors=True)
         write_motions(motions, a.motions, a.seconds, a.fps)
         cmd = [a.exe, "--model", model, "--motion-dir", motions, "--out-dir", out, "--format", a.format]
         start = time.perf_counter()
@@ -112,12 +114,13 @@ def main():
         inputs = sorted(os.path.join(motions, n) for n in os.listdir(motions))
         outputs = sorted(os.path.join(out, n) for n in os.listdir(out) if not n.startswith("."))
         alone = files_alone(inputs, outputs, os.path.join(work, "alone"))
-        size = sum(os.path.getsize(p) for p in outputs)
-        print("| batch (%d cores) | motions | frames each | output | whole process | motions/s "
+        exported = [p for p in outputs if not p.endswith(".smpl.json")]  # without the sidecars
+        per_motion = sum(os.path.getsize(p) for p in exported) / len(exported)
+        print("| batch (%d cores) | motions | frames each | file per motion | whole process | motions/s "
               "| read | fit | bake | write | files alone | batch / files alone |" % os.cpu_count())
         print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
         print("| SMPL stand-in, %s | %d | %d | %.1f MB | %.2f s | %.2f | %s%% | %s%% | %s%% | %s%% "
-              "| %.2f s | %.2fx |" % (a.format, a.motions, int(a.seconds * a.fps), size / 1e6 / len(outputs),
+              "| %.2f s | %.2fx |" % (a.format, a.motions, int(a.seconds * a.fps), per_motion / 1e6,
                                       wall, a.motions / wall, *m.group(4, 5, 6, 7), alone, wall / alone))
     finally:
         if not a.work:

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -191,8 +192,9 @@ struct Asset {
   bool skeleton_only = false;
   // The refitted corrective rows the morph targets carry (empty: posedirs
   // as is), kept so the error report measures what was written; writers
-  // ignore it (the targets already hold the deltas).
-  CorrectiveRefit corrective_refit;
+  // ignore it (the targets already hold the deltas). Never null; shared, not
+  // copied, with the batch's other exports of the subject (exporter/skin_cache.h).
+  std::shared_ptr<const CorrectiveRefit> corrective_refit = std::make_shared<CorrectiveRefit>();
   Placement placement;  // last, as above
 };
 

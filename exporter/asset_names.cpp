@@ -3,7 +3,7 @@
 #include <string>
 
 #include "core/io/printable.h"
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace {

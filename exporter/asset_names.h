@@ -4,7 +4,7 @@
 // model_name, the DMPL basis' name) or the command line (--name), and those
 // bytes need not be UTF-8, which JSON requires (a JSON library throws on them;
 // glTF readers refuse them). exportAsset therefore escapes every name
-// (escapeInvalidUtf8, core/io/utf8.h: each stray byte becomes "\xNN",
+// (escapeInvalidUtf8, core/utf8.h: each stray byte becomes "\xNN",
 // deterministically; valid UTF-8, non-ASCII included, is kept), and
 // validateAsset refuses an asset whose names are not valid UTF-8, so no writer
 // ever sees one.

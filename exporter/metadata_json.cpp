@@ -23,7 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/sha256.h"
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace {

@@ -18,7 +18,7 @@ std::string metadataJson(const Asset& asset);
 
 // One file of an output as its sidecar records it.
 struct RecordedOutput {
-  std::string file;    // base name, escapeInvalidUtf8 (core/io/utf8.h) of the real name
+  std::string file;    // base name, escapeInvalidUtf8 (core/utf8.h) of the real name
   uint64_t bytes = 0;  // size
   std::string sha256;  // 64 lowercase hex digits (core/io/sha256.h)
 };

@@ -106,8 +106,14 @@ void addSplitCorrective(const BodyModel& model, const CorrectiveRefit& refit, in
     parts = {CorrectiveLayout{n, name + "_pos", 1.0, 0.0, true},
              CorrectiveLayout{n, name + "_neg", -1.0, 0.0, true}};
   for (const CorrectiveLayout& c : parts) {
-    asset->mesh.morph_targets.push_back(
-        correctiveTarget(c.target, model, refit, n, asset->mesh.source_vertex, c.scale));
+    std::vector<MorphTarget>& targets = asset->mesh.morph_targets;
+    if (c.scale == -1.0 && !diagonal) {  // float(d / -1) == -float(d): _pos negated, bit for bit
+      MorphTarget negated{c.target, -targets.back().deltas};
+      targets.push_back(std::move(negated));
+    } else {
+      targets.push_back(
+          correctiveTarget(c.target, model, refit, n, asset->mesh.source_vertex, c.scale));
+    }
     asset->metadata.correctives.push_back(c);
   }
 }
@@ -234,12 +240,24 @@ Asset skeletonAsset(const BodyModel& model, const ExportOptions& o, const Eigen:
   return asset;
 }
 
-// The skin and, when the options refit, the refit of the subject `body`.
-FittedSkin fitSkin(const BodyModel& model, const ShapedBody& body, const ExportOptions& o) {
+// The skin and, when the options refit, the refit of the subject `body`;
+// without a corrective basis also the mesh with its morph targets (nothing
+// there can fail, so it is kept with the fit and a batch builds it once).
+FittedSkin fitSkin(const BodyModel& model, const ShapedBody& body, const ExportOptions& o,
+                   const UvLayout* uv) {
   FittedSkin f;
   f.skin = exportSkin(model, body, o);
   if (refitsCorrectives(o))
-    f.refit = refitCorrectives(model, body, f.skin, CorrectiveRefitOptions());
+    f.refit = std::make_shared<const CorrectiveRefit>(
+        refitCorrectives(model, body, f.skin, CorrectiveRefitOptions()));
+  if (o.corrective_basis == 0) {
+    Asset part;
+    buildMesh(model, body.v_shaped, f.skin, uv, &part.mesh);
+    (void)addMorphTargets(model, o, *f.refit, &part);  // no basis: always succeeds
+    f.mesh = std::move(part.mesh);
+    f.correctives = std::move(part.metadata.correctives);
+    f.has_mesh = true;
+  }
   return f;
 }
 
@@ -262,17 +280,25 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o, SkinCac
   asset.name = o.name;
   asset.skeleton = buildSkeleton(model, body->joints);
   // From `skins` (the same subject's earlier export) or fitted for this export alone.
+  const UvLayout* layout = *uv ? &**uv : nullptr;
   const std::shared_ptr<const FittedSkin> cached =
-      skins ? skins->get(model, o, [&] { return fitSkin(model, *body, o); }) : nullptr;
-  FittedSkin own = skins ? FittedSkin() : fitSkin(model, *body, o);
+      skins ? skins->get(model, o, [&] { return fitSkin(model, *body, o, layout); }) : nullptr;
+  FittedSkin own = skins ? FittedSkin() : fitSkin(model, *body, o, layout);
   returnFreedHeap();  // the fit's and the refit's temporaries (a long clip's frames are loaded)
-  const SparseSkin& skin = skins ? cached->skin : own.skin;
-  const int m = static_cast<int>(skin.joints.cols());  // influencesFor(), or fewer with "all"
-  buildMesh(model, body->v_shaped, skin, *uv ? &**uv : nullptr, &asset.mesh);
+  const FittedSkin& fit = skins ? *cached : own;
   fillMetadata(model, o, &asset.metadata);
-  asset.metadata.max_influences = m;
-  asset.corrective_refit = skins ? cached->refit : std::move(own.refit);  // one copy in memory
-  if (Status s = addMorphTargets(model, o, asset.corrective_refit, &asset); !s) return s.error();
+  asset.metadata.max_influences = int(fit.skin.joints.cols());  // influencesFor(), or fewer
+  asset.corrective_refit = fit.refit;                           // shared, never copied
+  if (fit.has_mesh) {  // the cache's copied, this export's own moved
+    if (skins)
+      asset.mesh = cached->mesh;
+    else
+      asset.mesh = std::move(own.mesh);
+    asset.metadata.correctives = fit.correctives;
+    return asset;
+  }
+  buildMesh(model, body->v_shaped, fit.skin, layout, &asset.mesh);
+  if (Status s = addMorphTargets(model, o, *asset.corrective_refit, &asset); !s) return s.error();
   return asset;
 }
 

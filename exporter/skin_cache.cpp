@@ -3,6 +3,19 @@
 #include "exporter/export_skin.h"
 
 namespace smpl {
+namespace {
+
+// Bytes of a mesh's arrays (the cache's memory charge).
+uint64_t meshBytes(const SkinnedMesh& m) {
+  uint64_t floats =
+      uint64_t(m.positions.size() + m.normals.size() + m.weights.size() + m.uvs.size());
+  for (const MorphTarget& t : m.morph_targets) floats += uint64_t(t.deltas.size());
+  return floats * sizeof(float) +
+         (uint64_t(m.joints.size()) + uint64_t(m.triangles.size()) + m.source_vertex.size()) *
+             sizeof(int);
+}
+
+}  // namespace
 
 SkinCache::Key SkinCache::keyOf(const BodyModel& model, const ExportOptions& o) {
   std::vector<double> betas = o.betas, expression = o.expression;  // as shapeBody pads them
@@ -13,7 +26,13 @@ SkinCache::Key SkinCache::keyOf(const BodyModel& model, const ExportOptions& o) 
              std::move(expression),
              influencesFor(model, o),
              int(o.skin_weights),
-             refitsCorrectives(o)};
+             refitsCorrectives(o),
+             o.uv_obj,
+             int(o.encoding),
+             o.correctives,
+             o.corrective_basis,
+             o.shape_keys,
+             o.expression_keys};
 }
 
 std::shared_ptr<const FittedSkin> SkinCache::get(const BodyModel& model, const ExportOptions& o,
@@ -46,8 +65,8 @@ std::shared_ptr<const FittedSkin> SkinCache::get(const BodyModel& model, const E
   }
   const uint64_t bytes =
       uint64_t(fitted->skin.joints.size()) * sizeof(int) +
-      uint64_t(fitted->skin.weights.size() + fitted->refit.rows.size()) * sizeof(double) +
-      fitted->refit.block.size() * sizeof(int);
+      uint64_t(fitted->skin.weights.size() + fitted->refit->rows.size()) * sizeof(double) +
+      fitted->refit->block.size() * sizeof(int) + meshBytes(fitted->mesh);
   if (!fitted->memory.add(bytes, model.name, "the fitted skin kept for the next motion"))
     forget(key);  // over budget: used by this export only
   promise.set_value(fitted);

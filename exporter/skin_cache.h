@@ -1,9 +1,12 @@
 // The fitted skin of one subject, computed once and shared by the exports
 // that need the same one (in batch mode the motions of one subject
-// reuse the weight fit and the corrective refit instead of redoing them per
-// motion). The skin (exportSkin) and the refit (refitCorrectives) depend only
-// on the model, the subject's betas and expression, --max-influences,
-// --skin-weights and whether the correctives are refitted: that is the key.
+// reuse the weight fit, the corrective refit and the mesh with its morph
+// targets instead of redoing them per motion). The skin (exportSkin) and the
+// refit (refitCorrectives) depend only on the model, the subject's betas and
+// expression, --max-influences, --skin-weights and whether the correctives
+// are refitted; the mesh and its targets also on the UV layout (--uv), the
+// correctives' encoding and basis and the shape and expression key counts:
+// all of these are the key.
 // Bounded: the `capacity` most recently added subjects are kept (a batch in
 // folder order meets each subject's motions one after another), each charged
 // to the memory budget (core/memory_budget.h); one that does not fit is
@@ -31,11 +34,16 @@
 
 namespace smpl {
 
-// What buildAsset needs of the fit: the N x M skin and the refit (empty when
-// the options do not refit the correctives).
+// What buildAsset needs of the fit: the N x M skin, the refit (empty when
+// the options do not refit the correctives) and, unless the correctives are
+// a basis (whose fit can fail: built per export), the finished mesh with its
+// morph targets and the targets' layouts (AssetMetadata::correctives).
 struct FittedSkin {
   SparseSkin skin;
-  CorrectiveRefit refit;
+  std::shared_ptr<const CorrectiveRefit> refit = std::make_shared<CorrectiveRefit>();  // never null
+  bool has_mesh = false;  // `mesh` and `correctives` below were built with the fit
+  SkinnedMesh mesh;
+  std::vector<CorrectiveLayout> correctives;
   MemoryCharge memory;  // the arrays above, while the cache keeps them
 };
 
@@ -52,8 +60,10 @@ class SkinCache {
   int reused() const;    // calls served from it
 
  private:
-  using Key =
-      std::tuple<const BodyModel*, std::vector<double>, std::vector<double>, int, int, bool>;
+  // Model, betas, expression, influences, skin method, refit; UV layout,
+  // encoding, correctives, basis size, shape keys, expression keys.
+  using Key = std::tuple<const BodyModel*, std::vector<double>, std::vector<double>, int, int, bool,
+                         std::string, int, bool, int, int, int>;
   static Key keyOf(const BodyModel& model, const ExportOptions& options);
   void forget(const Key& key);
   size_t capacity_;

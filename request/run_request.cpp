@@ -279,7 +279,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
     report.skin.joints = (report.skin.joints.array() - 1).cwiseMax(0).matrix();
   // The refit is in the morph targets already; only the measurement reads it.
   const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
-  if (!measure) asset->corrective_refit = CorrectiveRefit();
+  if (!measure) asset->corrective_refit = std::make_shared<CorrectiveRefit>();
   returnFreedHeap();
   const auto write_start = std::chrono::steady_clock::now();
   Result<size_t> bytes = writeJob(r, *asset, *writer, memory);
@@ -289,7 +289,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
     asset->animations.clear();
     returnFreedHeap();
     Result<PruningError> err = measurePruningError(model, report.options, r.skin_error_poses,
-                                                   &report.skin, &asset->corrective_refit);
+                                                   &report.skin, asset->corrective_refit.get());
     if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());
     report.skin_error = *err;
     report.skin_error_measured = true;
@@ -478,8 +478,9 @@ Result<Asset> sceneBody(const ExportRequest& r, const RunInputs& inputs, ModelSo
   Result<Asset> asset = buildJob(job, inputs, &*loaded, &body);
   if (!asset) return asset.error();
   for (Motion& m : loaded->motions) releaseFrames(&m);
-  asset->corrective_refit = CorrectiveRefit();  // no skinning error is measured for a scene
-  for (const std::string& note : body.notes)    // file notes repeat on every track: once
+  asset->corrective_refit =
+      std::make_shared<CorrectiveRefit>();    // no skinning error is measured for a scene
+  for (const std::string& note : body.notes)  // file notes repeat on every track: once
     if (std::find(report->notes.begin(), report->notes.end(), note) == report->notes.end())
       report->notes.push_back(note);
   if (report->model_path.empty()) report->model_path = loaded->pick.path;

@@ -10,7 +10,7 @@
 
 #include "core/huge_pages.h"
 #include "core/io/printable.h"
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace {

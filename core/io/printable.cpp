@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <limits>
 
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace {

@@ -10,7 +10,7 @@
 #include <unordered_map>
 
 #include "core/io/pickle/pickle_internal.h"
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 namespace smpl {
 namespace pickle {

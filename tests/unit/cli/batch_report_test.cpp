@@ -1,4 +1,4 @@
-// Batch mode's progress prefix, durations and folded notes (cli/batch_report.h).
+// Batch mode's progress prefix, durations, folded notes and throughput line (cli/batch_report.h).
 #include "cli/batch_report.h"
 
 #include <gtest/gtest.h>
@@ -41,9 +41,6 @@ TEST(BatchReport, NotesOfOneMotionKeepItsNameAndMotionOrder) {
 
 TEST(BatchReport, NoNotesNoLines) { EXPECT_TRUE(BatchNotes(4).folded().empty()); }
 
-}  // namespace
-}  // namespace smpl
-
 TEST(BatchReport, ThroughputLineGivesMotionsPerSecondAndStageShares) {
   StageSeconds summed;
   summed.read = 1.0;
@@ -58,3 +55,6 @@ TEST(BatchReport, ThroughputLineGivesMotionsPerSecondAndStageShares) {
             "write 0%");
   EXPECT_EQ(batchThroughputLine(0, 3.0, summed), "");  // nothing converted: no line
 }
+
+}  // namespace
+}  // namespace smpl

@@ -38,12 +38,12 @@ TEST(Pipeline, AssetMatchesModel) {
   EXPECT_EQ(mesh.morph_targets[207].name, "shape_0");
   // The deltas are posedirs, refitted at the vertices whose influences were
   // cut (--corrective-refit, on by default; core/math/corrective_refit.h).
-  ASSERT_FALSE(asset->corrective_refit.empty());
+  ASSERT_FALSE(asset->corrective_refit->empty());
   for (int n : {0, 50, 206})
     for (int i = 0; i < model->numVertices(); i += 37)
       for (int c = 0; c < 3; ++c)
         EXPECT_FLOAT_EQ(mesh.morph_targets[n].deltas(i, c),
-                        static_cast<float>(asset->corrective_refit.delta(*model, 3 * i + c, n)));
+                        static_cast<float>(asset->corrective_refit->delta(*model, 3 * i + c, n)));
   EXPECT_EQ(mesh.joints.cols(), 4);
   for (int i = 0; i < mesh.weights.rows(); ++i) EXPECT_NEAR(mesh.weights.row(i).sum(), 1.0f, 1e-6f);
   EXPECT_EQ(asset->metadata.correctives.size(), 207u);
@@ -61,8 +61,8 @@ TEST(Pipeline, CorrectiveRefitChangesOnlyTheDeltasOfCutVertices) {
   o.corrective_refit = true;
   Result<Asset> refit = buildAsset(*model, o);
   ASSERT_TRUE(plain.ok() && refit.ok());
-  EXPECT_TRUE(plain->corrective_refit.empty());
-  ASSERT_FALSE(refit->corrective_refit.empty());
+  EXPECT_TRUE(plain->corrective_refit->empty());
+  ASSERT_FALSE(refit->corrective_refit->empty());
   int changed = 0;
   for (int n = 0; n < model->numPoseFeatures(); ++n)
     for (int i = 0; i < model->numVertices(); ++i) {
@@ -113,7 +113,7 @@ TEST(Pipeline, UvSeamsSplitVerticesAndTargetsFollow) {
   for (int i = 0; i < mesh.positions.rows(); i += 11) {
     const int s = mesh.source_vertex[i];
     EXPECT_FLOAT_EQ(mesh.morph_targets[3].deltas(i, 1),
-                    static_cast<float>(asset->corrective_refit.delta(*model, 3 * s + 1, 3)));
+                    static_cast<float>(asset->corrective_refit->delta(*model, 3 * s + 1, 3)));
     EXPECT_FLOAT_EQ(mesh.positions(i, 0), static_cast<float>(model->v_template(s, 0)));
   }
   std::ofstream(path) << "v 0 0 0\nvt 0 0\nf 1/1 2/1 3/1\n";

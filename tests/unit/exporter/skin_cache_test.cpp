@@ -41,16 +41,24 @@ TEST(SkinCache, OneFitPerSubjectAndEveryKeyPartSeparatesSubjects) {
   padded.betas.push_back(0.0);  // the same subject: shapeBody pads betas with zeros
   (void)cache.get(model, padded, fit);
   EXPECT_EQ(calls, 1);
-  std::vector<ExportOptions> others(5, subject(1.0));
+  std::vector<ExportOptions> others(11, subject(1.0));
   others[0].betas[0] = 1.0 + 1e-12;
   others[1].max_influences = 3;
   others[2].skin_weights = SkinWeightMethod::Truncated;
   others[3].corrective_refit = false;
   others[4].expression = {0.25};  // ignored by a model without expressions: padded away
+  // What the mesh and its morph targets (kept with the fit) depend on.
+  others[5].uv_obj = "none";
+  others[6].encoding = CorrectiveEncoding::Unit;
+  others[7].correctives = false;
+  others[8].corrective_basis = 4;
+  others[9].shape_keys = 2;
+  others[10].expression_keys = 1;
   for (const ExportOptions& o : others) (void)cache.get(model, o, fit);
-  EXPECT_EQ(calls, 5) << "betas, influences, method and refit each make a new subject; an "
-                         "expression the model does not have does not";
-  EXPECT_EQ(cache.computed(), 5);
+  EXPECT_EQ(calls, 11) << "betas, influences, method, refit, UVs, encoding, correctives, basis, "
+                          "shape and expression keys each make a new subject; an expression the "
+                          "model does not have does not";
+  EXPECT_EQ(cache.computed(), 11);
   EXPECT_EQ(cache.reused(), 3);
 }
 
@@ -95,6 +103,48 @@ TEST(SkinCache, AFailedFitReachesItsCallerAndIsNotKept) {
 
 // The real fit through buildAsset: the second export of a subject is served
 // from the cache and gives the same asset as an export without one.
+// Everything buildAsset makes of the mesh: geometry, skin, targets and their layouts.
+void expectSameMesh(const Asset& a, const Asset& b) {
+  EXPECT_EQ(a.mesh.positions, b.mesh.positions);
+  EXPECT_EQ(a.mesh.normals, b.mesh.normals);
+  EXPECT_EQ(a.mesh.joints, b.mesh.joints);
+  EXPECT_EQ(a.mesh.weights, b.mesh.weights);
+  EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+  EXPECT_EQ(a.mesh.source_vertex, b.mesh.source_vertex);
+  ASSERT_EQ(a.mesh.morph_targets.size(), b.mesh.morph_targets.size());
+  for (size_t t = 0; t < a.mesh.morph_targets.size(); ++t) {
+    EXPECT_EQ(a.mesh.morph_targets[t].name, b.mesh.morph_targets[t].name) << t;
+    EXPECT_EQ(a.mesh.morph_targets[t].rest_weight, b.mesh.morph_targets[t].rest_weight) << t;
+    ASSERT_EQ(a.mesh.morph_targets[t].deltas, b.mesh.morph_targets[t].deltas) << t;
+  }
+  ASSERT_EQ(a.metadata.correctives.size(), b.metadata.correctives.size());
+  for (size_t c = 0; c < a.metadata.correctives.size(); ++c) {
+    EXPECT_EQ(a.metadata.correctives[c].target, b.metadata.correctives[c].target) << c;
+    EXPECT_EQ(a.metadata.correctives[c].scale, b.metadata.correctives[c].scale) << c;
+    EXPECT_EQ(a.metadata.correctives[c].offset, b.metadata.correctives[c].offset) << c;
+  }
+}
+
+// The mesh kept with the fit, for each corrective encoding and with shape
+// keys: a cached export's mesh equals a fresh one's (Unit also shifts the base mesh).
+TEST(SkinCache, TheKeptMeshEqualsAFreshOneForEveryEncoding) {
+  const BodyModel& model = demoBody();
+  for (CorrectiveEncoding e :
+       {CorrectiveEncoding::Signed, CorrectiveEncoding::Unit, CorrectiveEncoding::Split}) {
+    ExportOptions o = subject(0.4);
+    o.encoding = e;
+    o.shape_keys = 2;
+    SkinCache cache(4);
+    Result<Asset> first = buildAsset(model, o, &cache);
+    Result<Asset> second = buildAsset(model, o, &cache);
+    Result<Asset> fresh = buildAsset(model, o);
+    ASSERT_TRUE(first && second && fresh);
+    EXPECT_EQ(cache.reused(), 1);
+    SCOPED_TRACE(correctiveEncodingName(e));
+    expectSameMesh(*second, *fresh);
+  }
+}
+
 TEST(SkinCache, AReusedFitGivesTheSameAssetAsAFreshOne) {
   const BodyModel& model = demoBody();
   ExportOptions o = subject(0.8);
@@ -106,12 +156,8 @@ TEST(SkinCache, AReusedFitGivesTheSameAssetAsAFreshOne) {
   ASSERT_TRUE(first && second && fresh);
   EXPECT_EQ(cache.computed(), 1);
   EXPECT_EQ(cache.reused(), 1);
-  ASSERT_GT(fresh->corrective_refit.cut, 0);
-  EXPECT_EQ(second->mesh.joints, fresh->mesh.joints);
-  EXPECT_EQ(second->mesh.weights, fresh->mesh.weights);
-  ASSERT_EQ(second->mesh.morph_targets.size(), fresh->mesh.morph_targets.size());
-  for (size_t t = 0; t < fresh->mesh.morph_targets.size(); ++t)
-    ASSERT_EQ(second->mesh.morph_targets[t].deltas, fresh->mesh.morph_targets[t].deltas) << t;
+  ASSERT_GT(fresh->corrective_refit->cut, 0);
+  expectSameMesh(*second, *fresh);
   ExportOptions other = o;
   other.betas[0] = -0.8;  // another subject: its own fit, its own weights
   Result<Asset> third = buildAsset(model, other, &cache);

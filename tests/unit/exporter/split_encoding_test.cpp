@@ -61,8 +61,8 @@ TEST(SplitEncoding, ExactWithZeroRestWeightsAndUnitRange) {
       sum += w * asset->mesh.morph_targets[t].deltas.cast<double>();
     }
     const Eigen::VectorXd exact =  // the deltas the export writes (refitted where cut)
-        (asset->corrective_refit.empty() ? model.posedirs
-                                         : asset->corrective_refit.posedirs(model)) *
+        (asset->corrective_refit->empty() ? model.posedirs
+                                          : asset->corrective_refit->posedirs(model)) *
         f;
     for (int i = 0; i < model.numVertices(); ++i)
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(sum(i, c), exact(3 * i + c), 1e-6);

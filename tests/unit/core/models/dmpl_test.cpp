@@ -104,8 +104,8 @@ TEST(DmplLayout, WeightsSpanZeroToOneAndStaticIsRest) {
 Eigen::MatrixXd published(const BodyModel& model, const Asset& a, const Motion& m,
                           const DmplBasis& b, int f, const Eigen::MatrixXd& pruned) {
   BodyModel displaced = model;
-  if (!a.corrective_refit.empty())
-    displaced.posedirs = a.corrective_refit.posedirs(model);  // as written
+  if (!a.corrective_refit->empty())
+    displaced.posedirs = a.corrective_refit->posedirs(model);  // as written
   const Eigen::VectorXd d = b.directions * m.dmpls.row(f).transpose();
   for (int i = 0; i < model.numVertices(); ++i)
     for (int c = 0; c < 3; ++c) displaced.v_template(i, c) += d(3 * i + c);

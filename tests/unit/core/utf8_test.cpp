@@ -1,6 +1,6 @@
-// UTF-8 helpers (core/io/utf8.h): the escaping that makes file-name bytes fit
+// UTF-8 helpers (core/utf8.h): the escaping that makes file-name bytes fit
 // for JSON and FBX text.
-#include "core/io/utf8.h"
+#include "core/utf8.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // UTF-8 in one place: the encoder shared by the pickle reader (Python str) and
 // numpy string arrays (UTF-32 'U' elements), the decoder of one well-formed
-// sequence that printable() (core/io/printable.h) and the name escaping below
-// use, and that escaping itself. Names that come from files (a motion file's
-// stem becomes a clip name, a model file's stem the metadata's model_name) go
-// into glTF JSON, FBX strings and the sidecar, which must be valid UTF-8:
-// escapeInvalidUtf8 makes them so, deterministically and without touching
-// valid (non-ASCII) names.
+// sequence that printable() (core/io/printable.h), the name escaping below and
+// the MJCF .npz writer (joint names as 'U' elements) use, and that escaping
+// itself. Text, not I/O: in core so that readers and writers share it. Names that come from files
+// (a motion file's stem becomes a clip name, a model file's stem the metadata's model_name) go into
+// glTF JSON, FBX strings and the sidecar, which must be valid UTF-8: escapeInvalidUtf8 makes them
+// so, deterministically and without touching valid (non-ASCII) names.
 #pragma once
 
 #include <cstddef>
