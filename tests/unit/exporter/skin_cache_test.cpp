@@ -141,6 +141,7 @@ TEST(SkinCache, TheKeptMeshEqualsAFreshOneForEveryEncoding) {
     ASSERT_TRUE(first && second && fresh);
     EXPECT_EQ(cache.reused(), 1);
     SCOPED_TRACE(correctiveEncodingName(e));
+    EXPECT_GE(second->metadata.correctives.size(), size_t(model.numPoseFeatures()));
     expectSameMesh(*second, *fresh);
   }
 }
