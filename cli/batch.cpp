@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -18,6 +17,7 @@
 #include "core/os/path.h"
 #include "core/os/system.h"
 #include "core/parallel.h"
+#include "core/stopwatch.h"
 #include "request/error_line.h"
 
 namespace smpl {
@@ -108,7 +108,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   const bool one_thread = workers > 1;
   std::atomic<size_t> next{0};
   std::mutex print;
-  const auto batch_start = std::chrono::steady_clock::now();
+  const SteadyTime batch_start = steadyNow();
   const bool eta =
       os::isTerminal(1);  // the time left, on a terminal only (output stays reproducible)
   size_t finished = 0;
@@ -118,18 +118,15 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
   auto progress = [&](const std::string& what) {
     ++finished;
     if (s.quiet) return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count();
+    const double elapsed = secondsSince(batch_start);
     std::printf("%s%s\n", batchProgressPrefix(finished, motions.size(), elapsed, eta).c_str(),
                 what.c_str());
     if (eta) std::fflush(stdout);
   };
   auto worker = [&] {
     for (size_t i; (i = next++) < motions.size();) {
-      const auto start = std::chrono::steady_clock::now();
-      auto seconds = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      };
+      const SteadyTime start = steadyNow();
+      auto seconds = [&] { return secondsSince(start); };
       const std::string& out = motions[i].out;
       ManifestEntry& entry = manifest[i];
       entry.input = motions[i].motion;
@@ -188,8 +185,7 @@ BatchSummary runBatch(ModelSource& models, const Settings& s, const BatchPlan& p
         "betas and skin options)\n",
         computed, computed == 1 ? "" : "s", reused, reused == 1 ? "" : "s");
   }
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - batch_start).count();
+  const double wall = secondsSince(batch_start);
   if (const std::string line = batchThroughputLine(summary.converted, wall, summed);
       !line.empty() && !s.quiet)
     std::printf("%s\n", line.c_str());

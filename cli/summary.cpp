@@ -1,10 +1,10 @@
 #include "cli/summary.h"
 
-#include <chrono>
 #include <cstdio>
 
 #include "cli/batch_report.h"
 #include "core/io/printable.h"
+#include "core/stopwatch.h"
 #include "exporter/export_skin.h"
 
 namespace smpl {
@@ -52,11 +52,10 @@ void printSummary(const std::string& out, const ExportReport& r) {
 }
 
 void drawProgress(const std::string& name, double fraction) {
-  using Clock = std::chrono::steady_clock;
   static std::string current;  // the motion being baked, and when its bar started
-  static Clock::time_point start;
-  if (name != current || fraction <= 0) current = name, start = Clock::now();
-  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  static SteadyTime start;
+  if (name != current || fraction <= 0) current = name, start = steadyNow();
+  const double elapsed = secondsSince(start);
   const int width = 24, filled = static_cast<int>(fraction * width);
   const std::string eta = fraction >= 1.0 ? formatDuration(elapsed) + "     "
                           : fraction > 0.02

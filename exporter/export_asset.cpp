@@ -1,9 +1,9 @@
 #include "exporter/export_asset.h"
 
-#include <chrono>
 #include <cmath>
 
 #include "core/math/eigen_blocking.h"
+#include "core/stopwatch.h"
 #include "exporter/asset_names.h"
 #include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
@@ -59,17 +59,14 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
                           const std::vector<MotionInput>& motions, const DmplInput* dmpl,
                           SkinCache* skins, ExportTimes* times) {
   useFixedEigenBlocking();
-  const auto start = std::chrono::steady_clock::now();
-  auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
+  const SteadyTime start = steadyNow();
   ExportOptions resolved = options;
   resolved.encoding =
       resolveEncoding(options.encoding, motions.size(), options.corrective_basis > 0);
   Result<Asset> asset = buildAsset(model, resolved, skins);
   if (!asset) return asset;
-  const auto built = std::chrono::steady_clock::now();
-  if (times) times->fit = since(start);
+  const SteadyTime built = steadyNow();
+  if (times) times->fit = secondsSince(start);
   if (dmpl && dmpl->basis && !asset->skeleton_only)  // DMPL targets need a mesh
     addDmplTargets(model, *dmpl->basis, dmpl->layout, dmpl->animate_joints, &*asset);
   std::vector<const Eigen::MatrixXd*> expressions;  // animated SMPL-X expressions
@@ -100,7 +97,7 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
   // model's joint names (and they are escaped; the table's are ASCII).
   renameSkeleton(options.skeleton_names, &*asset);
   if (Status st = validateAsset(*asset); !st) return st.error();
-  if (times) times->bake = since(built);
+  if (times) times->bake = secondsSince(built);
   return asset;
 }
 

@@ -2,7 +2,6 @@
 #include "request/run_request.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -15,6 +14,7 @@
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 #include "core/models/betas_file.h"
+#include "core/stopwatch.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
 #include "exporter/scene_timeline.h"
@@ -250,10 +250,7 @@ Result<size_t> writeJob(const ExportRequest& r, const Asset& asset, const Writer
 Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
                             Stage* stage, std::vector<Motion> given = {},
                             std::string* memory = nullptr) {
-  const auto start = std::chrono::steady_clock::now();
-  auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
+  const SteadyTime start = steadyNow();
   const Writer* writer = writerForPath(r.out);
   if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
   if (r.clean_temporaries && !memory)
@@ -262,7 +259,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   Result<Loaded> loaded = loadJob(r, inputs, models, stage, std::move(given));
   if (!loaded) return loaded.error();
   ExportReport report;
-  report.stages.read = since(start);
+  report.stages.read = secondsSince(start);
   report.out = r.out;
   report.model_path = loaded->pick.path;
   report.model_note = loaded->pick.note;
@@ -281,10 +278,10 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
   if (!measure) asset->corrective_refit = std::make_shared<CorrectiveRefit>();
   returnFreedHeap();
-  const auto write_start = std::chrono::steady_clock::now();
+  const SteadyTime write_start = steadyNow();
   Result<size_t> bytes = writeJob(r, *asset, *writer, memory);
   if (!bytes) return bytes.error();
-  report.stages.write = since(write_start);
+  report.stages.write = secondsSince(write_start);
   if (measure) {  // after the write, without the clips: a long clip's tracks are gone first
     asset->animations.clear();
     returnFreedHeap();
@@ -296,7 +293,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   }
   report.bytes = *bytes;
   report.placement = asset->placement;
-  report.seconds = since(start);
+  report.seconds = secondsSince(start);
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
   report.joints = static_cast<int>(asset->skeleton.names.size());
   report.morph_targets = static_cast<int>(asset->mesh.morph_targets.size());
@@ -495,10 +492,7 @@ Result<Asset> sceneBody(const ExportRequest& r, const RunInputs& inputs, ModelSo
 
 Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, ModelSource* models,
                               Stage* stage) {
-  const auto start = std::chrono::steady_clock::now();
-  auto since = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
+  const SteadyTime start = steadyNow();
   const Writer* writer = writerForPath(r.out);
   if (!writer) return usage("no writer for " + r.out);  // checkRequest refused it first
   if (r.clean_temporaries)
@@ -543,7 +537,7 @@ Result<ExportReport> runScene(const ExportRequest& r, const RunInputs& inputs, M
                          (scene->camera.present() ? ", and the camera" : ", no camera"));
   report.bytes = *bytes;
   report.frames = static_cast<int>(scene->end_frame - scene->first_frame);
-  report.seconds = since(start);
+  report.seconds = secondsSince(start);
   return report;
 }
 

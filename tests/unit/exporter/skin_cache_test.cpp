@@ -125,6 +125,15 @@ void expectSameMesh(const Asset& a, const Asset& b) {
   }
 }
 
+// Two exports of `o` through one cache (the second served from it) and one without.
+struct ThreeBuilds {
+  Result<Asset> first, second, fresh;
+};
+ThreeBuilds buildThrice(const BodyModel& model, const ExportOptions& o, SkinCache* cache) {
+  ThreeBuilds b{buildAsset(model, o, cache), buildAsset(model, o, cache), buildAsset(model, o)};
+  return b;
+}
+
 // The mesh kept with the fit, for each corrective encoding and with shape
 // keys: a cached export's mesh equals a fresh one's (Unit also shifts the base mesh).
 TEST(SkinCache, TheKeptMeshEqualsAFreshOneForEveryEncoding) {
@@ -135,14 +144,12 @@ TEST(SkinCache, TheKeptMeshEqualsAFreshOneForEveryEncoding) {
     o.encoding = e;
     o.shape_keys = 2;
     SkinCache cache(4);
-    Result<Asset> first = buildAsset(model, o, &cache);
-    Result<Asset> second = buildAsset(model, o, &cache);
-    Result<Asset> fresh = buildAsset(model, o);
-    ASSERT_TRUE(first && second && fresh);
+    const ThreeBuilds b = buildThrice(model, o, &cache);
+    ASSERT_TRUE(b.first && b.second && b.fresh);
     EXPECT_EQ(cache.reused(), 1);
     SCOPED_TRACE(correctiveEncodingName(e));
-    EXPECT_GE(second->metadata.correctives.size(), size_t(model.numPoseFeatures()));
-    expectSameMesh(*second, *fresh);
+    EXPECT_GE(b.second->metadata.correctives.size(), size_t(model.numPoseFeatures()));
+    expectSameMesh(*b.second, *b.fresh);
   }
 }
 
@@ -151,20 +158,18 @@ TEST(SkinCache, AReusedFitGivesTheSameAssetAsAFreshOne) {
   ExportOptions o = subject(0.8);
   o.max_influences = 2;
   SkinCache cache(4);
-  Result<Asset> first = buildAsset(model, o, &cache);
-  Result<Asset> second = buildAsset(model, o, &cache);
-  Result<Asset> fresh = buildAsset(model, o);
-  ASSERT_TRUE(first && second && fresh);
+  const ThreeBuilds b = buildThrice(model, o, &cache);
+  ASSERT_TRUE(b.first && b.second && b.fresh);
   EXPECT_EQ(cache.computed(), 1);
   EXPECT_EQ(cache.reused(), 1);
-  ASSERT_GT(fresh->corrective_refit->cut, 0);
-  expectSameMesh(*second, *fresh);
+  ASSERT_GT(b.fresh->corrective_refit->cut, 0);
+  expectSameMesh(*b.second, *b.fresh);
   ExportOptions other = o;
   other.betas[0] = -0.8;  // another subject: its own fit, its own weights
   Result<Asset> third = buildAsset(model, other, &cache);
   ASSERT_TRUE(third);
   EXPECT_EQ(cache.computed(), 2);
-  EXPECT_NE(third->mesh.weights, fresh->mesh.weights);
+  EXPECT_NE(third->mesh.weights, b.fresh->mesh.weights);
 }
 
 }  // namespace
