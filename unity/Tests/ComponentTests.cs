@@ -149,12 +149,7 @@ namespace SmplExport.Correctives.Tests
                 rig.AddBlendShape(model.Name + "." + layout.Basis.Targets[k]);
             }
             rig.Driver.sidecar = TestRig.Text("basis.glb.smpl.json", model.BasisSidecar);
-            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
-            rig.Pose(Identities(model.JointCount));
-            bool ready = rig.Driver.Initialize();
-            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
-                                   model.Name + ": basis setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
-            if (!ready) return;
+            if (!InitializeAtRest(rig, model.JointCount, model.Name + ": basis setup")) return;
             double worst = 0;
             foreach (ReferencePose pose in model.Poses)
             {
@@ -205,12 +200,7 @@ namespace SmplExport.Correctives.Tests
                 else index[target] = rig.ShapeIndex[target];
             }
             rig.Driver.sidecar = TestRig.Text("split.glb.smpl.json", sb.Append("]}").ToString());
-            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
-            rig.Pose(Identities(model.JointCount));
-            bool ready = rig.Driver.Initialize();
-            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
-                                   model.Name + ": split setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
-            if (!ready) return;
+            if (!InitializeAtRest(rig, model.JointCount, model.Name + ": split setup")) return;
             double worst = 0, decoded = 0, below = 0;
             foreach (ReferencePose pose in model.Poses)
             {
@@ -236,13 +226,8 @@ namespace SmplExport.Correctives.Tests
         {
             var rig = new TestRig(model, "mixamorig:", "BlendShapeChannel.");
             rig.W = Turned;
-            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
             if (model.JointCount == 24) rig.Driver.sidecar = null;  // the built-in SMPL layout
-            rig.Pose(Identities(model.JointCount));
-            bool ready = rig.Driver.Initialize();
-            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
-                                   model.Name + ": StartPose setup: " + string.Join("; ", rig.Driver.Messages.ToArray()));
-            if (!ready) return;
+            if (!InitializeAtRest(rig, model.JointCount, model.Name + ": StartPose setup")) return;
             double feature = 0, weight = 0;
             foreach (ReferencePose pose in model.Poses)
             {
@@ -340,12 +325,7 @@ namespace SmplExport.Correctives.Tests
             string sidecar = TestRig.Sidecar(model, 1.0, 0.0).Replace(
                 "],\"parents\"", "],\"skeleton_names\":\"mixamo\",\"bone_names\":[\"" + string.Join("\",\"", bones) + "\"],\"parents\"");
             rig.Driver.sidecar = TestRig.Text("body.glb.smpl.json", sidecar);
-            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
-            rig.Pose(Identities(model.JointCount));
-            bool ready = rig.Driver.Initialize();
-            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
-                                   model.Name + ": renamed bones not found: " + string.Join("; ", rig.Driver.Messages.ToArray()));
-            if (!ready) return;
+            if (!InitializeAtRest(rig, model.JointCount, model.Name + ": renamed bones not found")) return;
             double worst = 0;
             foreach (ReferencePose pose in model.Poses)
             {
@@ -368,6 +348,18 @@ namespace SmplExport.Correctives.Tests
                     worst = Math.Max(worst, Math.Abs(actual - expected));
                 }
             return worst;
+        }
+
+        // The driver initialised with the rig at rest (RestPoseSource.PoseAtStart), checked to
+        // report nothing; false when it could not start ("<what>: <its messages>" is recorded).
+        static bool InitializeAtRest(TestRig rig, int jointCount, string what)
+        {
+            rig.Driver.restPose = SmplCorrectives.RestPoseSource.PoseAtStart;
+            rig.Pose(Identities(jointCount));
+            bool ready = rig.Driver.Initialize();
+            CorrectivesTests.Check(ready && rig.Driver.Messages.Count == 0,
+                                   what + ": " + string.Join("; ", rig.Driver.Messages.ToArray()));
+            return ready;
         }
 
         static Quat[] Identities(int count)
