@@ -85,9 +85,25 @@ def errors_of(value, schema):
     return errors
 
 
+def check_files(schema, paths):
+    """Each sidecar file conforms: one line per problem, exit 1 on any."""
+    failures = []
+    for path in paths:
+        with open(path, encoding="utf-8") as f:
+            failures += [f"{path}: {e}" for e in errors_of(json.load(f), schema)[:5]]
+    for f in failures:
+        print(f)
+    print(f"check_schema: {len(paths)} sidecars checked, {len(failures)} problems")
+    return 1 if failures or not paths else 0
+
+
 def main(argv):
+    if len(argv) >= 2 and argv[1] == "--files":
+        with open(argv[0], encoding="utf-8") as f:
+            return check_files(json.load(f), argv[2:])
     if len(argv) != 2:
-        print("usage: check_schema.py SCHEMA KIT_DIR", file=sys.stderr)
+        print("usage: check_schema.py SCHEMA KIT_DIR | check_schema.py SCHEMA --files SIDECAR...",
+              file=sys.stderr)
         return 2
     with open(argv[0], encoding="utf-8") as f:
         schema = json.load(f)

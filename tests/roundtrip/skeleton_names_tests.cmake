@@ -4,6 +4,8 @@
 #                       <build>/roundtrip/sn_<model>_<fmt>_<names>.<fmt>, names = smpl
 #                       (the option given), plain (none), mixamo and ue5
 #   skeleton_names.same.<model>_<fmt>   --skeleton-names smpl writes the bytes of no option
+#   skeleton_names.schema.<model>_<fmt>_<names>  the sidecar conforms to
+#                       docs/sidecar.schema.json (tests/conformance/check_schema.py --files)
 #   skeleton_names.blender.<model>_<fmt>_<names>  headless Blender imports the plain and
 #                       the renamed file: bones by the table, the evaluated mesh (FBX,
 #                       GLB) or every joint (BVH) at 3 frames within 1e-5 m
@@ -29,6 +31,11 @@ function(smpl_skeleton_names_case model motion fmt)
               ${names_args} --out ${base}_${names}.${fmt} --quiet)
     set_tests_properties(skeleton_names.export.${model}_${fmt}_${names} PROPERTIES
       FIXTURES_SETUP sn_${model}_${fmt}_${names} FIXTURES_REQUIRED roundtrip_dir LABELS blender)
+    add_test(NAME skeleton_names.schema.${model}_${fmt}_${names}
+      COMMAND ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR}/tests/conformance/check_schema.py
+              ${PROJECT_SOURCE_DIR}/docs/sidecar.schema.json --files ${base}_${names}.${fmt}.smpl.json)
+    set_tests_properties(skeleton_names.schema.${model}_${fmt}_${names} PROPERTIES
+      FIXTURES_REQUIRED sn_${model}_${fmt}_${names} LABELS blender)
   endforeach()
   add_test(NAME skeleton_names.same.${model}_${fmt}
     COMMAND ${CMAKE_COMMAND} -E compare_files ${base}_plain.${fmt} ${base}_smpl.${fmt})
