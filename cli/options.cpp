@@ -347,6 +347,14 @@ const std::vector<OptionSpec> kOptions = {
        if (!c) return Status(c.error());
        return s->request.writer.mjcf_joints = v, Status();
      }},
+    {"--mjcf-geoms", nullptr, "capsule|mesh", Applies::Format, nullptr,
+     "MJCF collision geoms per body: a capsule (default) or the convex hull of the vertices "
+     "the joint dominates",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--mjcf-geoms", {"capsule", "mesh"});
+       if (!c) return Status(c.error());
+       return s->request.writer.mjcf_geoms = v, Status();
+     }},
     {"--mjcf-motors", nullptr, nullptr, Applies::Format, nullptr,
      "MJCF: a <motor> per hinge joint (ctrlrange -100..100 N m)",
      [](V, S* s) { return s->request.writer.mjcf_motors = true, Status(); }},

@@ -59,6 +59,8 @@ Status checkRanges(const ExportRequest& r) {
     return usage("--mjcf-joints: expected 'hinge' or 'ball', got '" + r.writer.mjcf_joints + "'");
   if (r.writer.mjcf_motors && r.writer.mjcf_joints != "hinge")
     return usage("--mjcf-motors drives hinge joints: it conflicts with --mjcf-joints ball");
+  if (r.writer.mjcf_geoms != "capsule" && r.writer.mjcf_geoms != "mesh")
+    return usage("--mjcf-geoms: expected 'capsule' or 'mesh', got '" + r.writer.mjcf_geoms + "'");
   if (r.dmpl_count && *r.dmpl_count < 1)
     return usage("--dmpl-count: expected N >= 1, got '" + std::to_string(*r.dmpl_count) + "'");
   return Status();

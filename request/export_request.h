@@ -68,7 +68,7 @@ struct ExportRequest {
   // --- the writer (writers/writer.h) ---
   //   morph_epsilon --corrective-epsilon M in [0, 0.01] m; draco, meshopt,
   //   quantize_animation; fbx_units, fbx_version, fbx_compress_level;
-  //   bvh_units; density, mjcf_joints, mjcf_motors; threads --threads N,
+  //   bvh_units; density, mjcf_joints, mjcf_geoms, mjcf_motors; threads --threads N,
   //   1..1024 (none: all cores). binary and buffer_uri are set by the run
   //   from the output's path (request_options.h writerOptionsOf).
   WriterOptions writer;

@@ -81,7 +81,7 @@ std::deque<WriterFormat>& table() {
          /*single_clip=*/true},
         {"mjcf",
          {".xml"},
-         {"--density", "--mjcf-joints", "--mjcf-motors"},
+         {"--density", "--mjcf-joints", "--mjcf-geoms", "--mjcf-motors"},
          /*needs_mesh=*/true,
          true,
          false,

@@ -42,6 +42,8 @@ struct WriterOptions {
   double density = 1000.0;
   std::string mjcf_joints = "hinge";
   bool mjcf_motors = false;
+  // MJCF --mjcf-geoms: "capsule" (default) or "mesh" (each part's convex hull)
+  std::string mjcf_geoms = "capsule";
 };
 
 struct Writer {

@@ -18,6 +18,17 @@
 //       MuJoCo warning (an unstable simulation is reset by MuJoCo with a
 //       warning, which would hide a NaN).
 //
+//   mjcf_check MODEL.xml REFERENCE.txt DENSITY --hulls [--wrong-frame]
+//
+// Also (h), --mjcf-geoms mesh (REFERENCE.txt's "hull NAME X Y Z" points from
+// mjcf_reference.py --hulls): a body has a mesh geom exactly when the
+// reference has hull points for it, and at qpos0 the mesh's vertices placed
+// in the world by MuJoCo (geom_xpos + geom_xmat * mesh_vert: MuJoCo moves a
+// mesh to its own centre and axes and offsets the geom to match) are the
+// reference points turned Z up, as sets, within 1e-6 m. --wrong-frame reads
+// mesh_vert in the body's frame (the offset ignored): the error must exceed
+// 1 mm.
+//
 //   mjcf_check --motion MODEL.xml MOTION.txt [--wrong-order | --quat-xyzw]
 //
 // The reference motion (MOTION.txt from mjcf_reference.py --motion: the
@@ -37,6 +48,7 @@
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -58,7 +70,8 @@ struct Joint {
   std::exit(1);
 }
 
-void readReference(const char* path, double* volume, std::vector<Joint>* joints) {
+void readReference(const char* path, double* volume, std::vector<Joint>* joints,
+                   std::vector<Joint>* hull = nullptr) {
   std::ifstream in(path);
   if (!in) fail(std::string("cannot read ") + path);
   std::string line;
@@ -72,6 +85,10 @@ void readReference(const char* path, double* volume, std::vector<Joint>* joints)
       Joint j;
       s >> j.name >> j.p[0] >> j.p[1] >> j.p[2];
       joints->push_back(j);
+    } else if (kind == "hull" && hull) {
+      Joint j;
+      s >> j.name >> j.p[0] >> j.p[1] >> j.p[2];
+      hull->push_back(j);
     }
   }
   if (joints->empty()) fail(std::string(path) + ": no joints");
@@ -130,6 +147,72 @@ void checkSteps(const mjModel* m, mjData* d) {
   }
   std::printf("(b) 1000 steps of %g s: finite, no warnings; root at z = %.4g m\n", m->opt.timestep,
               d->qpos[2]);
+}
+
+double distance(const double* a, const double* b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The largest distance from a point of `from` to its nearest point of `to`.
+double oneSided(const std::vector<std::array<double, 3>>& from,
+                const std::vector<std::array<double, 3>>& to) {
+  double worst = 0.0;
+  for (const auto& a : from) {
+    double best = INFINITY;
+    for (const auto& b : to) best = std::fmin(best, distance(a.data(), b.data()));
+    worst = std::fmax(worst, best);
+  }
+  return worst;
+}
+
+// Mesh geom `g`'s vertices in the world at the current state.
+std::vector<std::array<double, 3>> worldVertices(const mjModel* m, const mjData* d, int g,
+                                                 bool wrong_frame) {
+  const int mesh = m->geom_dataid[g], body = m->geom_bodyid[g];
+  const double* pos = wrong_frame ? d->xpos + 3 * body : d->geom_xpos + 3 * g;
+  const double* mat = wrong_frame ? d->xmat + 9 * body : d->geom_xmat + 9 * g;
+  std::vector<std::array<double, 3>> out;
+  for (int v = 0; v < m->mesh_vertnum[mesh]; ++v) {
+    const float* p = m->mesh_vert + 3 * (m->mesh_vertadr[mesh] + v);
+    std::array<double, 3> w;
+    for (int r = 0; r < 3; ++r)
+      w[size_t(r)] = pos[r] + mat[3 * r] * p[0] + mat[3 * r + 1] * p[1] + mat[3 * r + 2] * p[2];
+    out.push_back(w);
+  }
+  return out;
+}
+
+void checkHulls(const mjModel* m, const mjData* d, const std::vector<Joint>& hull,
+                bool wrong_frame) {
+  double worst = 0.0;
+  int meshes = 0;
+  for (int b = 1; b < m->nbody; ++b) {
+    const std::string name = mj_id2name(m, mjOBJ_BODY, b);
+    std::vector<std::array<double, 3>> want;
+    for (const Joint& j : hull)
+      if (j.name == name) want.push_back({j.p[0], -j.p[2], j.p[1]});  // Z up
+    int found = -1;
+    for (int g = 0; g < m->ngeom; ++g)
+      if (m->geom_bodyid[g] == b && m->geom_type[g] == mjGEOM_MESH) found = g;
+    if ((found >= 0) != !want.empty())
+      fail("(h) body " + name +
+           (found >= 0 ? " has a mesh geom but no hull points"
+                       : " has hull points but no mesh geom"));
+    if (found < 0) continue;
+    ++meshes;
+    const auto got = worldVertices(m, d, found, wrong_frame);
+    worst = std::fmax(worst, std::fmax(oneSided(got, want), oneSided(want, got)));
+  }
+  std::printf(
+      "(h) %d mesh geoms%s: max distance between MuJoCo's world vertices and the "
+      "reference points %.3g m (%s)\n",
+      meshes, wrong_frame ? " read in the body frame" : "", worst,
+      wrong_frame ? "must exceed 1e-3" : "tolerance 1e-6");
+  if (meshes == 0) fail("(h) no mesh geoms");
+  if (wrong_frame ? !(worst > 1e-3) : !(worst <= 1e-6))
+    fail(wrong_frame ? "(h) the body-frame reading matches too: the check cannot tell"
+                     : "(h) the mesh geoms are not the reference points");
 }
 
 struct MotionRef {
@@ -287,10 +370,13 @@ int motionMain(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   if (argc >= 2 && std::string(argv[1]) == "--motion") return motionMain(argc, argv);
-  if (argc != 4) fail("usage: mjcf_check MODEL.xml REFERENCE.txt DENSITY");
+  const std::string mode = argc >= 5 ? argv[4] : "";
+  const bool wrong_frame = argc == 6 && std::string(argv[5]) == "--wrong-frame";
+  if (argc < 4 || (argc >= 5 && mode != "--hulls") || (argc == 6 && !wrong_frame) || argc > 6)
+    fail("usage: mjcf_check MODEL.xml REFERENCE.txt DENSITY [--hulls [--wrong-frame]]");
   double volume = 0.0;
-  std::vector<Joint> joints;
-  readReference(argv[2], &volume, &joints);
+  std::vector<Joint> joints, hull;
+  readReference(argv[2], &volume, &joints, &hull);
   char error[1000] = "";
   mjModel* m = mj_loadXML(argv[1], nullptr, error, sizeof error);
   if (!m) fail(std::string("(a) mj_loadXML: ") + error);
@@ -298,6 +384,7 @@ int main(int argc, char** argv) {
   mjData* d = mj_makeData(m);
   std::printf("%s: %d bodies, nq %d, nv %d, %d geoms\n", argv[1], m->nbody, m->nq, m->nv, m->ngeom);
   checkRest(m, d, joints);
+  if (mode == "--hulls") checkHulls(m, d, hull, wrong_frame);
   checkMass(m, volume, std::atof(argv[3]));
   checkSteps(m, d);
   mj_deleteData(d);

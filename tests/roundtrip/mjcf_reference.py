@@ -31,6 +31,13 @@ origin, divergence theorem), in float64.
         a copy of BODY.xml whose bodies list their hinges z, y, x (MuJoCo then
         applies Rz Ry Rx: the wrong reading mjcf_check --wrong-order must catch).
 
+    mjcf_reference.py --glb ASSET.glb --hulls OUT.txt
+        also "hull NAME X Y Z" lines (--mjcf-geoms mesh): per joint the GLB
+        vertices whose largest skin weight (JOINTS_n/WEIGHTS_n, ties to the
+        lower joint) is that joint's, for the joints whose points span a
+        solid: at least 4, and the square root of the smallest eigenvalue of
+        their covariance (divided by the count) at least 1 mm.
+
 OUT.txt: "volume V" then one "joint NAME X Y Z" line per joint (metres);
 --motion: "names N NAME..", "frames T", "fps F", "row I Q..", "pose I NAME X Y Z"
 (model axes, Y up; mjcf_check turns them Z up).
@@ -74,6 +81,33 @@ def from_glb(path):
     start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
     indices = np.frombuffer(blob, dtype, a["count"], start).reshape(-1, 3)
     return joints, signed_volume(positions, indices)
+
+
+def hull_points(path):
+    """NAME -> (n, 3) dominated GLB vertices of each joint whose points span a solid."""
+    doc, blob = skin_fit_check.read_glb(path)
+    names = [doc["nodes"][n]["name"] for n in doc["skins"][0]["joints"]]
+    attributes = doc["meshes"][0]["primitives"][0]["attributes"]
+    positions = np.asarray(skin_fit_check.accessor(doc, blob, attributes["POSITION"]), np.float64)
+    dense = np.zeros((len(positions), len(names)))
+    for i in range(4):
+        if "JOINTS_%d" % i not in attributes:
+            break
+        joints = np.asarray(skin_fit_check.accessor(doc, blob, attributes["JOINTS_%d" % i]), np.int64)
+        weights = np.asarray(skin_fit_check.accessor(doc, blob, attributes["WEIGHTS_%d" % i]), np.float64)
+        for c in range(joints.shape[1]):
+            np.add.at(dense, (np.arange(len(positions)), joints[:, c]), weights[:, c])
+    owner = np.argmax(dense, axis=1)  # the first maximum: ties to the lower joint
+    hulls = {}
+    for k, name in enumerate(names):
+        points = positions[owner == k]
+        if len(points) < 4:
+            continue
+        centred = points - points.mean(0)
+        smallest = np.linalg.eigvalsh(centred.T @ centred)[0]
+        if np.sqrt(max(smallest, 0.0) / len(points)) >= 1e-3:
+            hulls[name] = points
+    return hulls
 
 
 def from_model(path, betas):
@@ -164,6 +198,7 @@ def main():
     ap.add_argument("--first", type=int, default=0)
     ap.add_argument("--step", type=int, default=1)
     ap.add_argument("--reorder-hinges")
+    ap.add_argument("--hulls", action="store_true")
     ap.add_argument("out")
     args = ap.parse_args()
     if args.motion:
@@ -179,7 +214,12 @@ def main():
         f.write("volume %.17g\n" % volume)
         for name, p in joints:
             f.write("joint %s %.17g %.17g %.17g\n" % (name, p[0], p[1], p[2]))
-    print("%d joints, volume %.9g m^3" % (len(joints), volume))
+        hulls = hull_points(args.glb) if args.hulls else {}
+        for name, points in hulls.items():
+            for p in points:
+                f.write("hull %s %.17g %.17g %.17g\n" % (name, p[0], p[1], p[2]))
+    print("%d joints, volume %.9g m^3" % (len(joints), volume) +
+          ("; %d parts with hull points" % len(hulls) if args.hulls else ""))
 
 
 if __name__ == "__main__":

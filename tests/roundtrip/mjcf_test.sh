@@ -11,6 +11,10 @@
 #                      joints (mjcf_check --motion), and the wrong readings (Rz Ry Rx, x y z w)
 #        motion_ball   the same with --mjcf-joints ball, --frames 10:50 and --fps 30 (every
 #                      second source frame: 20 frames)
+#        mesh          the built-in body with --mjcf-geoms mesh: the mesh geoms against the
+#                      GLB's dominated vertices (mjcf_check --hulls), and the body-frame
+#                      reading (--wrong-frame) must miss
+#        smplx_mesh    the SMPL-X fixture with --mjcf-geoms mesh and --mjcf-joints ball
 #        refusals      hostile values and options that do not apply: one line, exit 1, no file;
 #                      and the same bytes twice
 set -u
@@ -44,6 +48,17 @@ case "$case" in
       n=$(grep -c 'type="ball"' "$work/$case.xml")
       [ "$n" = 54 ] || { echo "FAIL: $n ball joints, expected 54"; exit 1; }
     fi
+    ;;
+  mesh | smplx_mesh)
+    src_model=builtin shape=() extra=(--mjcf-motors)
+    [ "$case" = smplx_mesh ] && src_model=$model shape=(--betas "$betas") extra=(--mjcf-joints ball)
+    run "$exe" --model "$src_model" "${shape[@]}" --out "$work/$case.xml" --mjcf-geoms mesh --quiet "${extra[@]}"
+    run "$exe" --model "$src_model" "${shape[@]}" --out "$work/$case.glb" --quiet
+    run "$python" "$ref_py" --glb "$work/$case.glb" --hulls "$work/${case}_ref.txt"
+    run "$check" "$work/$case.xml" "$work/${case}_ref.txt" 1000 --hulls
+    run "$check" "$work/$case.xml" "$work/${case}_ref.txt" 1000 --hulls --wrong-frame
+    n=$(grep -c '<mesh ' "$work/$case.xml")
+    [ "$n" -ge 20 ] || { echo "FAIL: $n convex hull meshes, expected one per body part (>= 20)"; exit 1; }
     ;;
   motion | motion_ball)
     motion=$fixtures/motions/amass_smplx.npz
@@ -89,6 +104,8 @@ case "$case" in
     refuse "--density:" --model builtin --out "$work/r.xml" --density inf
     refuse "--mjcf-joints: expected 'hinge' or 'ball', got 'foo'" --model builtin --out "$work/r.xml" --mjcf-joints foo
     refuse "--mjcf-motors drives hinge joints" --model builtin --out "$work/r.xml" --mjcf-joints ball --mjcf-motors
+    refuse "--mjcf-geoms: expected 'capsule' or 'mesh', got 'hull'" --model builtin --out "$work/r.xml" --mjcf-geoms hull
+    refuse "--mjcf-geoms applies only to .xml" --model builtin --out "$work/r.glb" --mjcf-geoms mesh
     refuse "--density" --model builtin --out "$work/r.glb" --density 900
     refuse "--mjcf-joints" --model builtin --out "$work/r.bvh" --mjcf-joints ball
     refuse "--draco" --model builtin --out "$work/r.xml" --draco

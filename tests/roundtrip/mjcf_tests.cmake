@@ -1,6 +1,7 @@
 # MJCF output read by MuJoCo (tests/roundtrip/mjcf_test.sh, mjcf_check.cpp):
 #   mjcf.builtin, mjcf.smplx, mjcf.smplx_ball   export, independent reference, MuJoCo checks
 #   mjcf.motion, mjcf.motion_ball               --motion: .qpos.npz and keyframes against numpy
+#   mjcf.mesh, mjcf.smplx_mesh                  --mjcf-geoms mesh: hull points against the GLB's skin
 #   mjcf.refusals                               hostile values, inapplicable options, same bytes
 # mjcf_check links MuJoCo (Debian libmujoco-dev, scripts/setup-deps.sh); smpl-export does not.
 # Without MuJoCo the tests are still registered and fail (the checker path names the missing
@@ -19,7 +20,7 @@ else()
   message(WARNING "MuJoCo (libmujoco-dev) not found: the mjcf.* tests will fail; run scripts/setup-deps.sh")
   set(SMPL_MJCF_CHECK "mjcf_check-not-built:install-libmujoco-dev-with-scripts/setup-deps.sh")
 endif()
-foreach(case builtin smplx smplx_ball motion motion_ball refusals)
+foreach(case builtin smplx smplx_ball mesh smplx_mesh motion motion_ball refusals)
   add_test(NAME mjcf.${case}
     COMMAND ${CMAKE_CURRENT_LIST_DIR}/mjcf_test.sh $<TARGET_FILE:smpl-export> ${SMPL_MJCF_CHECK}
             ${SMPL_SYSTEM_PYTHON} ${PROJECT_SOURCE_DIR} ${SMPL_FIXTURE_DIR} ${CMAKE_BINARY_DIR}/mjcf ${case})

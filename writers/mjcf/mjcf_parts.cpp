@@ -10,10 +10,11 @@ namespace smpl {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kFloorRadius = 0.01;   // m: the sphere of a part with no triangles
-constexpr double kFlatRegular = 0.005;  // m: added to the second moments' diagonal
-constexpr double kMinRadius = 0.001;    // m: thinnest capsule
-constexpr double kMinSegment = 0.0001;  // m: shorter capsules become spheres
+constexpr double kFloorRadius = 0.01;    // m: the sphere of a part with no triangles
+constexpr double kFlatRegular = 0.005;   // m: added to the second moments' diagonal
+constexpr double kMinRadius = 0.001;     // m: thinnest capsule
+constexpr double kMinSegment = 0.0001;   // m: shorter capsules become spheres
+constexpr double kMinThickness = 0.001;  // m: thinner point sets get no hull
 const double kFloorVolume = 4.0 / 3.0 * kPi * kFloorRadius * kFloorRadius * kFloorRadius;
 
 Eigen::Vector3d vertex(const SkinnedMesh& m, int v) { return m.positions.row(v).cast<double>(); }
@@ -88,6 +89,8 @@ MjcfGeom capsuleOf(const std::vector<Eigen::Vector3d>& points) {
   Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
   for (const Eigen::Vector3d& v : points) s += (v - c) * (v - c).transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s);
+  const double thickness = std::sqrt(std::max(0.0, eig.eigenvalues()[0] / double(points.size())));
+  if (points.size() >= 4 && thickness >= kMinThickness) g.hull = points;
   Eigen::Vector3d a = eig.eigenvectors().col(2);  // eigenvalues ascending: the largest
   Eigen::Index big = 0;
   a.cwiseAbs().maxCoeff(&big);

@@ -30,6 +30,13 @@
 // vertices from the axis line (at least 1 mm); the segment is [min t + r,
 // max t - r] along a (the caps end at the extreme vertices); shorter than
 // 0.1 mm: a sphere of radius r at the middle. Fewer than 3 vertices: no geom.
+//
+// Hull points (--mjcf-geoms mesh): the same dominated vertices, kept when
+// they span a solid: at least 4, and a thickness (the square root of the
+// covariance's smallest eigenvalue) of at least 1 mm; MuJoCo takes the
+// convex hull of a mesh given by vertices alone. Otherwise empty (the
+// writer falls back to the capsule: a flat or tiny hull is no collision
+// shape, and MuJoCo's hull of coplanar points fails to load).
 #pragma once
 
 #include <Eigen/Core>
@@ -45,6 +52,9 @@ struct MjcfGeom {
   Eigen::Vector3d from = Eigen::Vector3d::Zero();  // capsule ends; a sphere's centre is `from`
   Eigen::Vector3d to = Eigen::Vector3d::Zero();
   double radius = 0.0;  // metres
+  // The dominated vertices (world, model axes) when they span a solid, else
+  // empty: a convex hull mesh's points (--mjcf-geoms mesh).
+  std::vector<Eigen::Vector3d> hull;
 };
 
 struct MjcfPart {

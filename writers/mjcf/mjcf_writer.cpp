@@ -112,9 +112,15 @@ std::string inertial(const Context& c, int k, const Eigen::Vector3d& origin) {
          num(i(0, 1)) + " " + num(i(0, 2)) + " " + num(i(1, 2)) + "\"/>";
 }
 
+bool meshGeom(const Context& c, int k) {
+  return c.options.mjcf_geoms == "mesh" && !c.parts.parts[size_t(k)].geom.hull.empty();
+}
+
 std::string geom(const Context& c, int k, const Eigen::Vector3d& origin) {
   const MjcfGeom& g = c.parts.parts[size_t(k)].geom;
   const std::string name = escaped(c.asset.skeleton.names[size_t(k)]);
+  if (meshGeom(c, k))  // the <asset> mesh of the same name, in this body's frame
+    return "<geom name=\"" + name + "\" type=\"mesh\" mesh=\"" + name + "\"/>";
   if (g.kind == MjcfGeom::Kind::Capsule)
     return "<geom name=\"" + name + "\" type=\"capsule\" fromto=\"" + vec(zUp(g.from - origin)) +
            " " + vec(zUp(g.to - origin)) + "\" size=\"" + num(g.radius) + "\"/>";
@@ -122,6 +128,23 @@ std::string geom(const Context& c, int k, const Eigen::Vector3d& origin) {
     return "<geom name=\"" + name + "\" type=\"sphere\" pos=\"" + vec(zUp(g.from - origin)) +
            "\" size=\"" + num(g.radius) + "\"/>";
   return "";
+}
+
+// <asset>: with --mjcf-geoms mesh, per part with hull points a <mesh> of
+// those points in its body's frame (Z up); MuJoCo takes their convex hull.
+std::string meshAssets(const Context& c) {
+  if (c.options.mjcf_geoms != "mesh") return "";
+  std::string out;
+  const Skeleton& s = c.asset.skeleton;
+  for (size_t k = 0; k < s.names.size(); ++k) {
+    if (!meshGeom(c, int(k))) continue;
+    const Eigen::Vector3d origin = s.rest_world.row(Eigen::Index(k)).transpose();
+    out += "    <mesh name=\"" + escaped(s.names[k]) + "\" vertex=\"";
+    const std::vector<Eigen::Vector3d>& points = c.parts.parts[k].geom.hull;
+    for (size_t i = 0; i < points.size(); ++i) out += (i ? " " : "") + vec(zUp(points[i] - origin));
+    out += "\"/>\n";
+  }
+  return out.empty() ? "" : "  <asset>\n" + out + "  </asset>\n";
 }
 
 std::string joints(const Context& c, int k) {
@@ -183,6 +206,8 @@ Status checkInput(const Asset& asset, const WriterOptions& options) {
     return makeError("MJCF writer: joints '" + options.mjcf_joints + "'; expected hinge or ball");
   if (options.mjcf_motors && options.mjcf_joints != "hinge")
     return makeError("MJCF writer: motors drive hinge joints; ball joints have none");
+  if (options.mjcf_geoms != "capsule" && options.mjcf_geoms != "mesh")
+    return makeError("MJCF writer: geoms '" + options.mjcf_geoms + "'; expected capsule or mesh");
   if (asset.animations.size() > 1)
     return makeError("MJCF writer: the asset has " + std::to_string(asset.animations.size()) +
                      " animations; an MJCF file holds one");
@@ -263,7 +288,7 @@ struct MjcfWriter : Writer {
     out += "  <option gravity=\"0 0 -9.81\" timestep=\"0.002\"/>\n";
     out += "  <default>\n    <joint damping=\"0.5\" armature=\"0.01\"/>\n";
     out += "    <geom contype=\"1\" conaffinity=\"0\" condim=\"3\" friction=\"1 0.005 0.0001\"/>\n";
-    out += "  </default>\n  <worldbody>\n";
+    out += "  </default>\n" + meshAssets(c) + "  <worldbody>\n";
     out += "    <geom name=\"floor\" type=\"plane\" pos=\"0 0 " + num(lowestY(asset.mesh)) +
            "\" size=\"10 10 0.1\" contype=\"1\" conaffinity=\"1\"/>\n";
     writeBody(c, c.tree.root, 2, &out);

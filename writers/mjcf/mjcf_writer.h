@@ -24,7 +24,10 @@
 // centre of mass, volume * options.density kg/m^3, inertia about the centre;
 // the masses sum to the closed rest mesh's volume times the density) and a
 // collision capsule (or sphere) `<name>` fitted to the vertices the joint
-// dominates (mjcf_parts.h). Body geoms collide with the floor only
+// dominates (mjcf_parts.h), or with options.mjcf_geoms "mesh" the convex
+// hull of those vertices: an <asset> <mesh name="<name>" vertex="..."> in
+// the body's frame (MuJoCo computes the hull) and <geom type="mesh">; a
+// part whose vertices span no solid keeps the capsule. Body geoms collide with the floor only
 // (contype 1, conaffinity 0; the floor 1, 1): the rest pose's parts overlap.
 // <compiler inertiafromgeom="false">: the geoms carry no mass.
 //
@@ -47,7 +50,7 @@
 // 0), so a key's qpos equals the .npz row exactly; names XML-escaped. Same
 // asset, same bytes. Errors: a mesh without volume (mjcf_parts.h), duplicate
 // or empty joint names, density not in (0, 1e5], joints not "hinge" or
-// "ball", more than one clip, the clip errors of mjcf_qpos.h.
+// "ball", geoms not "capsule" or "mesh", more than one clip, the clip errors of mjcf_qpos.h.
 //
 //   Result<std::string> xml = mjcfWriter().serialize(asset, WriterOptions{});
 #pragma once

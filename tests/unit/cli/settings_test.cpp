@@ -307,7 +307,8 @@ TEST(OptionTable, EveryRuleIsEnforced) {
                                                       {"--corrective-weights", "unit"},
                                                       {"--uv", "none"},
                                                       {"--dmpl-joints", "fixed"},
-                                                      {"--mjcf-joints", "ball"}};
+                                                      {"--mjcf-joints", "ball"},
+                                                      {"--mjcf-geoms", "mesh"}};
     const std::string value = valid.count(o.name) ? valid.at(o.name) : "1";
     if (o.value) args.push_back(value.c_str());
     if (std::string(o.name) == "--motion-dir" || std::string(o.name) == "--out-dir")
@@ -319,7 +320,7 @@ TEST(OptionTable, EveryRuleIsEnforced) {
     ++checked;
   }
   EXPECT_GE(checked, 27);
-  EXPECT_EQ(format_only, 14);  // the options the writer rows list
+  EXPECT_EQ(format_only, 15);  // the options the writer rows list
   EXPECT_EQ(mesh_only, 13);    // refused for a format without a mesh
   for (const OptionSpec& o : optionTable()) EXPECT_TRUE(o.help && *o.help) << o.name;
 }
