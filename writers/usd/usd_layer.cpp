@@ -169,6 +169,14 @@ void appendAnimation(std::string& out, const Asset& a, const std::vector<std::st
   out += "            half3[] scales = [";
   for (size_t k = 0; k < paths.size(); ++k) out += k ? ", (1, 1, 1)" : "(1, 1, 1)";
   out += "]\n";
+  // With time samples also a default (the rest weights): valid USD either
+  // way (samples win at every time code), and tinyusdz 0.9's scene reader
+  // refuses blendShapeWeights without one.
+  if (clip) {
+    out += "            float[] blendShapeWeights = ";
+    appendWeights(out, a, nullptr, 0);
+    out += "\n";
+  }
   appendAnimated(out, "float[] blendShapeWeights", appendWeights, a, clip);
   out += "        }\n";
 }

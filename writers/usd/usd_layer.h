@@ -14,7 +14,9 @@
 //         rotations (quatf, local), translations (float3, local), scales
 //         (half3, 1), blendShapeWeights: time samples at time code f = frame
 //         f of the clip, or without a clip one default value (the rest pose:
-//         identity rotations, rest translations, the targets' rest weights)
+//         identity rotations, rest translations, the targets' rest weights);
+//         blendShapeWeights has the rest weights as its default also beside
+//         time samples
 //     def Mesh "Mesh": points, normals, primvars:st (with UVs), triangles,
 //       extent, primvars:skel:jointIndices / jointWeights (elementSize M,
 //       vertex), primvars:skel:geomBindTransform identity, skel:blendShapes,
