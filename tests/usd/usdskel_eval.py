@@ -6,6 +6,8 @@ GLB exported with the same options and against the model's own math.
     usdskel_eval.py --usd USD.json [--glb SAME.glb]
                     [--reference REF.json --frames 0,120,239] [--tol 1e-5]
 
+Without time samples: the evaluation at the default time equals the points
+(the animation's defaults and restTransforms compose to the bindTransforms).
 --glb: the USD's points, joints, skin weights, blend shape offsets, animated
 blend shape weights and joint rotations equal the GLB's (float32 values exact;
 quaternions up to sign), and inverse(bindTransforms) equal the skin's
@@ -342,6 +344,12 @@ def check_reference(usd, ref_path, frames, tol):
               % (name, 100 * tol, min(errs[name])))
 
 
+def check_rest(usd, tol):
+    """Without time samples the animation's defaults are the rest pose: UsdSkel must give the points."""
+    err = float(np.max(np.abs(evaluate(usd, 0) - np.asarray(usd["mesh"]["points"], dtype=np.float64))))
+    check(err <= tol, "static file: the evaluation at the default time gives the points (max |diff| %.3g m)" % err)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--usd", required=True, help="usd_read.mjs output")
@@ -356,6 +364,8 @@ def main():
         check_glb(usd, a.glb)
     if a.reference:
         check_reference(usd, a.reference, [int(f) for f in a.frames.split(",")], a.tol)
+    if not usd["animation"]["timeCodes"]:
+        check_rest(usd, a.tol)
     print("%d check(s) failed" % len(FAILED) if FAILED else "all checks passed")
     return 1 if FAILED else 0
 
