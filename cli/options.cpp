@@ -603,9 +603,11 @@ std::string appliesRule(const OptionSpec& option) {
 std::string usageText() {
   std::string out =
       "smpl-export: SMPL-family body model -> rigged glTF/GLB or FBX with pose\n"
-      "correctives, a BVH skeleton and motion, or a MuJoCo (MJCF) model\n\n"
-      "Usage: smpl-export --model PATH|builtin --out FILE" +
-      expand("{extensions|}") + "\n         [options]\n" +
+      "correctives, a BVH skeleton and motion, a MuJoCo (MJCF) model or a USD\n"
+      "(UsdSkel) body\n\n"
+      "Usage: smpl-export --model PATH|builtin\n"
+      "         --out FILE" +
+      expand("{extensions|}") + " [options]\n" +
       "       smpl-export --model PATH|DIR --motion-dir DIR --out-dir DIR [options]\n\n";
   for (const OptionSpec& o : kOptions) {
     if (o.heading && *o.heading)

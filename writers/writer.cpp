@@ -8,6 +8,7 @@
 #include "writers/fbx/fbx_writer.h"
 #include "writers/gltf/gltf_writer.h"
 #include "writers/mjcf/mjcf_writer.h"
+#include "writers/usd/usd_writer.h"
 
 namespace smpl {
 namespace {
@@ -88,6 +89,22 @@ std::deque<WriterFormat>& table() {
          /*single_clip=*/true,
          /*animated=*/true,
          /*motion_file=*/".qpos.npz"},
+        {"usda",
+         {".usda"},
+         {},
+         /*needs_mesh=*/true,
+         false,
+         false,
+         &usdaWriter(),
+         /*single_clip=*/true},
+        {"usdz",
+         {".usdz"},
+         {},
+         /*needs_mesh=*/true,
+         true,
+         false,
+         &usdzWriter(),
+         /*single_clip=*/true},
     };
   }();
   return rows;

@@ -117,8 +117,8 @@ struct WriterFormat {
   std::string motion_file = {};
 };
 
-// Every row, in usage order (glb, gltf, fbx, bvh, mjcf; test rows last). Rows stay where
-// they are while the table grows (pointers to them remain valid).
+// Every row, in usage order (glb, gltf, fbx, bvh, mjcf, usda, usdz; test rows last). Rows stay
+// where they are while the table grows (pointers to them remain valid).
 const std::deque<WriterFormat>& writerFormats();
 
 // The row whose extension `path` ends with (any case), or null.

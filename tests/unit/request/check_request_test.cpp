@@ -44,7 +44,7 @@ TEST(CheckRequest, ValidRequestsPass) {
   EXPECT_TRUE(checkRequest(batch).ok());
   batch.format = "obj";
   EXPECT_EQ(checkRequest(batch).message(),
-            "--format: expected 'glb', 'gltf', 'fbx', 'bvh' or 'mjcf', got 'obj'");
+            "--format: expected 'glb', 'gltf', 'fbx', 'bvh', 'mjcf', 'usda' or 'usdz', got 'obj'");
   ExportRequest edges = valid();  // every range at its ends
   edges.animation.fps = 1000;
   edges.reading.source_fps = 1;
@@ -67,9 +67,9 @@ TEST(CheckRequest, EachRangeAndConflictHasItsMessage) {
       {[](ExportRequest* r) { r->model.clear(); },
        "missing --model PATH (use --model builtin for the demo body)"},
       {[](ExportRequest* r) { r->out.clear(); },
-       "missing --out FILE (.glb, .gltf, .fbx, .bvh or .xml)"},
+       "missing --out FILE (.glb, .gltf, .fbx, .bvh, .xml, .usda or .usdz)"},
       {[](ExportRequest* r) { r->out = "a.obj"; },
-       "--out a.obj: unknown format (expected .glb, .gltf, .fbx, .bvh or .xml)"},
+       "--out a.obj: unknown format (expected .glb, .gltf, .fbx, .bvh, .xml, .usda or .usdz)"},
       {[](ExportRequest* r) {
          r->out = "a.bvh", r->motions = {"a.npz", "b.npz"};
        },

@@ -133,8 +133,8 @@ void expectTheCommandLineFollows(const std::string& usage) {
 }
 
 TEST(WriterTable, CommandLineFollowsTheTable) {
-  ASSERT_EQ(writerFormats().size(), 5u);
-  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx, .bvh or .xml");
+  ASSERT_EQ(writerFormats().size(), 7u);
+  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx, .bvh, .xml, .usda or .usdz");
   expectTheCommandLineFollows(usageText());
   EXPECT_EQ(writerForPath("x.FBX"), writerFormatByName("fbx")->writer);
 }
@@ -143,8 +143,10 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
   {
     ScopedWriterFormat skel(skeletonRow());
     const std::string usage = usageText();
-    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|mjcf|skel"), std::string::npos) << usage;
-    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .xml, .skel)"), std::string::npos)
+    EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|mjcf|usda|usdz|skel"), std::string::npos)
+        << usage;
+    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .xml, .usda, .usdz, .skel)"),
+              std::string::npos)
         << usage;
     expectTheCommandLineFollows(usage);
     // the glTF/FBX-only options do not apply to it
@@ -156,7 +158,7 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
       parse({"--model", "builtin", "--motion-dir", "m", "--out-dir", "o", "--format", "skel"});
   ASSERT_TRUE(gone.ok()) << gone.message();  // the parser stores it; the request checks it
   EXPECT_EQ(checkRequest(gone->request).message(),
-            "--format: expected 'glb', 'gltf', 'fbx', 'bvh' or 'mjcf', got 'skel'");
+            "--format: expected 'glb', 'gltf', 'fbx', 'bvh', 'mjcf', 'usda' or 'usdz', got 'skel'");
   EXPECT_EQ(writerFormatForPath("a.skel"), nullptr);
 }
 
