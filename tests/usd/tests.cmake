@@ -6,7 +6,7 @@
 #                             .usda / .usdz: Tydra's UsdSkel checks and mesh, the parsed layer's
 #                             skeleton, skin, blend shapes and animation -> <case>.json
 #   usd.reference.<model>     numpy's forward pass of the motion (tests/web/anim_reference.py)
-#   usd.check.<case>          usdskel_eval.py: points, joints, weights, blend shape offsets and
+#   usd.check.<case>          usdskel_eval.py: the .usdz container (stored, 64-byte aligned); points, joints, weights, blend shape offsets and
 #                             animated weights equal the GLB's; with a motion, numpy's UsdSkel
 #                             evaluation within 1e-5 m of the model at the first, middle and
 #                             last frame, and the (x,y,z,w)-quaternion and column-vector-matrix
@@ -55,12 +55,16 @@ function(smpl_usd_case case model)
     set_tests_properties(usd.read.${case}_${ext} PROPERTIES
       FIXTURES_SETUP usd_read_${case}_${ext} FIXTURES_REQUIRED "usd_${case}_${ext};usd_dir" LABELS usd TIMEOUT 300)
     set(needs "usd_read_${case}_${ext};usd_${case}_glb;usd_dir")
+    set(container)
+    if(ext STREQUAL "usdz")
+      set(container --usdz ${SMPL_USD_DIR}/${case}.usdz)
+    endif()
     if(U_MOTION)
       list(APPEND needs usd_ref_${case})
     endif()
     add_test(NAME usd.check.${case}_${ext}
       COMMAND ${SMPL_SYSTEM_PYTHON} ${SMPL_USD_SRC}/usdskel_eval.py --usd ${SMPL_USD_DIR}/${case}_${ext}.json
-              --glb ${SMPL_USD_DIR}/${case}.glb ${reference})
+              --glb ${SMPL_USD_DIR}/${case}.glb ${reference} ${container})
     set_tests_properties(usd.check.${case}_${ext} PROPERTIES FIXTURES_REQUIRED "${needs}" LABELS usd)
   endforeach()
 endfunction()

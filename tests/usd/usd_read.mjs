@@ -79,7 +79,7 @@ async function loadTinyUsdz() {
 
 const TOKEN = new RegExp([
   String.raw`(?<space>\s+|#[^\n]*)`,
-  String.raw`(?<string>"(?:[^"\\]|\\.)*")`,
+  String.raw`(?<string>"""[\s\S]*?"""|'''[\s\S]*?'''|"(?:[^"\\\n]|\\.)*"|'(?:[^'\\\n]|\\.)*')`,
   String.raw`(?<path><[^>]*>)`,
   String.raw`(?<number>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?inf\b|nan\b)`,
   String.raw`(?<ident>[A-Za-z_][\w:.]*(?:\[\])?)`,
@@ -99,6 +99,13 @@ function tokenize(text) {
   return out;
 }
 
+// A USDA string token's text: "..." or '...' (or tripled) with backslash escapes.
+function unquote(text) {
+  const q = text.startsWith('"""') || text.startsWith("'''") ? 3 : 1;
+  const escapes = { n: '\n', t: '\t', r: '\r' };
+  return text.slice(q, -q).replace(/\\(.)/gs, (_, c) => escapes[c] ?? c);
+}
+
 class Parser {
   constructor(tokens) { this.t = tokens; this.i = 0; }
   peek(k = 0) { return this.t[this.i + k]; }
@@ -115,7 +122,7 @@ class Parser {
   value() {
     const t = this.next();
     if (t.kind === 'number') return Number(t.text.replace(/inf$/, 'Infinity').replace(/^nan$/, 'NaN'));
-    if (t.kind === 'string') return JSON.parse(t.text);
+    if (t.kind === 'string') return unquote(t.text);
     if (t.kind === 'path') return t.text.slice(1, -1);
     if (t.kind === 'ident') return t.text === 'true' ? true : t.text === 'false' ? false : t.text;
     if (t.text === '[' || t.text === '(') {
@@ -128,7 +135,7 @@ class Parser {
       this.next();
       return items;
     }
-    if (t.text === '{') return this.timeSamples();
+    if (t.text === '{') return this.peek().kind === 'number' || this.is('}') ? this.timeSamples() : this.dictionary();
     throw new Error(`layer text: unexpected '${t.text}' in a value`);
   }
 
@@ -144,6 +151,20 @@ class Parser {
     }
     this.next();
     return samples;
+  }
+
+  // { type key = value ... } (customData, customLayerData), after its '{'.
+  dictionary() {
+    const dict = {};
+    while (!this.is('}')) {
+      this.next();  // the value's type (string, int, double[], dictionary, ...)
+      const key = this.value();
+      this.expect('=');
+      dict[key] = this.value();
+      if (this.is(';') || this.is(',')) this.next();
+    }
+    this.next();
+    return dict;
   }
 
   // ( key = value ... ), with list-op keywords (prepend/append/...) and bare strings (doc).
