@@ -22,13 +22,18 @@ quaternions read as (x, y, z, w), and matrices read as column-vector
 (translation in the last column).
 Prints every measured number; exit 1 when a check fails.
 
-USD conventions used (OpenUSD docs, read through the `search` tool):
-- Matrices are row-major and act on row vectors, translation in the last row
-  (GfMatrix4d: "matrices are stored in row-major order ... vectors are
-  row vectors, multiplied on the left: v' = v * M"; usda text writes the rows:
-  ( (1,0,0,0), (0,1,0,0), (0,0,1,0), (tx,ty,tz,1) )).
-- quatf text is (real, i, j, k) (GfQuatf's text form; UsdSkel rotations).
-- UsdSkel (docs "UsdSkel Schemas In-Depth", UsdSkelSkinningQuery): local joint
+USD conventions used:
+- Matrices are row-major and act on row vectors, translation in the last row:
+  v' = v M (OpenUSD, https://openusd.org/dev/api/usd_geom_page_front.html
+  #UsdGeom_LinAlgBasics; the AOUSD forum thread "USD XForms: Row vs Column
+  Major", https://forum.aousd.org/t/usd-xforms-row-vs-column-major/644, where
+  ( (1,0,0,0), (0,1,0,0), (0,0,1,0), (5,0,0,1) ) translates by 5 in x).
+- quatf text is (real, i, j, k): GfQuatf is "a real coefficient and three
+  imaginary coefficients" and prints the real part first; the identity is
+  (1, 0, 0, 0).
+- UsdSkel (OpenUSD "UsdSkel Schemas In-Depth", UsdSkelSkinTransformLBS; the
+  same equations summarised in lighttransport/LightUSD's wiki page "usdSkel":
+  K_i = inv(B_i) * J_i, p = sum_i w_i K_i G p_local): local joint
   transforms from the SkelAnimation's translations/rotations/scales (else the
   Skeleton's restTransforms) composed down the `joints` paths (a joint's parent
   is its path without the last element: UsdSkelTopology), skel-space
