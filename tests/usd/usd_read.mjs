@@ -33,9 +33,14 @@
 //    animation: {path, joints [J], blendShapes [B], timeCodes [T],
 //                translations/rotations/scales/blendShapeWeights: {default, samples: {t: [...]}}},
 //    readBy: {tydra: [...], layer: [...]}}
-// Rotations are kept as written, (real, i, j, k): USD's quatf text order
-// (Gf quaternion text, OpenUSD docs "USD Text (.usda) value syntax", GfQuatf
-// ostream operator prints (real, i, j, k)).
+// Rotations are kept as written, (real, i, j, k), and matrices as their text
+// rows: usdskel_eval.py interprets them (USD's conventions are cited there).
+//
+// Tydra (0.9.0-rc10, src/tydra/render-data.cc ConvertSkelAnimation) rejects a
+// SkelAnimation whose blendShapeWeights has timeSamples but no default value
+// ("`blendShapeWeights` attribute of SkelAnimation is invalid"), although USD
+// allows that; a file that authors both (the default is unused at numeric time
+// codes) loads.
 // Errors: exit 1 with one line `FILE: ...` when tinyusdz cannot load the file.
 import fs from 'node:fs';
 import path from 'node:path';
