@@ -255,6 +255,11 @@ def check_structure(usd):
     check(mesh["normals"] is not None and len(mesh["normals"]) == n and mesh["normalsInterpolation"] == "vertex"
           and set(mesh["faceVertexCounts"]) == {3} and len(mesh["faceVertexIndices"]) == 3 * len(mesh["faceVertexCounts"]),
           "mesh: vertex normals, %d triangles" % len(mesh["faceVertexCounts"]))
+    times = anim["timeCodes"]
+    if times:
+        start, end = st.get("startTimeCode"), st.get("endTimeCode")
+        check(times == list(range(len(times))) and start == 0 and end == len(times) - 1,
+              "time codes 0..%d, startTimeCode %s, endTimeCode %s" % (len(times) - 1, start, end))
     w = np.asarray(mesh["jointWeights"], dtype=np.float64).reshape(-1, m)
     check(np.max(np.abs(w.sum(1) - 1)) < 1e-6, "skin weights sum to 1 (max |sum-1| %.2g)"
           % np.max(np.abs(w.sum(1) - 1)))
