@@ -289,6 +289,16 @@ const std::vector<OptionSpec> kOptions = {
                                                    : SkeletonNames::Ue5;
        return Status();
      }},
+    {"--rest-pose", nullptr, "t|a", Applies::Any, nullptr,
+     "the skeleton's rest: t (default) the model's T-pose; a the arms 45 degrees down, every key "
+     "re-expressed so the joints move as with t (.bvh only: a skinned mesh bound at an A pose "
+     "deforms differently)",
+     [](V v, S* s) {
+       Result<int> c = choice(v, "--rest-pose", {"t", "a"});
+       if (!c) return Status(c.error());
+       s->request.asset.rest_pose = *c == 0 ? RestPose::T : RestPose::A;
+       return Status();
+     }},
     {"--dmpl", nullptr, "FILE|DIR", Applies::Mesh, nullptr,
      "DMPL soft-tissue basis (.npz, key eigvec (N,3,D)): morph targets dmpl_<i>, animated from the "
      "motion's `dmpls` (weight = scale*c + offset in [0, 1], mapping in the metadata); without "

@@ -166,6 +166,10 @@ struct AssetMetadata {
   // Last, as above.
   std::string skeleton_names = "smpl";
   std::vector<std::string> model_joint_names{};
+  // --rest-pose (rest_pose.h): "t" (the model's T rest, identity rest
+  // rotations) or "a" (the skeleton's offsets and keys at an A-pose rest).
+  // Last, as above.
+  std::string rest_pose = "t";
 };
 
 // Where the asset stands (exporter/placement.h): --origin and --root-bone.

@@ -8,6 +8,7 @@
 #include "exporter/expression_targets.h"
 #include "exporter/morph_scales.h"
 #include "exporter/placement.h"
+#include "exporter/rest_pose.h"
 #include "exporter/skeleton_names.h"
 #include "exporter/validate_asset.h"
 
@@ -87,6 +88,9 @@ Result<Asset> exportAsset(const BodyModel& model, const ExportOptions& options,
     asset->animations.push_back(std::move(*clip));
   }
   if (Status st = placeAsset(model, options, motions, dmpl, &*asset); !st) return st.error();
+  // After the placement: the A rest keeps every posed joint where it put them.
+  if (options.rest_pose == RestPose::A)
+    if (Status st = applyARestPose(&*asset); !st) return st.error();
   // Quantized targets carry their scale s_n in the weight mapping: folded
   // here so every writer and the sidecar see the same numbers.
   if (options.quantize_morphs) foldMorphScales(&*asset);

@@ -53,6 +53,11 @@ enum class Origin { Model, Floor };
 // names change: morph target names and every number stay the same.
 enum class SkeletonNames { Smpl, Mixamo, Ue5 };
 
+// The skeleton's rest pose (--rest-pose, exporter/rest_pose.h): T the
+// model's own (arms horizontal), A the arms 45 degrees down (skeleton-only
+// formats: BVH).
+enum class RestPose { T, A };
+
 // ExportOptions::max_influences value for "every joint" (--max-influences all).
 constexpr int kAllInfluences = 0;
 
@@ -87,6 +92,9 @@ struct ExportOptions {
   bool root_bone = false;  // --root-bone: a `root` joint (placement.h); implies Floor
   // --skeleton-names: exportAsset renames the bones last (skeleton_names.h)
   SkeletonNames skeleton_names = SkeletonNames::Smpl;
+  // --rest-pose: exportAsset re-expresses the rest and the keys after the
+  // placement, before the renaming (rest_pose.h)
+  RestPose rest_pose = RestPose::T;
 };
 
 // Whether an export with `o` refits its correctives: corrective_refit, with

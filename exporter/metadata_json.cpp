@@ -129,6 +129,7 @@ void modelJointsJson(const Skeleton& s, const AssetMetadata& m, bool root_bone, 
     parents.push_back(s.parents[k] < 0 ? -1 : s.parents[k] - int(first));
   (*o)["joint_names"] = std::vector<std::string>(names.begin() + long(first), names.end());
   (*o)["parents"] = parents;
+  if (m.rest_pose != "t") (*o)["rest_pose"] = m.rest_pose;  // rest_pose.h
   if (!renamed) return;
   (*o)["skeleton_names"] = m.skeleton_names;
   (*o)["bone_names"] = std::vector<std::string>(s.names.begin() + long(first), s.names.end());

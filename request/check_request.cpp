@@ -222,6 +222,11 @@ Status checkRequest(const ExportRequest& r) {
     return usage(std::string(r.motion_dir.empty() ? "--motion" : "--motion-dir") + ": " +
                  format->name + " output holds no animation (the model only)");
   if (Status st = checkSceneOptions(r, *format); !st) return st;
+  if (r.asset.rest_pose == RestPose::A && format->needs_mesh)
+    return usage(
+        "--rest-pose a applies only to a skeleton without a mesh (.bvh) for now: a mesh "
+        "bound at an A pose deforms differently under linear blend skinning "
+        "(docs/retargeting.md \"A-pose rest\")");
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }
 
@@ -251,6 +256,9 @@ Status checkRequestForModel(const ExportRequest& r, const std::vector<double>& b
                  ": the model " + model.name +
                  " is a MANO hand alone; the Mixamo and UE5 names are for SMPL, SMPL-H and SMPL-X "
                  "bodies");
+  if (r.asset.rest_pose == RestPose::A && model.kind == ModelKind::Mano)
+    return usage("--rest-pose a: the model " + model.name +
+                 " is a MANO hand alone; an A pose lowers the arms of a body");
   const int p = model.numPoseFeatures();
   if (r.asset.corrective_basis < 0 || r.asset.corrective_basis > p)
     return usage("--corrective-basis " + std::to_string(r.asset.corrective_basis) +

@@ -51,6 +51,10 @@ def parse_args():
                     help="--origin floor / --root-bone export: read the offset and the root bone from "
                          "the sidecar (BVH.smpl.json); expected joints move by the offset, 'root' is "
                          "the pelvis' ground projection")
+    ap.add_argument("--rest-pose", choices=("t", "a"), default="t",
+                    help="the --rest-pose given: with a, the rest heads are numpy's A pose (the "
+                         "shoulders turned 45 degrees down about z), the sidecar says so, and the "
+                         "posed joints must still be the model's")
     return ap.parse_args(harness.script_args())
 
 
@@ -107,7 +111,19 @@ def with_root(joints, root):
     return np.vstack([[joints[0, 0], 0.0, joints[0, 2]], joints])
 
 
-def check_skeleton(arm, ref, tol, dy=0.0, root=None):
+def a_pose_joints(ref):
+    """(K,3) the rest joints at the A pose of --rest-pose a, by numpy's forward pass: the
+    model's joints with left_shoulder turned -45 degrees and right_shoulder +45 degrees about
+    z (the arms down; +x is the body's left), docs/retargeting.md "A-pose rest"."""
+    names = list(ref.names)
+    pose = np.zeros((len(names), 3))
+    pose[names.index("left_shoulder")] = [0.0, 0.0, -np.pi / 4]
+    pose[names.index("right_shoulder")] = [0.0, 0.0, np.pi / 4]
+    _, joints, _ = model_math.forward(ref.model, ref.v_shaped, ref.joints, pose, ref.weights)
+    return joints
+
+
+def check_skeleton(arm, ref, tol, dy=0.0, root=None, rest_pose="t"):
     names, parents = list(ref.names), list(ref.model["parents"])
     if root is not None:  # the added bone: parent of the model's root joint
         names = [root] + names
@@ -123,10 +139,17 @@ def check_skeleton(arm, ref, tol, dy=0.0, root=None):
         got = bone.parent.name if bone.parent else None
         harness.check(got == want, "bone %s: parent %s, expected %s" % (name, got, want))
     if all(bones.get(n) for n in names):
-        want = with_root(ref.joints + np.array([0.0, dy, 0.0]), root)
-        err = np.abs(world_heads(arm, names, rest=True) - want).max()
-        print("bvh rest joints vs J(beta): %.3e m" % err)
-        harness.check(err <= tol, "rest heads off J(beta) by %.3g m" % err)
+        rest = a_pose_joints(ref) if rest_pose == "a" else ref.joints
+        want = with_root(rest + np.array([0.0, dy, 0.0]), root)
+        heads = world_heads(arm, names, rest=True)
+        err = np.abs(heads - want).max()
+        what = "the A pose of J(beta)" if rest_pose == "a" else "J(beta)"
+        print("bvh rest joints vs %s: %.3e m" % (what, err))
+        harness.check(err <= tol, "rest heads off %s by %.3g m" % (what, err))
+        if rest_pose == "a":  # the A rest is not the T rest: the check above can tell
+            t_err = np.abs(heads - with_root(ref.joints + np.array([0.0, dy, 0.0]), root)).max()
+            print("bvh rest joints vs J(beta) (the T rest): %.3e m (must exceed 1e-2)" % t_err)
+            harness.check(t_err > 1e-2, "the A rest heads equal the T rest's (%.3g m)" % t_err)
 
 
 def check_timing(arm, fps_out, count):
@@ -149,7 +172,10 @@ def main():
     dy, root = placement(args)
     if args.placed:
         print("bvh %s origin offset %+.6f m, root bone %s" % (label, dy, root))
-    check_skeleton(arm, ref, args.tol, dy, root)
+    if args.rest_pose == "a":
+        with open(args.bvh + ".smpl.json") as f:
+            harness.check(json.load(f).get("rest_pose") == "a", "the sidecar lacks rest_pose a")
+    check_skeleton(arm, ref, args.tol, dy, root, args.rest_pose)
     names = ([root] if root else []) + list(ref.names)
     ratio = motion["fps"] / fps_out  # source frames per output frame
     count = int(np.floor((motion["frames"] - 1) / ratio + 1e-9)) + 1

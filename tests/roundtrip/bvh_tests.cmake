@@ -2,7 +2,7 @@
 # which defines SMPL_ROUNDTRIP_DIR, SMPL_ROUNDTRIP_SRC and SMPL_BLENDER_RUN).
 #
 #   bvh.export.<case>   smpl-export --motion writes <build>/roundtrip/bvh_<case>.bvh,
-#                       case = <model>_<motion>_<units>[_fps<F>][_floor|_root]
+#                       case = <model>_<motion>_<units>[_fps<F>][_floor|_root][_resta]
 #   bvh.blender.<case>  headless Blender imports it (bpy.ops.import_anim.bvh, options in
 #                       blender_bvh.py) and compares every joint's world position with
 #                       numpy's posed joints at the first, middle and last frame (1e-5 m)
@@ -11,7 +11,7 @@
 
 # smpl_bvh_case(<model> <motion> <units> [FPS f])
 function(smpl_bvh_case model motion units)
-  cmake_parse_arguments(B "" "FPS;PLACE" "" ${ARGN})
+  cmake_parse_arguments(B "" "FPS;PLACE;REST" "" ${ARGN})
   set(case ${model}_${motion}_${units})
   set(fps_args)
   set(place_args)
@@ -28,6 +28,11 @@ function(smpl_bvh_case model motion units)
     set(case ${case}_root)
     set(place_args --root-bone)
     set(check_args --placed)
+  endif()
+  if(B_REST)
+    set(case ${case}_rest${B_REST})
+    list(APPEND place_args --rest-pose ${B_REST})
+    list(APPEND check_args --rest-pose ${B_REST})
   endif()
   set(bvh ${SMPL_ROUNDTRIP_DIR}/bvh_${case}.bvh)
   add_test(NAME bvh.export.${case}
@@ -56,3 +61,7 @@ smpl_bvh_case(smpl_small amass_smplh cm)
 # contract says ("Where the body stands").
 smpl_bvh_case(smplh_small amass_smplh m PLACE floor)
 smpl_bvh_case(smplh_small amass_smplh cm PLACE root)
+# --rest-pose a: the offsets of the A-pose rest (numpy's A pose, Blender's rest heads) and
+# every key re-expressed: the same posed joints as the T rest, within 1e-5 m.
+smpl_bvh_case(smplh_small amass_smplh m REST a)
+smpl_bvh_case(smplx_small amass_smplx cm FPS 30 REST a)
