@@ -116,6 +116,32 @@ namespace SmplExport.Correctives.StubTests
             }
         }
 
+        // --skeleton-names mixamo: the bones are mixamorig:*; with the GLB's
+        // metadata the avatar maps each joint through bone_names, without it
+        // the required joints are not found (by their SMPL names) and named.
+        [Test]
+        public void AvatarMapsRenamedBonesThroughTheMetadata()
+        {
+            Glb glb = Glb.Read(ExportedBody("smplx_mixamo"));
+            GameObject body = Instantiate(glb, "", false);
+            string error;
+            Assert.IsTrue(SmplHumanoid.Build(body, out error) == null, "without the metadata: no avatar");
+            Assert.IsTrue(error != null && error.Contains("pelvis") && error.Contains("left_elbow"),
+                          "the missing joints are named: " + error);
+            SidecarLayout layout = SidecarLayout.Parse(glb.JsonText, "smplx_mixamo.glb", out error);
+            Assert.IsTrue(layout != null && layout.BoneNames != null, "the metadata has bone_names: " + error);
+            Avatar avatar = SmplHumanoid.Apply(body, out error, layout);
+            Assert.IsNotNull(avatar, "with the metadata: " + error);
+            Assert.AreEqual(55, avatar.humanDescription.human.Length, "human bones");
+            var boneOf = avatar.humanDescription.human.ToDictionary(h => h.humanName, h => h.boneName);
+            Assert.AreEqual("mixamorig:Hips", boneOf["Hips"], "Hips");
+            Assert.AreEqual("mixamorig:LeftForeArm", boneOf["LeftLowerArm"], "LeftLowerArm");
+            Assert.AreEqual("mixamorig:RightHandThumb3", boneOf["Right Thumb Distal"], "Right Thumb Distal");
+            Assert.AreEqual("jaw", boneOf["Jaw"], "Mixamo has no jaw bone: the model's name stays");
+            GameObject again = Instantiate(glb, "", false);
+            Assert.IsNotNull(HumanoidSetup.CreateFor(again, null, out error, layout), "editor setup: " + error);
+        }
+
         [Test]
         public void MissingRequiredJointIsNamed()
         {

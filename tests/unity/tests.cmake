@@ -69,6 +69,11 @@ foreach(kind smpl smplh smplx)
     COMMAND smpl-export --model ${SMPL_FIXTURE_DIR}/models/${kind}_small.npz --out ${SMPL_HUMANOID_DIR}/${kind}.glb)
   set_tests_properties(unity_humanoid_export.${kind} PROPERTIES LABELS csharp FIXTURES_SETUP unity_humanoid_bodies)
 endforeach()
+# and SMPL-X with Mixamo's bone names (--skeleton-names mixamo): the avatar maps through bone_names
+add_test(NAME unity_humanoid_export.smplx_mixamo
+  COMMAND smpl-export --model ${SMPL_FIXTURE_DIR}/models/smplx_small.npz --skeleton-names mixamo
+          --out ${SMPL_HUMANOID_DIR}/smplx_mixamo.glb)
+set_tests_properties(unity_humanoid_export.smplx_mixamo PROPERTIES LABELS csharp FIXTURES_SETUP unity_humanoid_bodies)
 set_tests_properties(unity_editmode_stub PROPERTIES LABELS csharp
   FIXTURES_REQUIRED "unity_humanoid_bodies;conformance_kit"
   ENVIRONMENT "SMPL_HUMANOID_DIR=${SMPL_HUMANOID_DIR};SMPL_CONFORMANCE_KIT=${SMPL_CONFORMANCE_KIT}")

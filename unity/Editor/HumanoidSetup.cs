@@ -3,7 +3,9 @@
 // docs/file-contract.md), saves it as an asset next to the model and assigns
 // it to the object's Animator (added if missing). Works for glTF (glTFast,
 // UniGLTF) and FBX bodies alike, since it reads the scene object's
-// transforms, not an importer. Menu: Tools > SMPL > Create Humanoid Avatar for Selection.
+// transforms, not an importer. A --skeleton-names mixamo|ue5 body is mapped
+// through its sidecar's bone_names (<model file>.smpl.json, found as
+// CorrectivesSetup finds it). Menu: Tools > SMPL > Create Humanoid Avatar for Selection.
 using UnityEditor;
 using UnityEngine;
 
@@ -29,11 +31,12 @@ namespace SmplExport.Correctives.Editor
         /// <summary>
         /// Builds the Humanoid avatar of the body under root, sets it on root's
         /// Animator (with Undo) and, if assetPath is not null, saves it there.
-        /// Returns the avatar, or null with a one-line error.
+        /// layout: the body's metadata (its bone_names map renamed bones), or
+        /// null. Returns the avatar, or null with a one-line error.
         /// </summary>
-        public static Avatar CreateFor(GameObject root, string assetPath, out string error)
+        public static Avatar CreateFor(GameObject root, string assetPath, out string error, SidecarLayout layout = null)
         {
-            Avatar avatar = SmplHumanoid.Build(root, out error);
+            Avatar avatar = SmplHumanoid.Build(root, out error, layout);
             if (avatar == null) return null;
             if (assetPath != null) AssetDatabase.CreateAsset(avatar, assetPath);
             Animator animator = root.GetComponent<Animator>();
@@ -61,7 +64,19 @@ namespace SmplExport.Correctives.Editor
                 string modelPath = PrefabUtility.GetPrefabAssetPathOfNearestInstanceRoot(go);
                 string path = AssetDatabase.GenerateUniqueAssetPath(AvatarPathFor(modelPath, go.name));
                 string error;
-                Avatar avatar = CreateFor(go, path, out error);
+                SidecarLayout layout = null;
+                string sidecarModel;
+                TextAsset sidecar = CorrectivesSetup.FindSidecar(go, out sidecarModel);
+                if (sidecar != null)
+                {
+                    layout = SidecarLayout.Parse(sidecar.text, CorrectivesSetup.SidecarPathFor(sidecarModel), out error);
+                    if (layout == null)
+                    {
+                        Debug.LogError(error, go);
+                        continue;
+                    }
+                }
+                Avatar avatar = CreateFor(go, path, out error, layout);
                 if (avatar == null)
                     Debug.LogError(error, go);
                 else

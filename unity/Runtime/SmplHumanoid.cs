@@ -6,8 +6,10 @@
 //
 // Bones are found by name under the given root (NameMatch: exact first, then
 // decorated names such as "Armature|pelvis"), so a joint named "root" above
-// pelvis (smpl-export --root-bone) is simply part of the skeleton. MANO (a
-// hand without a body) has no Humanoid avatar.
+// pelvis (smpl-export --root-bone) is simply part of the skeleton. With the
+// exporter's metadata (a SidecarLayout) of a --skeleton-names mixamo|ue5
+// export, each joint is looked up by its bone's name (bone_names) instead.
+// MANO (a hand without a body) has no Humanoid avatar.
 using System;
 using System.Collections.Generic;
 using UnityEngine;
@@ -95,10 +97,14 @@ namespace SmplExport.Correctives
         /// imported, local rotation, scale) for root and every transform below
         /// it, and Unity's importer defaults for twist, stretch and feet
         /// spacing. The body must be in its rest pose (SMPL's T-pose, as
-        /// imported). Returns null, with one line in error naming the missing
-        /// joints, if a bone Unity requires (HumanTrait.RequiredBone) is not found.
+        /// imported). layout: the export's metadata (sidecar or the glTF's
+        /// asset.extras.smpl); with bone_names (--skeleton-names mixamo|ue5)
+        /// joint k's transform is found by bone_names[k]; null or without
+        /// bone_names, by the joint's own name. Returns null, with one line in
+        /// error naming the missing joints, if a bone Unity requires
+        /// (HumanTrait.RequiredBone) is not found.
         /// </summary>
-        public static HumanDescription? Describe(Transform root, out string error)
+        public static HumanDescription? Describe(Transform root, out string error, SidecarLayout layout = null)
         {
             error = null;
             if (root == null)
@@ -111,7 +117,7 @@ namespace SmplExport.Correctives
             var names = new List<string>(transforms.Count);
             foreach (Transform t in transforms) names.Add(t.name);
             var wanted = new List<string>(Table.Length);
-            foreach (Entry e in Table) wanted.Add(e.Joint);
+            foreach (Entry e in Table) wanted.Add(BoneNameOf(e.Joint, layout));
             int[] match = NameMatch.Assign(wanted, names);
 
             var human = new List<HumanBone>();
@@ -120,7 +126,8 @@ namespace SmplExport.Correctives
             {
                 if (match[i] < 0)
                 {
-                    if (HumanTrait.RequiredBone((int)Table[i].Bone)) missing.Add(Table[i].Joint);
+                    if (HumanTrait.RequiredBone((int)Table[i].Bone))
+                        missing.Add(wanted[i] == Table[i].Joint ? wanted[i] : Table[i].Joint + " (" + wanted[i] + ")");
                     continue;
                 }
                 var bone = new HumanBone
@@ -166,11 +173,11 @@ namespace SmplExport.Correctives
         /// (AvatarBuilder.BuildHumanAvatar with Describe's description) and
         /// names it "&lt;root&gt; Avatar". Returns null with a one-line error if
         /// a required joint is missing or Unity reports the avatar invalid or
-        /// not human. Does not assign it: see Apply.
+        /// not human. layout as in Describe. Does not assign it: see Apply.
         /// </summary>
-        public static Avatar Build(GameObject root, out string error)
+        public static Avatar Build(GameObject root, out string error, SidecarLayout layout = null)
         {
-            HumanDescription? description = Describe(root == null ? null : root.transform, out error);
+            HumanDescription? description = Describe(root == null ? null : root.transform, out error, layout);
             if (description == null) return null;
             Avatar avatar = AvatarBuilder.BuildHumanAvatar(root, description.Value);
             if (avatar == null || !avatar.isValid || !avatar.isHuman)
@@ -183,14 +190,22 @@ namespace SmplExport.Correctives
         }
 
         /// <summary>Builds the avatar (Build) and sets it on root's Animator, adding one if there is none. Returns null and an error on failure.</summary>
-        public static Avatar Apply(GameObject root, out string error)
+        public static Avatar Apply(GameObject root, out string error, SidecarLayout layout = null)
         {
-            Avatar avatar = Build(root, out error);
+            Avatar avatar = Build(root, out error, layout);
             if (avatar == null) return null;
             Animator animator = root.GetComponent<Animator>();
             if (animator == null) animator = root.AddComponent<Animator>();  // not ??: Unity overloads == null
             animator.avatar = avatar;
             return avatar;
+        }
+
+        // The name of joint's bone: bone_names[k] of the metadata's joint k, else the joint's own.
+        static string BoneNameOf(string joint, SidecarLayout layout)
+        {
+            if (layout == null || layout.BoneNames == null) return joint;
+            int k = Array.IndexOf(layout.JointNames, joint);
+            return k < 0 ? joint : layout.BoneNames[k];
         }
 
         // Depth first, root first (the order of SkeletonBone entries Unity's importer writes).
