@@ -15,6 +15,10 @@ the reference with the other track's betas, and the reference one frame later (a
 one frame). Also: the sidecar's scene entry, one skin and one mesh per body, the timeline's span.
 Exit status 0 only when every check passes; prints the measured numbers.
 
+With --skeleton-names mixamo|ue5 the bones carry that rig's names: every body's skin joints must
+be the renamed bones of its metadata (bone_names, and a spot check of the rig's hips name spelled
+out here) and every check above holds unchanged (the player follows the skin, not the names).
+
 With --format fbx the scene is written as FBX instead and read by Blender's FBX importer only
 (--blender, tests/roundtrip/blender_scene.py): the same expected vertices, hidden bodies and camera
 (world matrix and vertical field of view), with the FBX sensitivity checks there.
@@ -395,6 +399,33 @@ def check_glb(out, refs, detected, starts, first, end, fps, m, weights, camera):
     check_camera(player, camera, first, end, fps)
 
 
+HIPS = {"mixamo": "mixamorig:Hips", "ue5": "pelvis"}  # the rigs' own names (docs/retargeting.md)
+THIGH = {"mixamo": "mixamorig:LeftUpLeg", "ue5": "thigh_l"}
+
+
+def check_bone_names(path, sidecar, names):
+    """Every body's metadata (the sidecar's bodies) records the renamed bones, and every skin's
+    joints are those bone_names, none the model's name of a renamed joint; the hips and left
+    thigh carry the rig's names."""
+    doc, _ = read_glb(path)
+    bodies = sidecar.get("bodies", [])
+    check(len(bodies) == len(doc["skins"]) and all(b.get("skeleton_names") == names for b in bodies),
+          "sidecar bodies' skeleton_names %s for %d skins"
+          % ([b.get("skeleton_names") for b in bodies], len(doc["skins"])))
+    bones = bodies[0].get("bone_names") if bodies else None
+    if bones is None:
+        check(False, "no bone_names in the sidecar's bodies")
+        return
+    for skin in doc["skins"]:
+        got = [doc["nodes"][j]["name"] for j in skin["joints"]]
+        check(got[-len(bones):] == bones, "skin %s joints %s..., expected bone_names %s..."
+              % (skin.get("name"), got[:3], bones[:3]))
+        check(HIPS[names] in got and THIGH[names] in got and "left_hip" not in got,
+              "skin %s lacks %s/%s or keeps left_hip" % (skin.get("name"), HIPS[names], THIGH[names]))
+    print("bone names (%s): %d skins carry bone_names (%s for left_hip, ...)"
+          % (names, len(doc["skins"]), bones[bodies[0]["joint_names"].index("left_hip")]))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
@@ -403,6 +434,8 @@ def main():
     ap.add_argument("--work", default="/tmp/scene_check")
     ap.add_argument("--format", default="glb", choices=["glb", "fbx"],
                     help="fbx: write the scene as FBX, checked in Blender only (needs --blender)")
+    ap.add_argument("--skeleton-names", choices=["mixamo", "ue5"],
+                    help="export with these bone names and check every skin carries them")
     ap.add_argument("--web-src", help="tests/web: also play the scene in three.js (three_scene_test.mjs)")
     ap.add_argument("--babylon-src", help="tests/web: also play the scene in Babylon.js (babylon_scene_test.mjs)")
     ap.add_argument("--blender", help="a Blender binary: also play it in Blender (tests/roundtrip/blender_scene.py)")
@@ -421,6 +454,8 @@ def main():
             os.remove(p)
     cmd = [a.exe, "--model", model_path, "--motion", fixture, "--out", out, "--scene",
            "--skin-weights", "truncated", "--max-influences", "4", "--corrective-refit", "off"]
+    if a.skeleton_names:
+        cmd += ["--skeleton-names", a.skeleton_names]
     refusals(a, model_path, fixture)
     run = subprocess.run(cmd, capture_output=True, text=True)
     print(" ".join(cmd))
@@ -450,6 +485,8 @@ def main():
         entry = [b for b in scene["bodies"] if b["name"] == "body_" + tid]
         check(len(entry) == 1 and entry[0]["track"] == tid and entry[0]["first_frame"] == starts[tid],
               "sidecar scene entry of body_%s: %s" % (tid, entry))
+    if a.skeleton_names and a.format == "glb":
+        check_bone_names(out, sidecar, a.skeleton_names)
     camera = expected_camera(a.layout, fixture)
     if a.format == "glb":
         check_glb(out, refs, detected, starts, first, end, fps, m, weights, camera)

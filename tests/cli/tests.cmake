@@ -157,6 +157,17 @@ foreach(layout wham vibe phalp prompthmr mcs)
             --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --work ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout})
   set_tests_properties(cli.scene.${layout} PROPERTIES LABELS cli)
 endforeach()
+# --skeleton-names on a scene: every body's skin carries the rig's bone names, and it plays as above.
+foreach(case wham:mixamo prompthmr:ue5)
+  string(REPLACE ":" ";" parts ${case})
+  list(GET parts 0 layout)
+  list(GET parts 1 names)
+  add_test(NAME cli.scene.${layout}_${names}
+    COMMAND ${SMPL_SYSTEM_PYTHON} ${CMAKE_CURRENT_LIST_DIR}/scene_check.py --exe $<TARGET_FILE:smpl-export>
+            --fixtures ${SMPL_FIXTURE_DIR} --layout ${layout} --skeleton-names ${names}
+            --work ${CMAKE_CURRENT_BINARY_DIR}/scene_${layout}_${names})
+  set_tests_properties(cli.scene.${layout}_${names} PROPERTIES LABELS cli)
+endforeach()
 # PromptHMR (results.pkl and its world4d.mcs): two SMPL-X people and the moving camera (position, view
 # direction, up) in every client.
 foreach(layout wham prompthmr mcs)
