@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/math/rotation.h"
+
 namespace smpl {
 namespace {
 
@@ -22,8 +24,8 @@ std::vector<Eigen::Quaterniond> aWorldRotations(const Skeleton& s, int left, int
   std::vector<Eigen::Quaterniond> world(s.names.size(), Eigen::Quaterniond::Identity());
   for (size_t k = 0; k < s.names.size(); ++k) {
     Eigen::Quaterniond local = Eigen::Quaterniond::Identity();
-    if (int(k) == left) local = Eigen::AngleAxisd(-angle, Eigen::Vector3d::UnitZ());
-    if (int(k) == right) local = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ());
+    if (int(k) == left) local = axisAngleQuaternion(-angle, Eigen::Vector3d::UnitZ());
+    if (int(k) == right) local = axisAngleQuaternion(angle, Eigen::Vector3d::UnitZ());
     world[k] = s.parents[k] < 0 ? local : world[size_t(s.parents[k])] * local;
   }
   return world;
