@@ -34,6 +34,9 @@ Result<double> lowestOfModel(const BodyModel& model, const ExportOptions& option
   full.origin = Origin::Model;
   full.root_bone = false;
   full.quantize_morphs = false;
+  // The T rest's mesh: an A rest moves no posed vertex, and only a skeleton
+  // takes one (rest_pose.h); the arms it lowers stay above the feet.
+  full.rest_pose = RestPose::T;
   Result<Asset> asset = exportAsset(model, full, motions, dmpl);
   if (!asset) return asset.error();
   return lowestPoint(*asset);

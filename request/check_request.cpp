@@ -224,8 +224,8 @@ Status checkRequest(const ExportRequest& r) {
   if (Status st = checkSceneOptions(r, *format); !st) return st;
   if (r.asset.rest_pose == RestPose::A && format->needs_mesh)
     return usage(
-        "--rest-pose a applies only to a skeleton without a mesh (.bvh) for now: a mesh "
-        "bound at an A pose deforms differently under linear blend skinning "
+        "--rest-pose a applies only to .bvh for now: a skinned mesh bound at an A pose deforms "
+        "differently under linear blend skinning, and MJCF and USD keep the model's rest "
         "(docs/retargeting.md \"A-pose rest\")");
   return format->needs_mesh ? Status() : checkMeshOptions(r, *format);
 }

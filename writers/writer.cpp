@@ -90,7 +90,7 @@ std::deque<WriterFormat>& table() {
          /*animated=*/true,
          /*motion_file=*/".qpos.npz"},
         {"usda",
-         {".usda"},
+         {".usda", ".usd"},
          {},
          /*needs_mesh=*/true,
          false,

@@ -65,3 +65,4 @@ smpl_bvh_case(smplh_small amass_smplh cm PLACE root)
 # every key re-expressed: the same posed joints as the T rest, within 1e-5 m.
 smpl_bvh_case(smplh_small amass_smplh m REST a)
 smpl_bvh_case(smplx_small amass_smplx cm FPS 30 REST a)
+smpl_bvh_case(smplh_small amass_smplh cm PLACE root REST a)

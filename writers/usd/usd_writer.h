@@ -1,4 +1,5 @@
-// The USD writers (writers/writer.h, rows "usda" `--out body.usda` and
+// The USD writers (writers/writer.h, rows "usda" `--out body.usda` (or
+// `.usd`: USD reads a .usd file as text or binary by its content) and
 // "usdz" `--out body.usdz`): the subject as a UsdSkel body for USD tools
 // (Omniverse, Isaac Sim, Houdini, Maya, Blender with USD, Apple's Quick Look).
 // The .usda is the text layer of usd_layer.h; the .usdz packs that layer as

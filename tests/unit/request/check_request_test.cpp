@@ -67,9 +67,10 @@ TEST(CheckRequest, EachRangeAndConflictHasItsMessage) {
       {[](ExportRequest* r) { r->model.clear(); },
        "missing --model PATH (use --model builtin for the demo body)"},
       {[](ExportRequest* r) { r->out.clear(); },
-       "missing --out FILE (.glb, .gltf, .fbx, .bvh, .xml, .usda or .usdz)"},
+       "missing --out FILE (.glb, .gltf, .fbx, .bvh, .xml, .usda, .usd or .usdz)"},
       {[](ExportRequest* r) { r->out = "a.obj"; },
-       "--out a.obj: unknown format (expected .glb, .gltf, .fbx, .bvh, .xml, .usda or .usdz)"},
+       "--out a.obj: unknown format (expected .glb, .gltf, .fbx, .bvh, .xml, .usda, .usd or "
+       ".usdz)"},
       {[](ExportRequest* r) {
          r->out = "a.bvh", r->motions = {"a.npz", "b.npz"};
        },

@@ -131,7 +131,7 @@ void expectTheCommandLineFollows(const std::string& usage) {
 
 TEST(WriterTable, CommandLineFollowsTheTable) {
   ASSERT_EQ(writerFormats().size(), 7u);
-  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx, .bvh, .xml, .usda or .usdz");
+  EXPECT_EQ(writerExtensionList(), ".glb, .gltf, .fbx, .bvh, .xml, .usda, .usd or .usdz");
   expectTheCommandLineFollows(usageText());
   EXPECT_EQ(writerForPath("x.FBX"), writerFormatByName("fbx")->writer);
 }
@@ -142,7 +142,7 @@ TEST(WriterTable, ARowAddedIsOfferedEverywhere) {
     const std::string usage = usageText();
     EXPECT_NE(usage.find("--format glb|gltf|fbx|bvh|mjcf|usda|usdz|skel"), std::string::npos)
         << usage;
-    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .xml, .usda, .usdz, .skel)"),
+    EXPECT_NE(flat(usage).find("(.glb, .gltf, .fbx, .bvh, .xml, .usda, .usd, .usdz, .skel)"),
               std::string::npos)
         << usage;
     expectTheCommandLineFollows(usage);

@@ -158,6 +158,11 @@ TEST(UsdLayer, RefusesWhatUsdCannotHold) {
   EXPECT_NE(usdaLayer(off_grid).message().find("frame 1 is not at time code 1"), std::string::npos);
 }
 
+TEST(UsdLayer, DotUsdIsTheTextLayer) {  // USD reads a .usd as text or binary by its content
+  EXPECT_EQ(writerFormatForPath("DIR/body.USD"), writerFormatByName("usda"));
+  EXPECT_EQ(writerFormatForPath("body.usdz"), writerFormatByName("usdz"));
+}
+
 TEST(UsdLayer, UsdzHoldsTheLayerAsItsFirstFile) {
   const Asset a = test::makeAsset({3, 6, 2, true, 1, 2});
   Result<std::string> zip = writerFormatByName("usdz")->writer->serialize(a, WriterOptions{});
