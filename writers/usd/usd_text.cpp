@@ -1,29 +1,38 @@
 // .usda text forms (usd_text.h).
 #include "writers/usd/usd_text.h"
 
-#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 
 namespace smpl {
 namespace usd {
 namespace {
 
+// The fewest significant digits (from `least`: 6, which %g shortens by its
+// trailing zeros; up to 9 for a float, 17 for
+// a double: always exact) whose %g text reads back as `v`. snprintf and
+// strtod, not std::to_chars: emscripten's libc++ has no floating-point
+// to_chars, and every C library the builds use (glibc, musl, mingw-w64's
+// own printf) converts exactly, so the text is the same everywhere.
 template <typename T>
-void appendShortest(std::string& out, T v) {
+void appendShortest(std::string& out, T v, int least, int most) {
   if (v == 0) {  // both zeros as "0": the same bytes for -0 and +0
     out += '0';
     return;
   }
-  char text[64];
-  const std::to_chars_result r = std::to_chars(text, text + sizeof text, v);
-  out.append(text, r.ptr);
+  char text[40];
+  for (int digits = least; digits <= most; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, double(v));
+    if (static_cast<T>(std::strtod(text, nullptr)) == v) break;
+  }
+  out += text;
 }
 
 }  // namespace
 
-void appendFloat(std::string& out, float v) { appendShortest(out, v); }
+void appendFloat(std::string& out, float v) { appendShortest(out, v, 6, 9); }
 
-void appendDouble(std::string& out, double v) { appendShortest(out, v); }
+void appendDouble(std::string& out, double v) { appendShortest(out, v, 6, 17); }
 
 void appendFloat3(std::string& out, float x, float y, float z) {
   out += '(';

@@ -13,8 +13,8 @@
 namespace smpl {
 namespace usd {
 
-// The shortest text that reads back as the same float / double
-// (std::to_chars, round-trip exact); -0 as "0".
+// Text that reads back as the same float / double: %g with the fewest
+// digits that round-trip (a float: at least 6); -0 as "0".
 void appendFloat(std::string& out, float v);
 void appendDouble(std::string& out, double v);
 
