@@ -83,7 +83,11 @@ ExportRequest jobRequest(const ExportRequest& base, const PlannedOutput& p, bool
   job.motions = {p.motion};
   job.producer_hash = p.producer_hash;
   job.clean_temporaries = false;
-  if (one_thread) job.writer.threads = 1;
+  if (one_thread) {
+    // A subject's fit runs once while the jobs that need it wait: on every core.
+    job.asset.threads = base.writer.threads.value_or(0);
+    job.writer.threads = 1;
+  }
   return job;
 }
 

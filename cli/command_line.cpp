@@ -19,6 +19,7 @@
 #include "cli/settings.h"
 #include "cli/summary.h"
 #include "core/io/printable.h"
+#include "core/math/simd_target.h"
 #include "core/memory_budget.h"
 #include "core/os/system.h"
 #include "core/parallel.h"
@@ -79,6 +80,9 @@ int run(int argc, char** argv, Stage* stage) {
   Result<Settings> parsed = parseSettings(argc, argv);
   if (!parsed) return report("Error in arguments: " + parsed.message(), exitCodeFor(parsed.kind()));
   Settings& s = *parsed;
+  // SMPL_EXPORT_SIMD forces the kernels' instruction set (the output is the same bytes).
+  if (Status st = useSimdTargetFromEnvironment(); !st)
+    return report("Error in environment: " + st.message(), kExitUsage);
   if (s.help) return std::printf("%s", usageText().c_str()), kExitOk;
   if (s.version) return std::printf("smpl-export %s\n", SMPL_EXPORT_VERSION), kExitOk;
   ModelSource models(s.request.model);  // a file, builtin, or a folder (picked per motion)

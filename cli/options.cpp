@@ -483,8 +483,9 @@ const std::vector<OptionSpec> kOptions = {
      "rebuild every output, even when up to date",
      [](V, S* s) { return s->force = true, Status(); }, Hashed::No},
     {"--threads", nullptr, "N", Applies::Any, nullptr,
-     "worker threads: batch files converted at once (each compressing on one), or the FBX arrays "
-     "of a single file compressed at once (default: all cores; the output does not depend on it)",
+     "worker threads: batch files converted at once (each compressing on one), or, for a single "
+     "file, the skin fit, the corrective refit and the FBX arrays compressed at once (default: all "
+     "cores; the output does not depend on it)",
      [](V v, S* s) { return numberInto(v, "--threads", &s->request.writer.threads); }, Hashed::No},
     {"--shard", nullptr, "I/N", Applies::Batch, nullptr,
      "convert only share I of N (0 <= I < N): the motions sorted by path relative to DIR, the one "

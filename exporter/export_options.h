@@ -95,6 +95,9 @@ struct ExportOptions {
   // --rest-pose: exportAsset re-expresses the rest and the keys after the
   // placement, before the renaming (rest_pose.h)
   RestPose rest_pose = RestPose::T;
+  // Workers of the skin-weight fit and the corrective refit (--threads; 0:
+  // all cores). Their split never changes a sum: the same bytes for any count.
+  int threads = 0;
 };
 
 // Whether an export with `o` refits its correctives: corrective_refit, with

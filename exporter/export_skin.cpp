@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/math/skin_weight_fit.h"
+#include "core/parallel.h"
 
 namespace smpl {
 
@@ -34,6 +35,7 @@ SparseSkin exportSkin(const BodyModel& model, const ShapedBody& body,
   } else {
     SkinFitOptions fit;
     fit.max_influences = m;
+    fit.threads = options.threads > 0 ? options.threads : int(hardwareThreads());
     skin = fitSkinWeights(model, body, fit);
   }
   // "all": as many influences as the model's vertices use, not K slots each.

@@ -10,6 +10,7 @@
 #include "core/math/forward.h"
 #include "core/math/skin_weights.h"
 #include "core/models/uv_source.h"
+#include "core/parallel.h"
 #include "exporter/corrective_basis.h"
 #include "exporter/export_skin.h"
 #include "exporter/skin_cache.h"
@@ -247,9 +248,11 @@ FittedSkin fitSkin(const BodyModel& model, const ShapedBody& body, const ExportO
                    const UvLayout* uv) {
   FittedSkin f;
   f.skin = exportSkin(model, body, o);
-  if (refitsCorrectives(o))
-    f.refit = std::make_shared<const CorrectiveRefit>(
-        refitCorrectives(model, body, f.skin, CorrectiveRefitOptions()));
+  if (refitsCorrectives(o)) {
+    CorrectiveRefitOptions refit;
+    refit.threads = o.threads > 0 ? o.threads : int(hardwareThreads());
+    f.refit = std::make_shared<const CorrectiveRefit>(refitCorrectives(model, body, f.skin, refit));
+  }
   if (o.corrective_basis == 0) {
     Asset part;
     buildMesh(model, body.v_shaped, f.skin, uv, &part.mesh);

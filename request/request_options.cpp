@@ -7,6 +7,9 @@ namespace smpl {
 ExportOptions exportOptionsOf(const ExportRequest& r, const std::vector<double>& betas) {
   ExportOptions o = r.asset;
   o.betas = betas;
+  // --threads: the fit and refit too, unless the request set their count (a
+  // batch job writes on one thread but fits on all)
+  if (o.threads == 0) o.threads = r.writer.threads.value_or(0);
   const WriterFormat* format = writerFormatForPath(r.out);
   o.mesh = !format || format->needs_mesh;  // a skeleton-only writer: no skin, no morph targets
   return o;

@@ -8,6 +8,7 @@
 #include <map>
 #include <thread>
 
+#include "core/math/fixed_order_gemm.h"
 #include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skinning_transforms.h"
@@ -81,8 +82,9 @@ BlockPoses blockPoses(const BodyModel& model, const ShapedBody& body, const Spar
       if (skin.weights(i, s) > 0) pruned(b, skin.joints(i, s)) += skin.weights(i, s);
     diff.row(b) = model.weights.row(i) - pruned.row(b);
   }
-  const Eigen::MatrixXd x = dirs * set.features;  // 3B x T: the posed rest vertices, less v_shaped
-  const Eigen::MatrixXd delta = diff * set.transforms;
+  // 3B x T: the posed rest vertices, less v_shaped
+  const Eigen::MatrixXd x = fixedOrderProduct(dirs, set.features);
+  const Eigen::MatrixXd delta = fixedOrderProduct(diff, set.transforms);
   BlockPoses out;
   out.error.resize(3 * b_count, t_count);
   out.blend.assign(size_t(b_count * t_count), Eigen::Matrix3d::Zero());
@@ -127,13 +129,14 @@ struct Context {
 
 // Vertices with one feature set S, fitted together: D_i (3 x |S|) of each,
 // or an empty matrix where the guard keeps the model's deltas.
-// What every vertex with the feature set S shares: the ridge-regularised
-// Gram matrix (F_S F_S' + lambda I), factored once, and F_S of both pose sets.
+// What every vertex with the feature set S shares: the ridge regression's
+// map from a vertex's training targets to its D, W = F_S' (F_S F_S' +
+// lambda I)^{-1} (T x |S|; so D_i = Z_i W for Z_i, 3 x T: one product per
+// block instead of a product and a solve), and F_S of the validation poses.
 struct FeatureSet {
   std::vector<Eigen::Index> features;  // S
-  Eigen::LDLT<Eigen::MatrixXd> gram;
-  Eigen::MatrixXd train;     // |S| x T
-  Eigen::MatrixXd validate;  // |S| x Tv
+  Eigen::MatrixXd solve;               // T x |S|: W
+  Eigen::MatrixXd validate;            // |S| x Tv
 };
 
 FeatureSet featureSet(const Context& c, std::vector<Eigen::Index> s) {
@@ -144,8 +147,8 @@ FeatureSet featureSet(const Context& c, std::vector<Eigen::Index> s) {
   const double lambda = c.options.ridge * std::max(h.diagonal().mean(), 1e-12);
   h.diagonal().array() += lambda;
   FeatureSet f;
-  f.gram = h.ldlt();
-  f.train = selectRows(c.train.features, s);
+  // W' = (F_S F_S' + lambda I)^{-1} F_S, the Gram matrix symmetric.
+  f.solve = h.ldlt().solve(selectRows(c.train.features, s)).transpose();
   f.validate = selectRows(c.validate.features, s);
   f.features = std::move(s);
   return f;
@@ -181,13 +184,12 @@ void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
   for (Eigen::Index b = 0; b < b_count; ++b)
     for (Eigen::Index p = 0; p < t_count; ++p)
       z.block<3, 1>(3 * b, p) = v.rotation(b, p).inverse() * v.error.block<3, 1>(3 * b, p);
-  const Eigen::MatrixXd d =
-      set.gram.solve(set.train * z.transpose()).transpose();  // 3B x |S|: D_i at rows 3b..3b+2
+  const Eigen::MatrixXd d = fixedOrderProduct(z, set.solve);  // 3B x |S|: D_i at rows 3b..3b+2
   Eigen::MatrixXd correction;
   BlockPoses check;
   if (c.options.guard) {
     check = blockPoses(c.model, c.body, c.skin, c.validate, block.vertices);
-    correction = d * set.validate;  // 3B x Tv: D_i f_S(p)
+    correction = fixedOrderProduct(d, set.validate);  // 3B x Tv: D_i f_S(p)
   }
   for (Eigen::Index b = 0; b < b_count; ++b)
     if (!c.options.guard || passesGuard(check, correction, b))
@@ -264,7 +266,7 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
   Context c{model, body, skin, o, {}, {}, {}};
   c.train = poseSet(model, body, sampleMotionPoses(model.joint_names, o.training_poses, o.seed));
   c.validate = poseSet(model, body, check);
-  c.gram = c.train.features * c.train.features.transpose();
+  c.gram = fixedOrderProduct(c.train.features, c.train.features.transpose());
   std::vector<std::vector<Eigen::Index>> features(cut.size());
   std::vector<FeatureSet> sets;
   const std::vector<Block> work = blocksOf(c, cut, &features, &sets);
@@ -296,20 +298,33 @@ void addRefitCorrection(const BodyModel& model, const ShapedBody& body, const Sp
                         const CorrectiveRefit& refit, const std::vector<Rotations>& frames,
                         Eigen::MatrixXd* posed) {
   if (refit.empty()) return;
-  for (size_t t = 0; t < frames.size(); ++t) {
-    const std::vector<Affine> a = skinningTransforms(model, body.joints, frames[t]);
-    const Eigen::VectorXd f = poseFeatures(frames[t]);
-    for (size_t i = 0; i < refit.block.size(); ++i) {
-      const int b = refit.block[i];
-      if (b < 0) continue;
-      const Eigen::Index v = Eigen::Index(i);
-      Eigen::Matrix3d r = Eigen::Matrix3d::Zero();
-      for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
-        if (skin.weights(v, s) > 0)
-          r += skin.weights(v, s) * a[size_t(skin.joints(v, s))].leftCols<3>();
-      const Eigen::Vector3d change =
-          (refit.rows.middleRows<3>(3 * b) - model.posedirs.middleRows<3>(3 * v)) * f;
-      posed->block<3, 1>(3 * v, Eigen::Index(t)) += r * change;
+  std::vector<Eigen::Index> vertices;  // refitted vertex of each block, in block order
+  vertices.resize(size_t(refit.rows.rows() / 3));
+  for (size_t i = 0; i < refit.block.size(); ++i)
+    if (refit.block[i] >= 0) vertices[size_t(refit.block[i])] = Eigen::Index(i);
+  Eigen::MatrixXd change = refit.rows;  // 3R x P: Q_i - P_i
+  for (size_t b = 0; b < vertices.size(); ++b)
+    change.middleRows<3>(3 * Eigen::Index(b)) -= model.posedirs.middleRows<3>(3 * vertices[b]);
+  constexpr size_t kFrames = 64;  // frames per product: 3R x 64 doubles at most
+  for (size_t first = 0; first < frames.size(); first += kFrames) {
+    const size_t count = std::min(kFrames, frames.size() - first);
+    Eigen::MatrixXd features(model.numPoseFeatures(), Eigen::Index(count));
+    std::vector<std::vector<Affine>> transforms(count);
+    for (size_t t = 0; t < count; ++t) {
+      features.col(Eigen::Index(t)) = poseFeatures(frames[first + t]);
+      transforms[t] = skinningTransforms(model, body.joints, frames[first + t]);
+    }
+    const Eigen::MatrixXd moved = fixedOrderProduct(change, features);  // 3R x count
+    for (size_t b = 0; b < vertices.size(); ++b) {
+      const Eigen::Index v = vertices[b];
+      for (size_t t = 0; t < count; ++t) {
+        Eigen::Matrix3d r = Eigen::Matrix3d::Zero();  // the pruned skin's blended rotation
+        for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
+          if (skin.weights(v, s) > 0)
+            r += skin.weights(v, s) * transforms[t][size_t(skin.joints(v, s))].leftCols<3>();
+        posed->block<3, 1>(3 * v, Eigen::Index(first + t)) +=
+            r * moved.block<3, 1>(3 * Eigen::Index(b), Eigen::Index(t));
+      }
     }
   }
 }

@@ -1,5 +1,6 @@
 #include "core/math/skin_weight_fit.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/math/fixed_order_gemm.h"
 #include "core/math/motion_poses.h"
 #include "core/math/pose_sampler.h"
 #include "core/math/skinning_transforms.h"
@@ -36,7 +38,8 @@ TrainingSet trainingSet(const BodyModel& model, const ShapedBody& body, const Sk
     features.col(static_cast<Eigen::Index>(p)) = poseFeatures(r);
     ts.transforms.push_back(skinningTransforms(model, body.joints, r));
   }
-  ts.v_posed = model.posedirs * features;  // one (3N x P)(P x T) product
+  // One (3N x P)(P x T) product, summed in a fixed order: the same bits on every CPU.
+  fixedOrderProduct(model.posedirs, features, &ts.v_posed);
   for (Eigen::Index i = 0; i < body.v_shaped.rows(); ++i)
     for (int c = 0; c < 3; ++c) ts.v_posed.row(3 * i + c).array() += body.v_shaped(i, c);
   return ts;
@@ -98,6 +101,73 @@ Eigen::VectorXd poseErrors(const Eigen::MatrixXd& d, const std::vector<int>& sub
   return e;
 }
 
+// Minimiser of 1/2 u'Hu - c'u with u_j = 0 for the active j and sum u = 1:
+// the KKT system [H_FF -1; 1' 0][u_F; mu] = [c_F; 1], solved by its Schur
+// complement: u_F = y + mu z with y = H_FF^{-1} c_F, z = H_FF^{-1} 1 and
+// mu = (1 - 1'y) / 1'z, on one Cholesky factor of H_FF (positive definite:
+// solveSimplexQp's precondition; a fourth of the cost of a pivoted LU of the
+// bordered system). Returns u and mu. Matrix/Vector: SmallMatrix/SmallVector
+// (at most kStackRows joints) or the dynamic types.
+template <class Matrix, class Vector>
+Vector equalityStep(const Matrix& h, const Vector& c, const std::vector<bool>& active, double* mu) {
+  std::vector<int> free_idx;
+  free_idx.reserve(active.size());
+  for (int j = 0; j < int(active.size()); ++j)
+    if (!active[size_t(j)]) free_idx.push_back(j);
+  const int f = int(free_idx.size());
+  Matrix hff(f, f);
+  Matrix rhs(f, 2);
+  for (int a = 0; a < f; ++a) {
+    for (int b = 0; b < f; ++b) hff(a, b) = h(free_idx[size_t(a)], free_idx[size_t(b)]);
+    rhs(a, 0) = c(free_idx[size_t(a)]);
+    rhs(a, 1) = 1.0;
+  }
+  const Eigen::LLT<Matrix> llt(hff);
+  // Not positive definite (outside the precondition): the pivoted LU still solves it.
+  const Matrix yz =
+      llt.info() == Eigen::Success ? Matrix(llt.solve(rhs)) : Matrix(hff.fullPivLu().solve(rhs));
+  *mu = (1.0 - yz.col(0).sum()) / yz.col(1).sum();
+  Vector u = Vector::Zero(h.rows());
+  for (int a = 0; a < f; ++a) u(free_idx[size_t(a)]) = yz(a, 0) + *mu * yz(a, 1);
+  return u;
+}
+
+// solveSimplexQp (skin_weight_fit.h) on Matrix/Vector (equalityStep).
+template <class Matrix, class Vector>
+Vector simplexQp(const Matrix& h, const Vector& c, const Vector& u0) {
+  const int m = int(h.rows());
+  Vector u = u0;
+  std::vector<bool> active(static_cast<size_t>(m), false);
+  for (int j = 0; j < m; ++j) active[size_t(j)] = u(j) <= 0.0;
+  const double tol = 1e-12 * std::max(1e-300, h.diagonal().cwiseAbs().maxCoeff());
+  for (int iter = 0; iter < 10 * m + 10; ++iter) {
+    double mu = 0.0;
+    const Vector target = equalityStep<Matrix, Vector>(h, c, active, &mu);
+    double alpha = 1.0;
+    int blocking = -1;
+    for (int j = 0; j < m; ++j)  // longest feasible step towards target
+      if (!active[size_t(j)] && target(j) < 0.0) {
+        const double ratio = u(j) / (u(j) - target(j));
+        if (ratio < alpha) alpha = ratio, blocking = j;
+      }
+    u += alpha * (target - u);
+    if (blocking >= 0) {
+      active[size_t(blocking)] = true;
+      u(blocking) = 0.0;
+      continue;
+    }
+    const Vector g = h * u - c;  // multiplier of u_j >= 0 is g_j - mu
+    int release = -1;
+    double worst = -tol;
+    for (int j = 0; j < m; ++j)
+      if (active[size_t(j)] && g(j) - mu < worst) worst = g(j) - mu, release = j;
+    if (release < 0) break;  // KKT conditions hold: optimal
+    active[size_t(release)] = false;
+  }
+  u = u.cwiseMax(0.0);
+  return u / u.sum();
+}
+
 // One vertex's fitting problem: candidate residuals, their Gram matrix and
 // the model's weights of the candidates.
 struct VertexFit {
@@ -107,19 +177,20 @@ struct VertexFit {
   double lambda = 0.1;    // SkinFitOptions::prior_strength
 };
 
-// Fitted weights on the candidate subset `subset` (indices into the
-// candidates) from the Gram matrix `gram`, and their training error u'Du.
-// Prior (the ridge's anchor and the solver's feasible start): the model's
-// weights of the subset, renormalised.
-double fitSubset(const VertexFit& v, const Eigen::MatrixXd& gram, const std::vector<int>& subset,
-                 Eigen::VectorXd* u) {
+// Matrices of at most kStackRows rows and columns live on the stack: the
+// fit solves hundreds of thousands of tiny systems per body, and heap
+// allocation was a sixth of its time. Larger ones (M > 16) use the heap.
+constexpr int kStackRows = 16;
+using SmallMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kStackRows, kStackRows>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kStackRows, 1>;
+
+template <class Matrix, class Vector>
+double fitSubsetOn(const VertexFit& v, const Eigen::MatrixXd& gram, const std::vector<int>& subset,
+                   Eigen::VectorXd* u) {
   const int m = int(subset.size());
-  if (m == 1) {  // the simplex is one point
-    *u = Eigen::VectorXd::Ones(1);
-    return gram(subset[0], subset[0]);
-  }
-  Eigen::MatrixXd d(m, m);
-  Eigen::VectorXd prior(m);
+  Matrix d(m, m);
+  Vector prior(m);
   for (int a = 0; a < m; ++a) {
     prior(a) = v.model(subset[size_t(a)]);
     for (int b = 0; b < m; ++b) d(a, b) = gram(subset[size_t(a)], subset[size_t(b)]);
@@ -127,9 +198,28 @@ double fitSubset(const VertexFit& v, const Eigen::MatrixXd& gram, const std::vec
   prior /= prior.sum();
   // 1e-6: keeps the system regular when two joints move a vertex alike.
   const double ridge = (v.lambda + 1e-6) * d.trace() / m + 1e-300;
-  const Eigen::MatrixXd h = 2.0 * (d + ridge * Eigen::MatrixXd::Identity(m, m));
-  *u = solveSimplexQp(h, 2.0 * ridge * prior, prior);
-  return u->dot(d * *u);
+  Matrix h = d;
+  h.diagonal().array() += ridge;
+  h *= 2.0;
+  const Vector c = 2.0 * ridge * prior;
+  const Vector w = simplexQp<Matrix, Vector>(h, c, prior);
+  *u = w;
+  return w.dot(d * w);
+}
+
+// Fitted weights on the candidate subset `subset` (indices into the
+// candidates) from the Gram matrix `gram`, and their training error u'Du.
+// Prior (the ridge's anchor and the solver's feasible start): the model's
+// weights of the subset, renormalised.
+double fitSubset(const VertexFit& v, const Eigen::MatrixXd& gram, const std::vector<int>& subset,
+                 Eigen::VectorXd* u) {
+  if (subset.size() == 1) {  // the simplex is one point
+    *u = Eigen::VectorXd::Ones(1);
+    return gram(subset[0], subset[0]);
+  }
+  return int(subset.size()) <= kStackRows
+             ? fitSubsetOn<SmallMatrix, SmallVector>(v, gram, subset, u)
+             : fitSubsetOn<Eigen::MatrixXd, Eigen::VectorXd>(v, gram, subset, u);
 }
 
 // Number of m-subsets of c things (as a double: no overflow).
@@ -233,65 +323,11 @@ void fitVertex(const BodyModel& model, const TrainingSet& ts, const SkinFitOptio
   storeRow(i, joints, u, skin);
 }
 
-// Minimiser of 1/2 u'Hu - c'u with u_j = 0 for the active j and sum u = 1:
-// the KKT system [H_FF -1; 1' 0][u_F; mu] = [c_F; 1]. Returns u and mu.
-Eigen::VectorXd equalityStep(const Eigen::MatrixXd& h, const Eigen::VectorXd& c,
-                             const std::vector<bool>& active, double* mu) {
-  std::vector<int> free_idx;
-  for (int j = 0; j < int(active.size()); ++j)
-    if (!active[size_t(j)]) free_idx.push_back(j);
-  const int f = int(free_idx.size());
-  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(f + 1, f + 1);
-  Eigen::VectorXd rhs(f + 1);
-  for (int a = 0; a < f; ++a) {
-    for (int b = 0; b < f; ++b) kkt(a, b) = h(free_idx[size_t(a)], free_idx[size_t(b)]);
-    kkt(a, f) = -1.0;
-    kkt(f, a) = 1.0;
-    rhs(a) = c(free_idx[size_t(a)]);
-  }
-  rhs(f) = 1.0;
-  const Eigen::VectorXd sol = kkt.fullPivLu().solve(rhs);
-  Eigen::VectorXd u = Eigen::VectorXd::Zero(h.rows());
-  for (int a = 0; a < f; ++a) u(free_idx[size_t(a)]) = sol(a);
-  *mu = sol(f);
-  return u;
-}
-
 }  // namespace
 
 Eigen::VectorXd solveSimplexQp(const Eigen::MatrixXd& h, const Eigen::VectorXd& c,
                                const Eigen::VectorXd& u0) {
-  const int m = int(h.rows());
-  Eigen::VectorXd u = u0;
-  std::vector<bool> active(static_cast<size_t>(m), false);
-  for (int j = 0; j < m; ++j) active[size_t(j)] = u(j) <= 0.0;
-  const double tol = 1e-12 * std::max(1e-300, h.diagonal().cwiseAbs().maxCoeff());
-  for (int iter = 0; iter < 10 * m + 10; ++iter) {
-    double mu = 0.0;
-    const Eigen::VectorXd target = equalityStep(h, c, active, &mu);
-    double alpha = 1.0;
-    int blocking = -1;
-    for (int j = 0; j < m; ++j)  // longest feasible step towards target
-      if (!active[size_t(j)] && target(j) < 0.0) {
-        const double ratio = u(j) / (u(j) - target(j));
-        if (ratio < alpha) alpha = ratio, blocking = j;
-      }
-    u += alpha * (target - u);
-    if (blocking >= 0) {
-      active[size_t(blocking)] = true;
-      u(blocking) = 0.0;
-      continue;
-    }
-    const Eigen::VectorXd g = h * u - c;  // multiplier of u_j >= 0 is g_j - mu
-    int release = -1;
-    double worst = -tol;
-    for (int j = 0; j < m; ++j)
-      if (active[size_t(j)] && g(j) - mu < worst) worst = g(j) - mu, release = j;
-    if (release < 0) break;  // KKT conditions hold: optimal
-    active[size_t(release)] = false;
-  }
-  u = u.cwiseMax(0.0);
-  return u / u.sum();
+  return simplexQp<Eigen::MatrixXd, Eigen::VectorXd>(h, c, u0);
 }
 
 SparseSkin fitSkinWeights(const BodyModel& model, const ShapedBody& body, const SkinFitOptions& o) {

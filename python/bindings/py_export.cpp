@@ -3,6 +3,8 @@
 
 #include <pybind11/stl.h>
 
+#include "core/math/float_environment.h"
+#include "core/math/simd_target.h"
 #include "python/bindings/py_errors.h"
 #include "python/bindings/py_model.h"
 #include "python/bindings/py_motion.h"
@@ -28,6 +30,9 @@ pyb::tuple exportRequest(const std::vector<std::string>& args, const PyModel& mo
                          const std::optional<PyMotion>& motion, bool memory) {
   Settings s = settingsOf(args);
   ExportRequest& r = s.request;
+  // The environment's SMPL_EXPORT_SIMD, read per export as the CLI reads it per run.
+  if (Status st = useSimdTargetFromEnvironment(); !st)
+    throw usageFailure("Error in environment: " + st.message());
   if (r.track.kind == TrackChoice::Kind::All)
     throw usageFailure(
         "Error in arguments: track='all' writes one file per track: read each "
@@ -38,6 +43,7 @@ pyb::tuple exportRequest(const std::vector<std::string>& args, const PyModel& mo
   if (memory) {
     Result<ExportedBytes> out = [&] {
       pyb::gil_scoped_release release;
+      DefaultFloatEnvironment rounding;  // the CLI's rounding, whatever the host process set
       return exportToMemory(r, std::move(motions), model.source.get());
     }();
     if (!out) throw failureOf(out.error());
@@ -45,6 +51,7 @@ pyb::tuple exportRequest(const std::vector<std::string>& args, const PyModel& mo
   }
   Result<ExportReport> report = [&] {
     pyb::gil_scoped_release release;
+    DefaultFloatEnvironment rounding;
     return exportDecoded(r, std::move(motions), model.source.get());
   }();
   if (!report) throw failureOf(report.error());

@@ -223,7 +223,7 @@ endforeach()
 # The same bytes for any --threads count (GLB, FBX, BVH; with a motion; --preset web).
 add_test(NAME cli.threads_determinism
   COMMAND ${CMAKE_CURRENT_LIST_DIR}/threads_determinism_test.sh $<TARGET_FILE:smpl-export> ${SMPL_FIXTURE_DIR}
-          ${CMAKE_CURRENT_BINARY_DIR}/threads_determinism)
+          ${CMAKE_CURRENT_BINARY_DIR}/threads_determinism ${PROJECT_SOURCE_DIR})
 set_tests_properties(cli.threads_determinism PROPERTIES LABELS cli)
 
 # docs/batch.md's Slurm job array on a one-node Slurm (munge, slurmctld, slurmd on

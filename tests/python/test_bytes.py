@@ -84,3 +84,26 @@ def test_nested_dict_exports_as_its_torch_file(se, tmp_path):
     motion = se.read_motion(result, model=model, name="hmr4d_results")
     assert motion.layout == "gvhmr"
     assert se.export(model, motion=motion) == expected
+
+
+def test_host_rounding_mode_does_not_change_bytes(se, tmp_path):
+    """A host that changed its thread's floating-point environment (here: rounding toward
+    minus infinity and, on x86-64, flush-to-zero, as libraries built with -ffast-math do)
+    still gets the CLI's bytes: the module exports in the default environment."""
+    import ctypes
+    import platform
+    libm = ctypes.CDLL("libm.so.6")
+    fe_downward, fe_tonearest = 0x400, 0  # glibc x86-64 <fenv.h>
+    assert platform.machine() == "x86_64", "the constants above are x86-64's"
+    model = se.load_model(SMPLX)
+    expected = cli_bytes(tmp_path, SMPLX, "glb", "--motion", AMASS)
+    assert libm.fesetround(fe_downward) == 0
+    torch.set_flush_denormal(True)
+    try:
+        assert libm.fegetround() == fe_downward
+        got = se.export(model, motion=str(AMASS))
+        assert libm.fegetround() == fe_downward  # the host's mode is back afterwards
+    finally:
+        torch.set_flush_denormal(False)
+        libm.fesetround(fe_tonearest)
+    assert got == expected

@@ -1,0 +1,58 @@
+// fixedOrderProduct (fixed_order_gemm.h): the scalar kernel (every build,
+// the only one in WebAssembly) and the dispatch to the active target's.
+#include "core/math/fixed_order_gemm.h"
+
+#include <cstddef>
+
+#include "core/math/fixed_order_gemm_targets.h"
+#include "core/math/simd_target.h"
+
+namespace smpl {
+namespace fixed_order {
+namespace scalar {
+#include "core/math/fixed_order_gemm_kernel.inc"
+}  // namespace scalar
+
+void gemmScalar(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
+                std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
+                std::ptrdiff_t ldc) {
+  scalar::gemm<scalar::Lanes1>(m, n, k, a, lda, b, ldb, c, ldc);
+}
+
+namespace {
+
+GemmFn kernelOf(SimdTarget target) {
+  switch (target) {
+#if SMPL_FIXED_ORDER_X86
+    case SimdTarget::Sse4:
+      return &gemmSse4;
+    case SimdTarget::Avx2:
+      return &gemmAvx2;
+    case SimdTarget::Avx512:
+      return &gemmAvx512;
+#endif
+    default:
+      return &gemmScalar;
+  }
+}
+
+}  // namespace
+}  // namespace fixed_order
+
+void fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                       const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd* c) {
+  eigen_assert(a.cols() == b.rows());
+  c->resize(a.rows(), b.cols());
+  if (c->size() == 0) return;
+  fixed_order::kernelOf(activeSimdTarget())(a.rows(), b.cols(), a.cols(), a.data(), a.outerStride(),
+                                            b.data(), b.outerStride(), c->data(), c->rows());
+}
+
+Eigen::MatrixXd fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& b) {
+  Eigen::MatrixXd c;
+  fixedOrderProduct(a, b, &c);
+  return c;
+}
+
+}  // namespace smpl
