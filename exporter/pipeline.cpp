@@ -66,13 +66,10 @@ MorphTarget correctiveTarget(std::string name, const BodyModel& model, const Cor
                              int n, const std::vector<int>& source_vertex, double scale) {
   if (refit.empty())
     return directionTarget(std::move(name), model.posedirs, n, source_vertex, scale);
-  MorphTarget t;
-  t.name = std::move(name);
-  t.deltas.resize(static_cast<Eigen::Index>(source_vertex.size()), 3);
-  for (size_t i = 0; i < source_vertex.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      t.deltas(i, c) = static_cast<float>(refit.delta(model, 3 * source_vertex[i] + c, n) / scale);
-  return t;
+  // The whole column first (the model's, with the refitted rows patched in):
+  // one pass instead of a lookup per value.
+  const Eigen::MatrixXd column = refit.column(model, n);
+  return directionTarget(std::move(name), column, 0, source_vertex, scale);
 }
 
 // Unit encoding of feature n: weight = 0.5 f + offset keeps weights in [0, 1].

@@ -44,29 +44,44 @@ Result<std::vector<SkinError>> measureSkinErrors(const BodyModel& model,
   const ForwardInput shape = shapeInput(options);
   Result<ShapedBody> body = shapeBody(model, shape.betas, shape.expression);
   if (!body) return body.error();
-  std::vector<const Eigen::MatrixXd*> skins = {nullptr};  // the model's own weights first
-  for (const SkinCase& c : cases) {
-    if (c.weights.rows() != model.numVertices() || c.weights.cols() != model.numJoints())
+  // The model's own weights first; a case with the weights of an earlier one
+  // (the refit's, which shares its skin) reuses that forward pass.
+  std::vector<const Eigen::MatrixXd*> skins = {nullptr};
+  std::vector<size_t> pass(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const Eigen::MatrixXd& w = cases[i].weights;
+    if (w.rows() != model.numVertices() || w.cols() != model.numJoints())
       return makeError("skin weights override has the wrong shape");
-    skins.push_back(&c.weights);
+    size_t j = 0;
+    while (j < i && cases[j].weights != w) ++j;
+    if (j < i) {
+      pass[i] = pass[j];
+    } else {
+      pass[i] = skins.size();
+      skins.push_back(&w);
+    }
   }
   BatchInput in;
   in.body = &*body;
   in.frames = &frames;
   in.block = 16;  // two blocks for the default 32 poses: both cores
   in.threads = static_cast<int>(hardwareThreads());
-  std::vector<Eigen::MatrixXd> posed = forwardBatchSkins(model, in, skins);
+  const std::vector<Eigen::MatrixXd> posed = forwardBatchSkins(model, in, skins);
   std::vector<SkinError> errs(cases.size());
   const Eigen::Index n = model.numVertices();
   const double count = static_cast<double>(frames.size()) * double(n);
   for (size_t i = 0; i < cases.size(); ++i) {
-    if (cases[i].refit && cases[i].skin)
-      addRefitCorrection(model, *body, *cases[i].skin, *cases[i].refit, frames, &posed[i + 1]);
+    Eigen::MatrixXd corrected;
+    const bool refit = cases[i].refit && cases[i].skin;
+    if (refit) {
+      corrected = posed[pass[i]];
+      addRefitCorrection(model, *body, *cases[i].skin, *cases[i].refit, frames, &corrected);
+    }
+    const Eigen::MatrixXd& mine = refit ? corrected : posed[pass[i]];
     double sum = 0.0;
     for (Eigen::Index t = 0; t < posed[0].cols(); ++t)
       for (Eigen::Index v = 0; v < n; ++v) {
-        const double d =
-            (posed[0].col(t).segment<3>(3 * v) - posed[i + 1].col(t).segment<3>(3 * v)).norm();
+        const double d = (posed[0].col(t).segment<3>(3 * v) - mine.col(t).segment<3>(3 * v)).norm();
         sum += d;
         errs[i].max_m = std::max(errs[i].max_m, d);
       }

@@ -19,10 +19,14 @@ namespace {
 
 constexpr Eigen::Index kBlock = 32;  // vertices per block: their products are GEMMs
 
-// Poses with what every vertex needs of them.
+// Poses with what every vertex needs of them. The products that find each
+// vertex's pruning errors run in float (fixed order, twice the lanes): their
+// rounding, about 1e-7 of a metre, is far below the millimetre errors the
+// refit corrects, and the ridge regression's own matrices stay double.
 struct PoseSet {
-  Eigen::MatrixXd features;    // P x T
-  Eigen::MatrixXd transforms;  // K x 12T: A_k(p) row by row at columns 12p + 4r + c
+  Eigen::MatrixXd features;      // P x T
+  Eigen::MatrixXf features32;    // features in float
+  Eigen::MatrixXf transforms32;  // K x 12T: A_k(p) row by row at columns 12p + 4r + c
 };
 
 PoseSet poseSet(const BodyModel& model, const ShapedBody& body,
@@ -30,14 +34,16 @@ PoseSet poseSet(const BodyModel& model, const ShapedBody& body,
   PoseSet s;
   const Eigen::Index t_count = Eigen::Index(poses.size());
   s.features.resize(model.numPoseFeatures(), t_count);
-  s.transforms.resize(model.numJoints(), 12 * t_count);
+  s.transforms32.resize(model.numJoints(), 12 * t_count);
   for (Eigen::Index p = 0; p < t_count; ++p) {
     const Rotations r = rotationsFromAxisAngle(poses[size_t(p)]);
     s.features.col(p) = poseFeatures(r);
     const std::vector<Affine> a = skinningTransforms(model, body.joints, r);
     for (int k = 0; k < model.numJoints(); ++k)
-      for (int e = 0; e < 12; ++e) s.transforms(k, 12 * p + e) = a[size_t(k)](e / 4, e % 4);
+      for (int e = 0; e < 12; ++e)
+        s.transforms32(k, 12 * p + e) = float(a[size_t(k)](e / 4, e % 4));
   }
+  s.features32 = s.features.cast<float>();
   return s;
 }
 
@@ -60,52 +66,50 @@ std::vector<Eigen::Index> featuresOf(const BodyModel& model, Eigen::Index i, boo
 // A block of B vertices over one pose set: the pruning errors e_p (3B x T,
 // vertex b at rows 3b..3b+2) and the rotation part R_p of the pruned skin's
 // blend. e_p = (sum_k (w_k - u_k) A_k(p)) [x_p; 1]: the unpruned minus the
-// pruned blend, as one product of the weight differences.
+// pruned blend. Both blends are one product: the weight differences (rows
+// 0..B-1) and the pruned weights (rows B..2B-1) times every A_k(p).
 struct BlockPoses {
-  Eigen::MatrixXd error;
-  std::vector<Eigen::Matrix3d> blend;  // B x T, vertex b's pose p at b * T + p
-  const Eigen::Matrix3d& rotation(Eigen::Index b, Eigen::Index p) const {
-    return blend[size_t(b * error.cols() + p)];
+  Eigen::MatrixXd error;  // 3B x T
+  Eigen::MatrixXf blend;  // 2B x 12T: row b's A(p) row by row at columns 12p + 4r + c
+  Eigen::Matrix3d rotation(Eigen::Index b, Eigen::Index p) const {
+    const Eigen::Index row = blend.rows() / 2 + b, ld = blend.rows();
+    const float* a = &blend(row, 12 * p);
+    Eigen::Matrix3d r;
+    for (int e = 0; e < 12; ++e)
+      if (e % 4 != 3) r(e / 4, e % 4) = double(a[e * ld]);
+    return r;
   }
 };
 
 BlockPoses blockPoses(const BodyModel& model, const ShapedBody& body, const SparseSkin& skin,
                       const PoseSet& set, const std::vector<Eigen::Index>& ids) {
   const Eigen::Index b_count = Eigen::Index(ids.size()), t_count = set.features.cols();
-  Eigen::MatrixXd dirs(3 * b_count, model.numPoseFeatures());
+  Eigen::MatrixXf dirs(3 * b_count, model.numPoseFeatures());
   Eigen::MatrixXd pruned = Eigen::MatrixXd::Zero(b_count, model.numJoints());
-  Eigen::MatrixXd diff(b_count, model.numJoints());
+  Eigen::MatrixXf weights(2 * b_count, model.numJoints());
   for (Eigen::Index b = 0; b < b_count; ++b) {
     const Eigen::Index i = ids[size_t(b)];
-    dirs.middleRows<3>(3 * b) = model.posedirs.middleRows<3>(3 * i);
+    dirs.middleRows<3>(3 * b) = model.posedirs.middleRows<3>(3 * i).cast<float>();
     for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
       if (skin.weights(i, s) > 0) pruned(b, skin.joints(i, s)) += skin.weights(i, s);
-    diff.row(b) = model.weights.row(i) - pruned.row(b);
+    weights.row(b) = (model.weights.row(i) - pruned.row(b)).cast<float>();
+    weights.row(b_count + b) = pruned.row(b).cast<float>();
   }
   // 3B x T: the posed rest vertices, less v_shaped
-  const Eigen::MatrixXd x = fixedOrderProduct(dirs, set.features);
-  const Eigen::MatrixXd delta = fixedOrderProduct(diff, set.transforms);
+  const Eigen::MatrixXf x = fixedOrderProduct(dirs, set.features32);
   BlockPoses out;
+  fixedOrderProduct(weights, set.transforms32, &out.blend);
   out.error.resize(3 * b_count, t_count);
-  out.blend.assign(size_t(b_count * t_count), Eigen::Matrix3d::Zero());
-  const Eigen::Index lt = set.transforms.rows();
-  for (Eigen::Index b = 0; b < b_count; ++b) {
-    const Eigen::Index i = ids[size_t(b)];
-    const Eigen::Vector3d rest = body.v_shaped.row(i).transpose();
-    for (Eigen::Index p = 0; p < t_count; ++p) {
-      Eigen::Matrix3d& rot = out.blend[size_t(b * t_count + p)];  // the skin's M joints only
-      for (Eigen::Index s = 0; s < skin.joints.cols(); ++s) {
-        const double u = skin.weights(i, s);
-        if (u <= 0) continue;
-        const double* a = &set.transforms(skin.joints(i, s), 12 * p);
-        for (int e = 0; e < 12; ++e)
-          if (e % 4 != 3) rot(e / 4, e % 4) += u * a[e * lt];
-      }
-      const Eigen::Vector3d xp = rest + x.block<3, 1>(3 * b, p);
+  const Eigen::Index ld = out.blend.rows();
+  // Pose by pose: a pose's 12 columns of the blends are contiguous for every vertex.
+  for (Eigen::Index p = 0; p < t_count; ++p) {
+    for (Eigen::Index b = 0; b < b_count; ++b) {
+      const Eigen::Vector3d rest = body.v_shaped.row(ids[size_t(b)]).transpose();
+      const Eigen::Vector3d xp = rest + x.block<3, 1>(3 * b, p).cast<double>();
       for (int r = 0; r < 3; ++r) {
-        const double* d = &delta(b, 12 * p + 4 * r);  // not contiguous: the matrix is column-major
-        const Eigen::Index ld = delta.rows();
-        out.error(3 * b + r, p) = d[0] * xp(0) + d[ld] * xp(1) + d[2 * ld] * xp(2) + d[3 * ld];
+        const float* d = &out.blend(b, 12 * p + 4 * r);  // not contiguous: column-major
+        out.error(3 * b + r, p) = double(d[0]) * xp(0) + double(d[ld]) * xp(1) +
+                                  double(d[2 * ld]) * xp(2) + double(d[3 * ld]);
       }
     }
   }
@@ -135,8 +139,8 @@ struct Context {
 // block instead of a product and a solve), and F_S of the validation poses.
 struct FeatureSet {
   std::vector<Eigen::Index> features;  // S
-  Eigen::MatrixXd solve;               // T x |S|: W
-  Eigen::MatrixXd validate;            // |S| x Tv
+  Eigen::MatrixXf solve;               // T x |S|: W, in float (PoseSet)
+  Eigen::MatrixXf validate;            // |S| x Tv
 };
 
 FeatureSet featureSet(const Context& c, std::vector<Eigen::Index> s) {
@@ -148,8 +152,8 @@ FeatureSet featureSet(const Context& c, std::vector<Eigen::Index> s) {
   h.diagonal().array() += lambda;
   FeatureSet f;
   // W' = (F_S F_S' + lambda I)^{-1} F_S, the Gram matrix symmetric.
-  f.solve = h.ldlt().solve(selectRows(c.train.features, s)).transpose();
-  f.validate = selectRows(c.validate.features, s);
+  f.solve = h.ldlt().solve(selectRows(c.train.features, s)).transpose().cast<float>();
+  f.validate = selectRows(c.validate.features, s).cast<float>();
   f.features = std::move(s);
   return f;
 }
@@ -162,12 +166,13 @@ struct Block {
 
 // Guard: keep the model's deltas (false) if the refit raises the exact error
 // |e_p - R_p D f_S(p)| of vertex b over the validation poses in the mean or at the maximum.
-bool passesGuard(const BlockPoses& v, const Eigen::MatrixXd& correction, Eigen::Index b) {
+bool passesGuard(const BlockPoses& v, const Eigen::MatrixXf& correction, Eigen::Index b) {
   double before_sum = 0, before_max = 0, after_sum = 0, after_max = 0;
   for (Eigen::Index p = 0; p < v.error.cols(); ++p) {
     const Eigen::Vector3d e = v.error.block<3, 1>(3 * b, p);
     const double before = e.norm();
-    const double after = (e - v.rotation(b, p) * correction.block<3, 1>(3 * b, p)).norm();
+    const double after =
+        (e - v.rotation(b, p) * correction.block<3, 1>(3 * b, p).cast<double>()).norm();
     before_sum += before, after_sum += after;
     before_max = std::max(before_max, before), after_max = std::max(after_max, after);
   }
@@ -180,12 +185,13 @@ void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
               std::vector<Eigen::MatrixXd>* deltas) {
   const BlockPoses v = blockPoses(c.model, c.body, c.skin, c.train, block.vertices);
   const Eigen::Index b_count = Eigen::Index(block.vertices.size()), t_count = v.error.cols();
-  Eigen::MatrixXd z(3 * b_count, t_count);  // rest-frame targets R_p^{-1} e_p
-  for (Eigen::Index b = 0; b < b_count; ++b)
-    for (Eigen::Index p = 0; p < t_count; ++p)
-      z.block<3, 1>(3 * b, p) = v.rotation(b, p).inverse() * v.error.block<3, 1>(3 * b, p);
-  const Eigen::MatrixXd d = fixedOrderProduct(z, set.solve);  // 3B x |S|: D_i at rows 3b..3b+2
-  Eigen::MatrixXd correction;
+  Eigen::MatrixXf z(3 * b_count, t_count);  // rest-frame targets R_p^{-1} e_p
+  for (Eigen::Index p = 0; p < t_count; ++p)
+    for (Eigen::Index b = 0; b < b_count; ++b)
+      z.block<3, 1>(3 * b, p) =
+          (v.rotation(b, p).inverse() * v.error.block<3, 1>(3 * b, p)).cast<float>();
+  const Eigen::MatrixXf d = fixedOrderProduct(z, set.solve);  // 3B x |S|: D_i at rows 3b..3b+2
+  Eigen::MatrixXf correction;
   BlockPoses check;
   if (c.options.guard) {
     check = blockPoses(c.model, c.body, c.skin, c.validate, block.vertices);
@@ -193,7 +199,7 @@ void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
   }
   for (Eigen::Index b = 0; b < b_count; ++b)
     if (!c.options.guard || passesGuard(check, correction, b))
-      (*deltas)[block.slots[size_t(b)]] = d.middleRows<3>(3 * b);
+      (*deltas)[block.slots[size_t(b)]] = d.middleRows<3>(3 * b).cast<double>();
 }
 
 // The cut vertices grouped by feature set (each set prepared once, in

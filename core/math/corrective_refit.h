@@ -30,8 +30,9 @@
 // Cost: the vertices with one feature set S share the Gram matrix and its
 // factor; they are fitted in blocks of 32 whose posed vertices, blends and
 // right-hand sides are matrix products (the dense 6890-vertex stand-in:
-// 0.12 s on 2 cores with the fixed-order AVX-512 products and one product
-// per block for the ridge solve, was 0.3 s on Eigen, 2.2 s vertex by vertex).
+// 0.1 s on 2 cores with the fixed-order AVX-512 products in float and one
+// product per block for the ridge solve, was 0.3 s on Eigen's double
+// products, 2.2 s vertex by vertex).
 // Deterministic: the result does not depend on the thread count.
 #pragma once
 

@@ -16,12 +16,19 @@ namespace scalar {
 void gemmScalar(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
                 std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
                 std::ptrdiff_t ldc) {
-  scalar::gemm<scalar::Lanes1>(m, n, k, a, lda, b, ldb, c, ldc);
+  scalar::gemm<scalar::Lanes1<double>>(m, n, k, a, lda, b, ldb, c, ldc);
+}
+
+void gemmScalar(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const float* a,
+                std::ptrdiff_t lda, const float* b, std::ptrdiff_t ldb, float* c,
+                std::ptrdiff_t ldc) {
+  scalar::gemm<scalar::Lanes1<float>>(m, n, k, a, lda, b, ldb, c, ldc);
 }
 
 namespace {
 
-GemmFn kernelOf(SimdTarget target) {
+template <class T>
+GemmFn<T> kernelOf(SimdTarget target) {
   switch (target) {
 #if SMPL_FIXED_ORDER_X86
     case SimdTarget::Sse4:
@@ -39,18 +46,40 @@ GemmFn kernelOf(SimdTarget target) {
 }  // namespace
 }  // namespace fixed_order
 
-void fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
-                       const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd* c) {
+namespace {
+
+template <class Matrix>
+void product(const Eigen::Ref<const Matrix>& a, const Eigen::Ref<const Matrix>& b, Matrix* c) {
   eigen_assert(a.cols() == b.rows());
   c->resize(a.rows(), b.cols());
   if (c->size() == 0) return;
-  fixed_order::kernelOf(activeSimdTarget())(a.rows(), b.cols(), a.cols(), a.data(), a.outerStride(),
-                                            b.data(), b.outerStride(), c->data(), c->rows());
+  fixed_order::kernelOf<typename Matrix::Scalar>(activeSimdTarget())(
+      a.rows(), b.cols(), a.cols(), a.data(), a.outerStride(), b.data(), b.outerStride(), c->data(),
+      c->rows());
+}
+
+}  // namespace
+
+void fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                       const Eigen::Ref<const Eigen::MatrixXd>& b, Eigen::MatrixXd* c) {
+  product<Eigen::MatrixXd>(a, b, c);
 }
 
 Eigen::MatrixXd fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
                                   const Eigen::Ref<const Eigen::MatrixXd>& b) {
   Eigen::MatrixXd c;
+  fixedOrderProduct(a, b, &c);
+  return c;
+}
+
+void fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXf>& a,
+                       const Eigen::Ref<const Eigen::MatrixXf>& b, Eigen::MatrixXf* c) {
+  product<Eigen::MatrixXf>(a, b, c);
+}
+
+Eigen::MatrixXf fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXf>& a,
+                                  const Eigen::Ref<const Eigen::MatrixXf>& b) {
+  Eigen::MatrixXf c;
   fixedOrderProduct(a, b, &c);
   return c;
 }

@@ -29,4 +29,11 @@ void fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
 Eigen::MatrixXd fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXd>& a,
                                   const Eigen::Ref<const Eigen::MatrixXd>& b);
 
+// The same in float (each step rounded to float): twice the lanes of a
+// register, for products whose error budget allows 24-bit sums.
+void fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXf>& a,
+                       const Eigen::Ref<const Eigen::MatrixXf>& b, Eigen::MatrixXf* c);
+Eigen::MatrixXf fixedOrderProduct(const Eigen::Ref<const Eigen::MatrixXf>& a,
+                                  const Eigen::Ref<const Eigen::MatrixXf>& b);
+
 }  // namespace smpl

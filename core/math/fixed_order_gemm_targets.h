@@ -1,6 +1,7 @@
 // The per-target kernels behind fixedOrderProduct (fixed_order_gemm.h):
 // raw column-major pointers, c = a b with a m x k (leading dimension lda),
-// b k x n (ldb), c m x n (ldc). Internal to core/math.
+// b k x n (ldb), c m x n (ldc); each in double and in float. Internal to
+// core/math.
 #pragma once
 
 #include <cstddef>
@@ -16,22 +17,33 @@
 namespace smpl {
 namespace fixed_order {
 
-using GemmFn = void (*)(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
-                        std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
+template <class T>
+using GemmFn = void (*)(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const T* a,
+                        std::ptrdiff_t lda, const T* b, std::ptrdiff_t ldb, T* c,
                         std::ptrdiff_t ldc);
 
 void gemmScalar(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
                 std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
                 std::ptrdiff_t ldc);
+void gemmScalar(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const float* a,
+                std::ptrdiff_t lda, const float* b, std::ptrdiff_t ldb, float* c,
+                std::ptrdiff_t ldc);
 #if SMPL_FIXED_ORDER_X86
 void gemmSse4(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
               std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
               std::ptrdiff_t ldc);
+void gemmSse4(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const float* a,
+              std::ptrdiff_t lda, const float* b, std::ptrdiff_t ldb, float* c, std::ptrdiff_t ldc);
 void gemmAvx2(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
               std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
               std::ptrdiff_t ldc);
+void gemmAvx2(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const float* a,
+              std::ptrdiff_t lda, const float* b, std::ptrdiff_t ldb, float* c, std::ptrdiff_t ldc);
 void gemmAvx512(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const double* a,
                 std::ptrdiff_t lda, const double* b, std::ptrdiff_t ldb, double* c,
+                std::ptrdiff_t ldc);
+void gemmAvx512(std::ptrdiff_t m, std::ptrdiff_t n, std::ptrdiff_t k, const float* a,
+                std::ptrdiff_t lda, const float* b, std::ptrdiff_t ldb, float* c,
                 std::ptrdiff_t ldc);
 #endif
 

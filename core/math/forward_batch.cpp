@@ -97,7 +97,8 @@ void run(const BodyModel& model, const BatchInput& in,
                      in.posedirs->steps == (n + batch::kStepVertices - 1) / batch::kStepVertices &&
                      in.posedirs->data.size() ==
                          static_cast<size_t>(in.posedirs->steps) * batch::kStepRows * depth;
-  const batch::PackedPosedirs own = reuse ? batch::PackedPosedirs() : packPosedirs(model);
+  const batch::PackedPosedirs own =
+      reuse ? batch::PackedPosedirs() : packPosedirs(model, std::max(1, in.threads));
   const batch::PackedPosedirs& posedirs = reuse ? *in.posedirs : own;
   const batch::PackedRest rest = batch::packRest(in.body->v_shaped.data(), n);
   const Kernels kernels = batch::resolveKernels(in.kernels);
@@ -114,9 +115,9 @@ void run(const BodyModel& model, const BatchInput& in,
 
 }  // namespace
 
-batch::PackedPosedirs packPosedirs(const BodyModel& model) {
+batch::PackedPosedirs packPosedirs(const BodyModel& model, int threads) {
   return batch::packPosedirs(model.posedirs.data(), model.numVertices(),
-                             static_cast<int>(model.posedirs.cols()));
+                             static_cast<int>(model.posedirs.cols()), threads);
 }
 
 std::vector<Eigen::MatrixXd> forwardBatchSkins(const BodyModel& model, const BatchInput& in,

@@ -42,8 +42,9 @@ struct BatchInput {
   const batch::PackedPosedirs* posedirs = nullptr;
 };
 
-// posedirs packed for the kernels (float panels), for BatchInput::posedirs.
-batch::PackedPosedirs packPosedirs(const BodyModel& model);
+// posedirs packed for the kernels (float panels), for BatchInput::posedirs,
+// on `threads` workers (the same data for any count).
+batch::PackedPosedirs packPosedirs(const BodyModel& model, int threads = 1);
 
 // Returns 3N x T: column t holds frame t's vertices (x0 y0 z0 x1 ...).
 Eigen::MatrixXd forwardBatch(const BodyModel& model, const BatchInput& input);

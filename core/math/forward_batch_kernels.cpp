@@ -24,6 +24,7 @@
 #include <cstring>
 
 #include "core/huge_pages.h"
+#include "core/parallel.h"
 
 namespace smpl {
 namespace batch {
@@ -476,7 +477,7 @@ const char* kernelsName(Kernels kernels) {
   return "?";
 }
 
-PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth) {
+PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth, int threads) {
   PackedPosedirs a;
   a.vertices = vertices;
   a.depth = depth;
@@ -487,19 +488,21 @@ PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth) {
   const size_t rows = 3 * static_cast<size_t>(vertices);
   // Feature by feature: each posedirs column is read in order, and each
   // destination write is one whole cache line (16 floats).
-  for (int p = 0; p < depth; ++p) {
-    const double* col = posedirs + p * rows;
-    for (int b = 0; b < blocks; ++b) {
-      const int lanes = std::max(0, std::min(kL, vertices - kL * b));
-      const double* src = col + 3 * static_cast<size_t>(kL) * b;
-      for (int d = 0; d < 3; ++d) {
-        float* dst = a.data.data() + ((3 * static_cast<size_t>(b) + d) * depth + p) * kL;
-        int l = 0;
-        for (; l < lanes; ++l) dst[l] = static_cast<float>(src[3 * l + d]);
-        for (; l < kL; ++l) dst[l] = 0.0f;
+  runWorkers(std::max(1, std::min(threads, depth)), [&](int worker, int workers) {
+    for (int p = worker; p < depth; p += workers) {
+      const double* col = posedirs + p * rows;
+      for (int b = 0; b < blocks; ++b) {
+        const int lanes = std::max(0, std::min(kL, vertices - kL * b));
+        const double* src = col + 3 * static_cast<size_t>(kL) * b;
+        for (int d = 0; d < 3; ++d) {
+          float* dst = a.data.data() + ((3 * static_cast<size_t>(b) + d) * depth + p) * kL;
+          int l = 0;
+          for (; l < lanes; ++l) dst[l] = static_cast<float>(src[3 * l + d]);
+          for (; l < kL; ++l) dst[l] = 0.0f;
+        }
       }
     }
-  }
+  });
   return a;
 }
 

@@ -124,7 +124,9 @@ struct PackedPosedirs {
   int steps = 0;     // ceil(N / 32)
   int depth = 0;     // P
 };
-PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth);
+// On `threads` workers, feature by feature (each writes its own panels: the
+// packed data does not depend on the count).
+PackedPosedirs packPosedirs(const double* posedirs, int vertices, int depth, int threads = 1);
 
 // Skin weights (N x K, column-major doubles) per step: the joints with a
 // non-zero weight on any of the step's 32 vertices are

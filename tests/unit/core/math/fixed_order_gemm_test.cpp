@@ -15,13 +15,15 @@ namespace smpl {
 namespace {
 
 // The definition, written out: one rounded multiply and one rounded add per term.
-Eigen::MatrixXd definition(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  Eigen::MatrixXd c(a.rows(), b.cols());
+template <class Matrix>
+Matrix definition(const Matrix& a, const Matrix& b) {
+  using T = typename Matrix::Scalar;
+  Matrix c(a.rows(), b.cols());
   for (Eigen::Index i = 0; i < a.rows(); ++i)
     for (Eigen::Index j = 0; j < b.cols(); ++j) {
-      double s = 0.0;
+      T s = 0;
       for (Eigen::Index p = 0; p < a.cols(); ++p) {
-        volatile double term = a(i, p) * b(p, j);  // volatile: never fused with the add
+        volatile T term = a(i, p) * b(p, j);  // volatile: never fused with the add
         s = s + term;
       }
       c(i, j) = s;
@@ -29,9 +31,10 @@ Eigen::MatrixXd definition(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return c;
 }
 
-bool sameBits(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
+template <class Matrix>
+bool sameBits(const Matrix& x, const Matrix& y) {
   return x.rows() == y.rows() && x.cols() == y.cols() &&
-         std::memcmp(x.data(), y.data(), sizeof(double) * size_t(x.size())) == 0;
+         std::memcmp(x.data(), y.data(), sizeof(typename Matrix::Scalar) * size_t(x.size())) == 0;
 }
 
 // Restores the widest target after a test that forced one.
@@ -42,7 +45,12 @@ struct TargetReset {
   }
 };
 
-TEST(FixedOrderGemm, EveryTargetGivesTheDefinitionsBits) {
+// Random products of every shape class (tiles, leftover rows and columns, k
+// = 0, a leading dimension other than the rows) on every target: the bits of
+// the definition. Matrix: MatrixXd or MatrixXf.
+template <class Matrix>
+void expectEveryTargetGivesTheDefinitionsBits(double tolerance) {
+  using T = typename Matrix::Scalar;
   TargetReset reset;
   std::mt19937_64 rng(7);
   std::normal_distribution<double> normal(0.0, 1.0);
@@ -50,21 +58,30 @@ TEST(FixedOrderGemm, EveryTargetGivesTheDefinitionsBits) {
   for (int trial = 0; trial < 60; ++trial) {
     const int m = 1 + size(rng), n = 1 + size(rng) / 2, k = trial == 0 ? 0 : size(rng) * 3;
     // Values over many magnitudes, so that another order of the sums would round differently.
-    Eigen::MatrixXd a(m + 3, k), b(k, n);
+    Matrix a(m + 3, k), b(k, n);
     for (Eigen::Index e = 0; e < a.size(); ++e)
-      a.data()[e] = normal(rng) * std::exp2(size(rng) - 18);
-    for (Eigen::Index e = 0; e < b.size(); ++e) b.data()[e] = normal(rng);
+      a.data()[e] = T(normal(rng) * std::exp2(size(rng) - 18));
+    for (Eigen::Index e = 0; e < b.size(); ++e) b.data()[e] = T(normal(rng));
     const auto a_block = a.middleRows(2, m);  // a leading dimension other than the rows
-    const Eigen::MatrixXd expected = definition(a_block, b);
+    const Matrix expected = definition<Matrix>(a_block, b);
     for (SimdTarget t : supportedSimdTargets()) {
       ASSERT_TRUE(selectSimdTarget(simdTargetName(t)).ok());
-      const Eigen::MatrixXd c = fixedOrderProduct(a_block, b);
+      const Matrix c = fixedOrderProduct(a_block, b);
       EXPECT_TRUE(sameBits(c, expected))
           << simdTargetName(t) << " m " << m << " n " << n << " k " << k;
-      const double scale = k == 0 ? 1.0 : (a_block.cwiseAbs() * b.cwiseAbs()).maxCoeff();
-      EXPECT_LE((c - a_block * b).cwiseAbs().maxCoeff(), 1e-13 * scale) << simdTargetName(t);
+      const double scale = k == 0 ? 1.0 : double((a_block.cwiseAbs() * b.cwiseAbs()).maxCoeff());
+      EXPECT_LE(double((c - a_block * b).cwiseAbs().maxCoeff()), tolerance * scale)
+          << simdTargetName(t);
     }
   }
+}
+
+TEST(FixedOrderGemm, EveryTargetGivesTheDefinitionsBits) {
+  expectEveryTargetGivesTheDefinitionsBits<Eigen::MatrixXd>(1e-13);
+}
+
+TEST(FixedOrderGemm, EveryTargetGivesTheDefinitionsBitsInFloat) {
+  expectEveryTargetGivesTheDefinitionsBits<Eigen::MatrixXf>(1e-4);
 }
 
 TEST(FixedOrderGemm, OrderIsVisible) {
@@ -75,6 +92,10 @@ TEST(FixedOrderGemm, OrderIsVisible) {
   b << 1.0, 1.0, 1.0;
   EXPECT_EQ(fixedOrderProduct(a, b)(0, 0), 0.0);  // (1e16 + 1) - 1e16 = 0 in order
   EXPECT_EQ(a(0, 0) * b(0, 0) + a(0, 2) * b(2, 0) + a(0, 1) * b(1, 0), 1.0);  // another order
+  Eigen::MatrixXf af(1, 3), bf(3, 1);  // in float: (1e8 + 1) - 1e8 = 0 in order
+  af << 1e8f, 1.0f, -1e8f;
+  bf << 1.0f, 1.0f, 1.0f;
+  EXPECT_EQ(fixedOrderProduct(af, bf)(0, 0), 0.0f);
 }
 
 TEST(SimdTarget, NamesAndRefusals) {
