@@ -19,10 +19,11 @@ namespace {
 
 constexpr Eigen::Index kBlock = 32;  // vertices per block: their products are GEMMs
 
-// Poses with what every vertex needs of them. The products that find each
-// vertex's pruning errors run in float (fixed order, twice the lanes): their
-// rounding, about 1e-7 of a metre, is far below the millimetre errors the
-// refit corrects, and the ridge regression's own matrices stay double.
+// Poses with what every vertex needs of them. The per-block products (the
+// pruning errors, the blends, the ridge regression's map and the guard's
+// correction) run in float (fixed order, twice the lanes): their rounding,
+// about 1e-7 of a metre, is far below the millimetre errors the refit
+// corrects. The Gram matrix and its factor stay double.
 struct PoseSet {
   Eigen::MatrixXd features;      // P x T
   Eigen::MatrixXf features32;    // features in float

@@ -53,6 +53,10 @@ void product(const Eigen::Ref<const Matrix>& a, const Eigen::Ref<const Matrix>& 
   eigen_assert(a.cols() == b.rows());
   c->resize(a.rows(), b.cols());
   if (c->size() == 0) return;
+  if (a.cols() == 0) {  // an empty sum (and data() may be null: no pointer arithmetic on it)
+    c->setZero();
+    return;
+  }
   fixed_order::kernelOf<typename Matrix::Scalar>(activeSimdTarget())(
       a.rows(), b.cols(), a.cols(), a.data(), a.outerStride(), b.data(), b.outerStride(), c->data(),
       c->rows());
