@@ -11,13 +11,6 @@ namespace {
 constexpr SimdTarget kAll[] = {SimdTarget::Scalar, SimdTarget::Sse4, SimdTarget::Avx2,
                                SimdTarget::Avx512};
 
-SimdTarget widest() {
-  SimdTarget best = SimdTarget::Scalar;
-  for (SimdTarget t : kAll)
-    if (cpuRunsSimd(t)) best = t;
-  return best;
-}
-
 // -1: not chosen yet (the widest, decided at the first use).
 std::atomic<int> g_active{-1};
 
@@ -64,7 +57,7 @@ std::vector<SimdTarget> supportedSimdTargets() {
 SimdTarget activeSimdTarget() {
   int v = g_active.load(std::memory_order_relaxed);
   if (v < 0) {
-    v = int(widest());
+    v = int(supportedSimdTargets().back());  // the widest: scalar is always there
     g_active.store(v, std::memory_order_relaxed);
   }
   return SimdTarget(v);
