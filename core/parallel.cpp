@@ -1,6 +1,7 @@
 #include "core/parallel.h"
 
 #include <algorithm>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -17,6 +18,34 @@ void runWorkers(int workers, const std::function<void(int worker, int workers)>&
   work(0, workers);
   for (std::thread& t : pool) t.join();
 #endif
+}
+
+void runTogether(bool together, const std::function<void()>& first,
+                 const std::function<void()>& second) {
+#ifdef SMPL_NO_THREADS
+  together = false;
+#endif
+  if (!together) {
+    first();
+    second();
+    return;
+  }
+  std::exception_ptr failed;
+  std::thread other([&] {
+    try {
+      second();
+    } catch (...) {
+      failed = std::current_exception();
+    }
+  });
+  try {
+    first();
+  } catch (...) {
+    other.join();
+    throw;
+  }
+  other.join();
+  if (failed) std::rethrow_exception(failed);
 }
 
 unsigned hardwareThreads() {

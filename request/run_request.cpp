@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <new>
+#include <optional>
 #include <unordered_map>
 
 #include "core/heap_trim.h"
@@ -14,6 +15,7 @@
 #include "core/io/printable.h"
 #include "core/memory_budget.h"
 #include "core/models/betas_file.h"
+#include "core/parallel.h"
 #include "core/stopwatch.h"
 #include "exporter/export_asset.h"
 #include "exporter/metadata_json.h"
@@ -227,10 +229,11 @@ Result<size_t> commitFiles(const ExportRequest& r, const std::string& buffer_pat
   if (!buffer_path.empty())
     contents.push_back(FileContent{buffer_path, files->buffer.data(), files->buffer.size()});
   // The sidecar records the size and SHA-256 of each file written with it
-  // (batch mode checks them, metadata_json.h).
-  const std::string text = sidecar(*producer, contents);
-  contents.push_back(FileContent{r.out + ".smpl.json", text.data(), text.size()});
-  if (Status st = writeFilesTogether(contents); !st)
+  // (batch mode checks them, metadata_json.h): hashed while they are written.
+  if (Status st = writeFilesWithRecord(
+          contents, r.out + ".smpl.json", [&] { return sidecar(*producer, contents); },
+          r.writer.threads.value_or(0) != 1);
+      !st)
     return fail(ErrorKind::Write, "saving", r.out, st.message());
   return files->size() + files->buffer.size();
 }
@@ -278,20 +281,38 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
   if (!measure) asset->corrective_refit = std::make_shared<CorrectiveRefit>();
   returnFreedHeap();
-  const SteadyTime write_start = steadyNow();
-  Result<size_t> bytes = writeJob(r, *asset, *writer, memory);
-  if (!bytes) return bytes.error();
-  report.stages.write = secondsSince(write_start);
-  if (measure) {  // after the write, without the clips: a long clip's tracks are gone first
-    asset->animations.clear();
-    returnFreedHeap();
-    Result<PruningError> err = measurePruningError(model, report.options, r.skin_error_poses,
-                                                   &report.skin, asset->corrective_refit.get());
-    if (!err) return fail(ErrorKind::Export, "measuring", r.out, err.message());
-    report.skin_error = *err;
+  std::optional<Result<size_t>> bytes;
+  std::optional<Result<PruningError>> err;
+  const auto write = [&] {
+    const SteadyTime write_start = steadyNow();
+    bytes = writeJob(r, *asset, *writer, memory);
+    report.stages.write = secondsSince(write_start);
+  };
+  const auto measure_error = [&] {
+    if (measure)
+      err = measurePruningError(model, report.options, r.skin_error_poses, &report.skin,
+                                asset->corrective_refit.get());
+  };
+  // The write is serial: without clips the measurement (its own memory, not
+  // a clip's) runs beside it. With clips it runs after the write, once a
+  // long clip's tracks are gone; with --threads 1, after it too.
+  if (measure && asset->animations.empty() && r.writer.threads.value_or(0) != 1) {
+    runTogether(true, write, measure_error);
+  } else {
+    write();
+    if (*bytes && measure) {
+      asset->animations.clear();
+      returnFreedHeap();
+      measure_error();
+    }
+  }
+  if (!*bytes) return bytes->error();
+  if (err) {
+    if (!*err) return fail(ErrorKind::Export, "measuring", r.out, err->message());
+    report.skin_error = **err;
     report.skin_error_measured = true;
   }
-  report.bytes = *bytes;
+  report.bytes = **bytes;
   report.placement = asset->placement;
   report.seconds = secondsSince(start);
   report.vertices = static_cast<int>(asset->mesh.positions.rows());
@@ -553,13 +574,43 @@ Result<ExportReport> runSceneExport(const ExportRequest& r, ModelSource* models)
   return guarded<ExportReport>(&stage, [&] { return runScene(r, *inputs, models, &stage); });
 }
 
+namespace {
+
+// loadRunInputs and, beside it, the producer hash that the commit records:
+// the load is serial, and the hash reads the model file a second time on
+// the idle core. `job` is `r` with that hash; a hash that fails is left
+// unset, and the commit reports its error where it always has.
+Result<RunInputs> loadInputsHashed(const ExportRequest& r, ModelSource* models,
+                                   ExportRequest* job) {
+  *job = r;
+  std::optional<Result<RunInputs>> inputs;
+  std::optional<Result<std::string>> producer;
+  runTogether(
+      r.producer_hash.empty() && r.writer.threads.value_or(0) != 1,
+      [&] { inputs = loadRunInputs(r, models); },
+      [&] {
+        // Off the guarded stage: a throw leaves the hash to the commit,
+        // which computes it again under the guard.
+        try {
+          if (r.producer_hash.empty()) producer = producerOf(r);
+        } catch (...) {
+          producer.reset();
+        }
+      });
+  if (producer && *producer) job->producer_hash = **producer;
+  return std::move(*inputs);
+}
+
+}  // namespace
+
 Result<ExportReport> runExportRequest(const ExportRequest& r, ModelSource* models) {
   if (Status st = beginRun(r); !st) return st.error();
   // Before any work: no output may be an input, a directory or a device.
   if (Status st = checkRunPaths(runPaths(r, {r.out}, r.motions)); !st) return usage(st.message());
-  Result<RunInputs> inputs = loadRunInputs(r, models);
+  ExportRequest job;
+  Result<RunInputs> inputs = loadInputsHashed(r, models, &job);
   if (!inputs) return inputs.error();
-  return runExportJob(r, *inputs, models);
+  return runExportJob(job, *inputs, models);
 }
 
 namespace {
@@ -572,12 +623,13 @@ Result<ExportReport> runDecoded(const ExportRequest& r, std::vector<Motion> moti
   if (motions.size() > r.motions.size()) return usage("more decoded motions than motion names");
   if (!memory)
     if (Status st = checkRunPaths(runPaths(r, {r.out}, r.motions)); !st) return usage(st.message());
-  Result<RunInputs> inputs = loadRunInputs(r, models);
+  ExportRequest job = r;  // kept in memory: no sidecar, no producer hash
+  Result<RunInputs> inputs = memory ? loadRunInputs(r, models) : loadInputsHashed(r, models, &job);
   if (!inputs) return inputs.error();
   Stage stage;
   stage.set("exporting", r.out, ErrorKind::Export);
   return guarded<ExportReport>(
-      &stage, [&] { return runJob(r, *inputs, models, &stage, std::move(motions), memory); });
+      &stage, [&] { return runJob(job, *inputs, models, &stage, std::move(motions), memory); });
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/io/file_io.h"
 #include "core/os/files.h"
 #include "core/os/system.h"
+#include "core/parallel.h"
 
 namespace smpl {
 namespace {
@@ -239,7 +240,26 @@ size_t FileContent::totalSize() const {
   return n;
 }
 
-Status writeFilesTogether(const std::vector<FileContent>& files) {
+namespace {
+
+// Creates and writes the temporary of each of `files` (appended to `temps`).
+Status writeTemps(const std::vector<FileContent>& files, const std::vector<Place>& places,
+                  std::vector<Temp>* temps) {
+  for (size_t i = 0; i < files.size(); ++i) {
+    temps->emplace_back();
+    Status st = createTemp(files[i].path, places[temps->size() - 1], &temps->back());
+    if (!st) temps->pop_back();  // nothing created: its last name may be someone else's file
+    if (st) st = writeTemp(&temps->back(), files[i]);
+    if (!st) return st;
+  }
+  return Status();
+}
+
+// The protocol of writeFilesTogether on `files`, the last one's bytes made
+// by `make_record` (null: every file's bytes are given) beside the others'
+// writes when `together`.
+Status writeSet(std::vector<FileContent> files, const std::function<std::string()>& make_record,
+                bool together) {
   for (const FileContent& f : files)
     if (baseName(f.path).size() > kNameMax)
       return ioError(f.path, "cannot create", std::strerror(ENAMETOOLONG));
@@ -248,19 +268,30 @@ Status writeFilesTogether(const std::vector<FileContent>& files) {
   if (Status st = openFolders(files, &folders, &places); !st) return st;
   std::vector<Temp> temps;
   temps.reserve(files.size());
-  for (size_t i = 0; i < files.size(); ++i) {
-    temps.emplace_back();
-    Status st = createTemp(files[i].path, places[i], &temps.back());
-    if (!st) temps.pop_back();  // nothing created: its last name may be someone else's file
-    if (st) st = writeTemp(&temps.back(), files[i]);
-    if (!st) {
+  Status st;
+  if (make_record) {
+    const std::vector<FileContent> given(files.begin(), files.end() - 1);
+    std::string record;
+    try {
+      runTogether(
+          together, [&] { st = writeTemps(given, places, &temps); },
+          [&] { record = make_record(); });
+    } catch (...) {
       closeTemps(places, &temps, true);
-      return st;
+      throw;
     }
+    files.back().data = record.data();
+    files.back().size = record.size();
+    if (st) st = writeTemps({files.back()}, places, &temps);
+  } else {
+    st = writeTemps(files, places, &temps);
+  }
+  if (!st) {
+    closeTemps(places, &temps, true);
+    return st;
   }
   std::vector<const os::Folder*> held;
   for (const os::Folder& f : folders) held.push_back(&f);
-  Status st;
   {
     os::FolderLocks exclusive(held, true);
     st = commit(files, places, temps);
@@ -268,6 +299,19 @@ Status writeFilesTogether(const std::vector<FileContent>& files) {
   }
   closeTemps(places, &temps, false);  // renamed into place, or already removed by commit()
   return st;
+}
+
+}  // namespace
+
+Status writeFilesTogether(const std::vector<FileContent>& files) {
+  return writeSet(files, nullptr, false);
+}
+
+Status writeFilesWithRecord(const std::vector<FileContent>& files, const std::string& record_path,
+                            const std::function<std::string()>& make_record, bool together) {
+  std::vector<FileContent> all = files;
+  all.push_back(FileContent{record_path, nullptr, 0});
+  return writeSet(std::move(all), make_record, together);
 }
 
 int removeStaleTemps(const std::string& dir, const std::vector<std::string>& names) {

@@ -30,6 +30,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -93,6 +94,15 @@ struct FileContent {
   size_t totalSize() const;  // size + the tail's sizes
 };
 Status writeFilesTogether(const std::vector<FileContent>& files);
+
+// writeFilesTogether(files + the record), where the record (the last file,
+// at `record_path`) is the text `make_record` returns: with `together` it is
+// made on a thread of its own while `files` are written and fsynced, so a
+// sidecar that hashes them waits neither for the disk nor the disk for it.
+// `make_record` may read the files' bytes (they are only read here). If it
+// throws, the temporaries are removed and the exception goes on.
+Status writeFilesWithRecord(const std::vector<FileContent>& files, const std::string& record_path,
+                            const std::function<std::string()>& make_record, bool together);
 
 // A fresh temporary name for `path`, "<dir>/.<name>.smpl.tmp-<tag>-<random>"
 // (a new random part on every call; nothing is created).

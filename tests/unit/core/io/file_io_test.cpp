@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <regex>
 #include <string>
 #include <thread>
@@ -207,6 +208,57 @@ TEST_F(FileIo, FailedSidecarLeavesNoNewOutput) {
   std::remove((side + "/keep").c_str());
   ASSERT_FALSE(st.ok());
   EXPECT_EQ(list(), std::vector<std::string>{"out.glb.smpl.json"});
+}
+
+// The record (the last file) is made while the others are written: it can
+// read their bytes, and it is committed with them, last.
+TEST_F(FileIo, RecordIsMadeFromTheFilesAndWrittenWithThem) {
+  const std::string out = dir_ + "/out.glb", side = out + ".smpl.json";
+  const std::string a = "new output";
+  for (const bool together : {false, true}) {
+    const std::vector<FileContent> files = {{out, a.data(), a.size()}};
+    const Status st = writeFilesWithRecord(
+        files, side,
+        [&] {
+          return "record of " + std::string(static_cast<const char*>(files[0].data), files[0].size);
+        },
+        together);
+    ASSERT_TRUE(st.ok()) << st.message();
+    EXPECT_EQ(readText(out), a);
+    EXPECT_EQ(readText(side), "record of new output");
+    EXPECT_EQ(list().size(), 2u);  // no temporaries or backups left
+  }
+}
+
+// A record that cannot be made (it throws) leaves the old pair and no
+// temporary, however far the other files' writes got.
+TEST_F(FileIo, RecordThatThrowsLeavesTheOldFiles) {
+  const std::string out = dir_ + "/out.glb", side = out + ".smpl.json";
+  ASSERT_TRUE(writeFileAtomic(out, std::string("old output")).ok());
+  ASSERT_TRUE(writeFileAtomic(side, std::string("old sidecar")).ok());
+  const std::string a(1 << 20, 'x');
+  for (const bool together : {false, true}) {
+    EXPECT_THROW(writeFilesWithRecord(
+                     {{out, a.data(), a.size()}}, side,
+                     []() -> std::string { throw std::bad_alloc(); }, together),
+                 std::bad_alloc);
+    EXPECT_EQ(readText(out), "old output");
+    EXPECT_EQ(readText(side), "old sidecar");
+    EXPECT_EQ(list().size(), 2u);
+  }
+}
+
+// A record whose name is too long fails before any file is created.
+TEST_F(FileIo, RecordNameTooLongFailsFirst) {
+  const std::string out = dir_ + "/out.glb", side = dir_ + "/" + std::string(300, 's');
+  const std::string a = "new output";
+  bool made = false;
+  const Status st = writeFilesWithRecord(
+      {{out, a.data(), a.size()}}, side, [&] { return made = true, std::string("r"); }, true);
+  ASSERT_FALSE(st.ok());
+  EXPECT_NE(st.message().find(std::strerror(ENAMETOOLONG)), std::string::npos) << st.message();
+  EXPECT_FALSE(made);
+  EXPECT_TRUE(list().empty());
 }
 
 // A failed first rename (output is a directory) leaves the old sidecar.
