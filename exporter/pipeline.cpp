@@ -123,16 +123,23 @@ void addCorrectives(const BodyModel& model, const ExportOptions& o, const Correc
     return;
   }
   SkinnedMesh& mesh = asset->mesh;
+  const int count = model.numPoseFeatures();
+  std::vector<MorphTarget> targets(static_cast<size_t>(count));  // built on every worker, in order
+  runWorkers(o.threads > 0 ? o.threads : int(hardwareThreads()), [&](int w, int workers) {
+    for (int n = w; n < count; n += workers) {
+      const CorrectiveLayout c = encodedLayout(model, n, o.encoding);
+      // weight * delta must equal f * P: delta = P / scale
+      targets[size_t(n)] = correctiveTarget(c.target, model, refit, n, mesh.source_vertex, c.scale);
+      targets[size_t(n)].rest_weight = static_cast<float>(c.offset);
+    }
+  });
   Eigen::VectorXd shift =
       Eigen::VectorXd::Zero(model.posedirs.rows());  // sum (offset/scale) P_n, in double
-  for (int n = 0; n < model.numPoseFeatures(); ++n) {
+  for (int n = 0; n < count; ++n) {
     const CorrectiveLayout c = encodedLayout(model, n, o.encoding);
-    // weight * delta must equal f * P: delta = P / scale; the offset's
-    // contribution at every pose is removed from the stored base mesh.
-    MorphTarget t = correctiveTarget(c.target, model, refit, n, mesh.source_vertex, c.scale);
-    t.rest_weight = static_cast<float>(c.offset);
+    // The offset's contribution at every pose is removed from the stored base mesh.
     if (c.offset != 0.0) shift += (c.offset / c.scale) * refit.column(model, n);
-    mesh.morph_targets.push_back(std::move(t));
+    mesh.morph_targets.push_back(std::move(targets[size_t(n)]));
     asset->metadata.correctives.push_back(c);
   }
   if (o.encoding == CorrectiveEncoding::Unit) shiftBaseMesh(shift, &mesh);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <map>
+#include <string>
 #include <thread>
 
 #include "core/math/fixed_order_gemm.h"
@@ -48,19 +49,27 @@ PoseSet poseSet(const BodyModel& model, const ShapedBody& body,
   return s;
 }
 
-// The features a vertex's refit may change: the 9 of every joint with a
-// non-zero model weight and (options.parents) of its parent; the root has none.
-std::vector<Eigen::Index> featuresOf(const BodyModel& model, Eigen::Index i, bool parents) {
-  std::vector<bool> use(size_t(model.numJoints()), false);
+// The joints whose features a vertex's refit may change, as a key ('1' for
+// each used joint): those with a non-zero model weight and (options.parents)
+// their parents; the root has no features, so a vertex of the root alone
+// gets an empty key.
+std::string jointsOf(const BodyModel& model, Eigen::Index i, bool parents) {
+  std::string use(size_t(model.numJoints()), '0');
   for (int k = 0; k < model.numJoints(); ++k)
     if (model.weights(i, k) > 0) {
-      use[size_t(k)] = true;
-      if (parents && model.parents[size_t(k)] >= 0) use[size_t(model.parents[size_t(k)])] = true;
+      use[size_t(k)] = '1';
+      if (parents && model.parents[size_t(k)] >= 0) use[size_t(model.parents[size_t(k)])] = '1';
     }
+  use[0] = '0';
+  return use.find('1') == std::string::npos ? std::string() : use;
+}
+
+// The features of the joints of a jointsOf key: the 9 of each, in feature order.
+std::vector<Eigen::Index> featuresOf(const std::string& joints) {
   std::vector<Eigen::Index> features;
-  for (int k = 1; k < model.numJoints(); ++k)
-    if (use[size_t(k)])
-      for (int n = 0; n < 9; ++n) features.push_back(9 * (k - 1) + n);
+  for (size_t k = 1; k < joints.size(); ++k)
+    if (joints[k] == '1')
+      for (int n = 0; n < 9; ++n) features.push_back(Eigen::Index(9 * (k - 1) + n));
   return features;
 }
 
@@ -204,23 +213,33 @@ void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
 }
 
 // The cut vertices grouped by feature set (each set prepared once, in
-// `sets`), in blocks of at most kBlock (in vertex order within a set, so the
-// blocks do not depend on the thread count).
+// `sets`, on `threads` workers: the sets are independent), in blocks of at
+// most kBlock (in vertex order within a set, so the blocks do not depend on
+// the thread count). (*set_of)[j]: the set of cut vertex j, or -1 (root only:
+// nothing to refit).
 std::vector<Block> blocksOf(const Context& c, const std::vector<Eigen::Index>& cut,
-                            std::vector<std::vector<Eigen::Index>>* features,
-                            std::vector<FeatureSet>* sets) {
-  std::map<std::vector<Eigen::Index>, std::vector<size_t>> groups;
+                            std::vector<int>* set_of, std::vector<FeatureSet>* sets) {
+  std::map<std::string, std::vector<size_t>> groups;
   for (size_t j = 0; j < cut.size(); ++j) {
-    (*features)[j] = featuresOf(c.model, cut[j], c.options.parents);
-    if (!(*features)[j].empty())
-      groups[(*features)[j]].push_back(j);  // root only: nothing to refit
+    std::string joints = jointsOf(c.model, cut[j], c.options.parents);
+    if (!joints.empty()) groups[std::move(joints)].push_back(j);
   }
+  std::vector<const std::string*> keys;
+  for (const auto& group : groups) keys.push_back(&group.first);
+  sets->resize(keys.size());
+  std::atomic<size_t> next{0};
+  runWorkers(std::max(1, std::min<int>(c.options.threads, int(keys.size()))), [&](int, int) {
+    for (size_t g; (g = next++) < keys.size();) (*sets)[g] = featureSet(c, featuresOf(*keys[g]));
+  });
+  set_of->assign(cut.size(), -1);
   std::vector<Block> blocks;
-  for (const auto& [set, members] : groups) {
-    sets->push_back(featureSet(c, set));
+  size_t g = 0;
+  for (auto it = groups.begin(); it != groups.end(); ++it, ++g) {
+    const std::vector<size_t>& members = it->second;
+    for (size_t j : members) (*set_of)[j] = int(g);
     for (size_t first = 0; first < members.size(); first += size_t(kBlock)) {
       Block b;
-      b.set = sets->size() - 1;
+      b.set = g;
       for (size_t j = first; j < std::min(members.size(), first + size_t(kBlock)); ++j) {
         b.vertices.push_back(cut[members[j]]);
         b.slots.push_back(members[j]);
@@ -274,9 +293,9 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
   c.train = poseSet(model, body, sampleMotionPoses(model.joint_names, o.training_poses, o.seed));
   c.validate = poseSet(model, body, check);
   c.gram = fixedOrderProduct(c.train.features, c.train.features.transpose());
-  std::vector<std::vector<Eigen::Index>> features(cut.size());
+  std::vector<int> set_of;
   std::vector<FeatureSet> sets;
-  const std::vector<Block> work = blocksOf(c, cut, &features, &sets);
+  const std::vector<Block> work = blocksOf(c, cut, &set_of, &sets);
   std::vector<Eigen::MatrixXd> deltas(cut.size());
   const int workers = std::max(1, std::min<int>(o.threads, int(work.size())));
   std::atomic<size_t> next{0};  // blocks are independent: any order gives the same result
@@ -292,9 +311,10 @@ CorrectiveRefit refitCorrectives(const BodyModel& model, const ShapedBody& body,
   for (size_t j = 0; j < cut.size(); ++j) {
     if (deltas[j].size() == 0) continue;
     refit.block[size_t(cut[j])] = b;
+    const std::vector<Eigen::Index>& features = sets[size_t(set_of[j])].features;
     refit.rows.middleRows<3>(3 * b) = model.posedirs.middleRows<3>(3 * cut[j]);
-    for (size_t f = 0; f < features[j].size(); ++f)
-      refit.rows.block<3, 1>(3 * b, features[j][f]) += deltas[j].col(Eigen::Index(f));
+    for (size_t f = 0; f < features.size(); ++f)
+      refit.rows.block<3, 1>(3 * b, features[f]) += deltas[j].col(Eigen::Index(f));
     ++b;
   }
   if (blocks == 0) refit.block.clear();

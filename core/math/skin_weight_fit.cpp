@@ -38,10 +38,19 @@ TrainingSet trainingSet(const BodyModel& model, const ShapedBody& body, const Sk
     features.col(static_cast<Eigen::Index>(p)) = poseFeatures(r);
     ts.transforms.push_back(skinningTransforms(model, body.joints, r));
   }
-  // One (3N x P)(P x T) product, summed in a fixed order: the same bits on every CPU.
-  fixedOrderProduct(model.posedirs, features, &ts.v_posed);
-  for (Eigen::Index i = 0; i < body.v_shaped.rows(); ++i)
-    for (int c = 0; c < 3; ++c) ts.v_posed.row(3 * i + c).array() += body.v_shaped(i, c);
+  // One (3N x P)(P x T) product, summed in a fixed order: the same bits on
+  // every CPU, and on any split of its rows over the workers.
+  const Eigen::Index n = body.v_shaped.rows();
+  ts.v_posed.resize(3 * n, features.cols());
+  runWorkers(std::max(1, std::min<int>(o.threads, int(n / 256) + 1)), [&](int w, int count) {
+    const Eigen::Index first = n * w / count, rows = 3 * (n * (w + 1) / count - first);
+    Eigen::MatrixXd part;
+    fixedOrderProduct(model.posedirs.middleRows(3 * first, rows), features, &part);
+    Eigen::VectorXd rest(rows);  // v_shaped of these vertices, x y z per vertex
+    for (Eigen::Index r = 0; r < rows; ++r) rest(r) = body.v_shaped(first + r / 3, r % 3);
+    for (Eigen::Index p = 0; p < part.cols(); ++p)
+      ts.v_posed.col(p).segment(3 * first, rows) = part.col(p) + rest;
+  });
   return ts;
 }
 
@@ -74,19 +83,22 @@ void storeRow(Eigen::Index i, const std::vector<int>& joints, Eigen::VectorXd u,
 // Residuals of the candidate joints alone, stacked over the poses (3T x C):
 // rows 3p..3p+2 of column s are d_ps = a_ps - y_p. With sum u = 1 the
 // residual of weights u at pose p is sum_s u_s d_ps, and the training error
-// is u' (D'D) u.
+// is u' (D'D) u. The candidates are the first `c` of `nonzero`, so each
+// a_k x of a pose is computed once, for y and for d.
 Eigen::MatrixXd candidateResiduals(const BodyModel& model, const TrainingSet& ts, Eigen::Index i,
-                                   const std::vector<int>& nonzero,
-                                   const std::vector<int>& candidates) {
+                                   const std::vector<int>& nonzero, size_t c) {
   const Eigen::Index poses = Eigen::Index(ts.transforms.size());
-  Eigen::MatrixXd d(3 * poses, Eigen::Index(candidates.size()));
+  Eigen::MatrixXd d(3 * poses, Eigen::Index(c));
+  std::vector<Eigen::Vector3d> moved(nonzero.size());  // a_k x, k in `nonzero` order
   for (Eigen::Index p = 0; p < poses; ++p) {
     const std::vector<Affine>& a = ts.transforms[size_t(p)];
     const Eigen::Vector4d x = ts.v_posed.col(p).segment<3>(3 * i).homogeneous();
     Eigen::Vector3d y = Eigen::Vector3d::Zero();
-    for (int k : nonzero) y += model.weights(i, k) * (a[size_t(k)] * x);
-    for (size_t s = 0; s < candidates.size(); ++s)
-      d.block<3, 1>(3 * p, Eigen::Index(s)) = a[size_t(candidates[s])] * x - y;
+    for (size_t j = 0; j < nonzero.size(); ++j) {
+      moved[j] = a[size_t(nonzero[j])] * x;
+      y += model.weights(i, nonzero[j]) * moved[j];
+    }
+    for (size_t s = 0; s < c; ++s) d.block<3, 1>(3 * p, Eigen::Index(s)) = moved[s] - y;
   }
   return d;
 }
@@ -302,7 +314,7 @@ void fitVertex(const BodyModel& model, const TrainingSet& ts, const SkinFitOptio
   const std::vector<int> candidates(
       nonzero.begin(), nonzero.begin() + std::min(count, std::max(kMaxCandidates, 2 * m)));
   VertexFit v;
-  v.d = candidateResiduals(model, ts, i, nonzero, candidates);
+  v.d = candidateResiduals(model, ts, i, nonzero, candidates.size());
   v.gram = v.d.transpose() * v.d;
   v.model.resize(Eigen::Index(candidates.size()));
   for (size_t s = 0; s < candidates.size(); ++s)

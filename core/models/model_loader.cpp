@@ -12,6 +12,7 @@
 #include "core/models/npz_arrays.h"
 #include "core/models/other_models.h"
 #include "core/models/validate_inputs.h"
+#include "core/parallel.h"
 
 namespace smpl {
 namespace {
@@ -65,18 +66,24 @@ struct Arrays {
 
 // (rows*cols) C-order values -> matrix. posedirs (3N x 207): a strip of 8
 // source rows (13 KB) stays in L1 while each destination column gets its 8
-// contiguous values, so both sides stream; huge pages for the big ones.
+// contiguous values, so both sides stream; huge pages for the big ones. The
+// strips are split over the cores (a copy: any split gives the same matrix);
+// the model's load is otherwise serial.
 Eigen::MatrixXd toMatrix(const Array& a, Eigen::Index rows, Eigen::Index cols) {
   constexpr Eigen::Index kStrip = 8;
   Eigen::MatrixXd m(rows, cols);
   adviseHugePages(m.data(), static_cast<size_t>(m.size()) * sizeof(double));
   const double* src = a.data.data();
   double* dst = m.data();
-  for (Eigen::Index r0 = 0; r0 < rows; r0 += kStrip) {
-    const Eigen::Index h = std::min(kStrip, rows - r0);
-    for (Eigen::Index c = 0; c < cols; ++c)
-      for (Eigen::Index r = r0; r < r0 + h; ++r) dst[c * rows + r] = src[r * cols + c];
-  }
+  const Eigen::Index strips = (rows + kStrip - 1) / kStrip;
+  const int workers = int(std::min<Eigen::Index>(hardwareThreads(), m.size() / (1 << 20) + 1));
+  runWorkers(workers, [&](int w, int count) {
+    for (Eigen::Index s = strips * w / count; s < strips * (w + 1) / count; ++s) {
+      const Eigen::Index r0 = s * kStrip, h = std::min(kStrip, rows - r0);
+      for (Eigen::Index c = 0; c < cols; ++c)
+        for (Eigen::Index r = r0; r < r0 + h; ++r) dst[c * rows + r] = src[r * cols + c];
+    }
+  });
   return m;
 }
 

@@ -96,6 +96,7 @@ class NewFile {
  private:
   static constexpr intptr_t kClosed = -1;
   intptr_t handle_ = kClosed;
+  uint64_t written_ = 0, started_ = 0;  // bytes written; of those, sent to the disk early
 };
 
 // A folder opened once; every name below is one component in it, created,

@@ -349,11 +349,22 @@ FbxNode& FbxNode::addShared(const FbxProperty& p) {
   return *this;
 }
 
-FbxProperty fbxSharedInt64Array(const std::vector<int64_t>& v) {
-  FbxProperty p = encodeArray('l', v);
+namespace {
+
+FbxProperty sharedProperty(FbxProperty p) {
   p.shared = std::make_shared<const std::string>(std::move(p.payload));
   p.payload.clear();
   return p;
+}
+
+}  // namespace
+
+FbxProperty fbxSharedInt64Array(const std::vector<int64_t>& v) {
+  return sharedProperty(encodeArray('l', v));
+}
+
+FbxProperty fbxSharedDoubleArray(const std::vector<double>& v) {
+  return sharedProperty(encodeArray('d', v));
 }
 
 namespace {

@@ -47,6 +47,7 @@ struct FbxProperty {
 
 // An array property encoded once, for FbxNode::addShared on several nodes.
 FbxProperty fbxSharedInt64Array(const std::vector<int64_t>& v);
+FbxProperty fbxSharedDoubleArray(const std::vector<double>& v);
 
 struct FbxNode {
   std::string name;

@@ -2,6 +2,8 @@
 // one Shape geometry per target (fbx_scene_internal.h). Blender names shape
 // keys after the Shape geometry, Unity after the channel: both carry the
 // target name.
+#include <map>
+
 #include "writers/fbx/fbx_scene_internal.h"
 
 namespace smpl {
@@ -27,7 +29,17 @@ void sparseDeltas(const MorphDeltas& deltas, double scale, std::vector<int32_t>&
   for (int c = 0; c < 3; ++c) vertices.push_back(double(deltas(largest, c)) * scale);
 }
 
-void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape) {
+// The zero normal deltas of a shape of `count` values: one shared payload
+// per count (encoded, hashed and compressed once, however many shapes).
+const FbxProperty& zeroNormals(std::map<size_t, FbxProperty>* zeros, size_t count) {
+  auto it = zeros->find(count);
+  if (it == zeros->end())
+    it = zeros->emplace(count, fbxSharedDoubleArray(std::vector<double>(count, 0.0))).first;
+  return it->second;
+}
+
+void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape,
+               std::map<size_t, FbxProperty>* zeros) {
   const MorphTarget& target = ctx.asset.mesh.morph_targets[i];
   std::vector<int32_t> indexes;
   std::vector<double> vertices;
@@ -41,7 +53,7 @@ void addTarget(SceneContext& ctx, size_t i, int64_t blend_shape) {
   g.add("Vertices").addDoubleArray(vertices);
   // Normal deltas: zero keeps the rest normals (correctives are small), and
   // costs almost nothing deflated; Assimp rejects shapes without them.
-  g.add("Normals").addDoubleArray(std::vector<double>(vertices.size(), 0.0));
+  g.add("Normals").addShared(zeroNormals(zeros, vertices.size()));
 
   int64_t channel = ctx.ids.id("channel/" + std::to_string(i));
   ctx.blend_channels.push_back(channel);
@@ -66,7 +78,8 @@ void buildMorphObjects(SceneContext& ctx) {
       ctx.addObject("Deformer", blend_shape, name + "_blendshapes", "Deformer", "BlendShape");
   d.add("Version").addInt32(100);
   ctx.connectOO(blend_shape, ctx.mesh_geometry);
-  for (size_t i = 0; i < targets.size(); ++i) addTarget(ctx, i, blend_shape);
+  std::map<size_t, FbxProperty> zeros;
+  for (size_t i = 0; i < targets.size(); ++i) addTarget(ctx, i, blend_shape, &zeros);
 }
 
 }  // namespace fbx
