@@ -1,6 +1,5 @@
 #include "core/math/skin_weight_fit.h"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
@@ -103,6 +102,23 @@ Eigen::MatrixXd candidateResiduals(const BodyModel& model, const TrainingSet& ts
   return d;
 }
 
+// d'd (C x C) of a residual matrix (3T x C): each entry one dot product of
+// two columns, summed in row order (symmetric: the upper half is mirrored).
+// Eigen's general product would pack the tiny operands first.
+Eigen::MatrixXd gramOf(const Eigen::MatrixXd& d) {
+  const Eigen::Index c = d.cols(), rows = d.rows();
+  Eigen::MatrixXd g(c, c);
+  for (Eigen::Index a = 0; a < c; ++a)
+    for (Eigen::Index b = a; b < c; ++b) {
+      const double* x = d.col(a).data();
+      const double* y = d.col(b).data();
+      double sum = 0.0;
+      for (Eigen::Index r = 0; r < rows; ++r) sum += x[r] * y[r];
+      g(a, b) = g(b, a) = sum;
+    }
+  return g;
+}
+
 // |sum_s u_s d_ps| per pose p (length T) for weights u on the candidate subset.
 Eigen::VectorXd poseErrors(const Eigen::MatrixXd& d, const std::vector<int>& subset,
                            const Eigen::VectorXd& u) {
@@ -111,6 +127,42 @@ Eigen::VectorXd poseErrors(const Eigen::MatrixXd& d, const std::vector<int>& sub
   Eigen::VectorXd e(d.rows() / 3);
   for (Eigen::Index p = 0; p < e.size(); ++p) e(p) = r.segment<3>(3 * p).norm();
   return e;
+}
+
+// Solves a x = b for the columns of `x` (b on entry) by the Cholesky factor
+// a = L L' (a symmetric; L built in place of its lower half, row by row:
+// Golub and Van Loan, Matrix Computations, algorithm 4.2.1), then forward
+// and back substitution. False, with `x` unspecified, when a is not
+// positive definite. Plain loops: the systems here are at most a few
+// joints wide, where a general solver's setup costs more than the work.
+template <class Matrix>
+bool choleskySolve(Matrix a, Matrix* x) {
+  const Eigen::Index f = a.rows();
+  for (Eigen::Index j = 0; j < f; ++j) {
+    double diagonal = a(j, j);
+    for (Eigen::Index k = 0; k < j; ++k) diagonal -= a(j, k) * a(j, k);
+    if (!(diagonal > 0.0)) return false;
+    const double l = std::sqrt(diagonal);
+    a(j, j) = l;
+    for (Eigen::Index i = j + 1; i < f; ++i) {
+      double v = a(i, j);
+      for (Eigen::Index k = 0; k < j; ++k) v -= a(i, k) * a(j, k);
+      a(i, j) = v / l;
+    }
+  }
+  for (Eigen::Index c = 0; c < x->cols(); ++c) {
+    for (Eigen::Index i = 0; i < f; ++i) {  // L y = b
+      double v = (*x)(i, c);
+      for (Eigen::Index k = 0; k < i; ++k) v -= a(i, k) * (*x)(k, c);
+      (*x)(i, c) = v / a(i, i);
+    }
+    for (Eigen::Index i = f - 1; i >= 0; --i) {  // L' x = y
+      double v = (*x)(i, c);
+      for (Eigen::Index k = i + 1; k < f; ++k) v -= a(k, i) * (*x)(k, c);
+      (*x)(i, c) = v / a(i, i);
+    }
+  }
+  return true;
 }
 
 // Minimiser of 1/2 u'Hu - c'u with u_j = 0 for the active j and sum u = 1:
@@ -134,10 +186,9 @@ Vector equalityStep(const Matrix& h, const Vector& c, const std::vector<bool>& a
     rhs(a, 0) = c(free_idx[size_t(a)]);
     rhs(a, 1) = 1.0;
   }
-  const Eigen::LLT<Matrix> llt(hff);
+  Matrix yz = rhs;
   // Not positive definite (outside the precondition): the pivoted LU still solves it.
-  const Matrix yz =
-      llt.info() == Eigen::Success ? Matrix(llt.solve(rhs)) : Matrix(hff.fullPivLu().solve(rhs));
+  if (!choleskySolve(hff, &yz)) yz = hff.fullPivLu().solve(rhs);
   *mu = (1.0 - yz.col(0).sum()) / yz.col(1).sum();
   Vector u = Vector::Zero(h.rows());
   for (int a = 0; a < f; ++a) u(free_idx[size_t(a)]) = yz(a, 0) + *mu * yz(a, 1);
@@ -315,7 +366,7 @@ void fitVertex(const BodyModel& model, const TrainingSet& ts, const SkinFitOptio
       nonzero.begin(), nonzero.begin() + std::min(count, std::max(kMaxCandidates, 2 * m)));
   VertexFit v;
   v.d = candidateResiduals(model, ts, i, nonzero, candidates.size());
-  v.gram = v.d.transpose() * v.d;
+  v.gram = gramOf(v.d);
   v.model.resize(Eigen::Index(candidates.size()));
   for (size_t s = 0; s < candidates.size(); ++s)
     v.model(Eigen::Index(s)) = model.weights(i, candidates[s]);

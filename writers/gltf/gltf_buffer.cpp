@@ -52,15 +52,19 @@ void floatBounds(const float* values, size_t count, int n, std::vector<double>* 
   min->assign(size_t(n), 0.0);
   max->assign(size_t(n), 0.0);
   if (count == 0) return;
-  for (int c = 0; c < n; ++c) {
-    float lo = values[c], hi = values[c];
-    for (size_t i = 1; i < count; ++i) {
-      const float v = values[i * size_t(n) + size_t(c)];
-      lo = std::min(lo, v);
-      hi = std::max(hi, v);
+  // One pass over the tuples (a target's deltas are read once, not once per
+  // component); min and max are exact, so the order does not matter.
+  std::vector<float> lo(values, values + n), hi(values, values + n);
+  for (size_t i = 1; i < count; ++i) {
+    const float* t = values + i * size_t(n);
+    for (int c = 0; c < n; ++c) {
+      lo[size_t(c)] = std::min(lo[size_t(c)], t[c]);
+      hi[size_t(c)] = std::max(hi[size_t(c)], t[c]);
     }
-    (*min)[size_t(c)] = lo;
-    (*max)[size_t(c)] = hi;
+  }
+  for (int c = 0; c < n; ++c) {
+    (*min)[size_t(c)] = lo[size_t(c)];
+    (*max)[size_t(c)] = hi[size_t(c)];
   }
 }
 

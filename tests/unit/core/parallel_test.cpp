@@ -16,8 +16,7 @@ namespace {
 
 // True once `flag` is set, waiting at most two seconds.
 bool waitFor(const std::atomic<bool>& flag) {
-  for (int i = 0; i < 2000 && !flag; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  for (int i = 0; i < 2000 && !flag; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   return flag;
 }
 
