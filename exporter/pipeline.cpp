@@ -288,10 +288,18 @@ Result<Asset> buildAsset(const BodyModel& model, const ExportOptions& o, SkinCac
   asset.skeleton = buildSkeleton(model, body->joints);
   // From `skins` (the same subject's earlier export) or fitted for this export alone.
   const UvLayout* layout = *uv ? &**uv : nullptr;
+  bool fitted = !skins;
   const std::shared_ptr<const FittedSkin> cached =
-      skins ? skins->get(model, o, [&] { return fitSkin(model, *body, o, layout); }) : nullptr;
+      skins ? skins->get(model, o,
+                         [&] {
+                           fitted = true;
+                           return fitSkin(model, *body, o, layout);
+                         })
+            : nullptr;
   FittedSkin own = skins ? FittedSkin() : fitSkin(model, *body, o, layout);
-  returnFreedHeap();  // the fit's and the refit's temporaries (a long clip's frames are loaded)
+  // The fit's and the refit's temporaries (a long clip's frames are loaded);
+  // an export whose skin came from the cache freed nothing worth it.
+  if (fitted) returnFreedHeap();
   const FittedSkin& fit = skins ? *cached : own;
   fillMetadata(model, o, &asset.metadata);
   asset.metadata.max_influences = int(fit.skin.joints.cols());  // influencesFor(), or fewer

@@ -207,6 +207,16 @@ Result<size_t> keepJob(const ExportRequest& r, const Asset& asset, const Writer&
   return memory->size();
 }
 
+// Freed frames worth handing back to the system before the write.
+constexpr uint64_t kTrimAfter = uint64_t(32) << 20;
+
+// Whether a serial stage may run beside another on a thread of its own:
+// not with --threads 1. A batch gives each job's writer one thread (its jobs
+// run side by side) and the run's --threads to the rest (cli/batch.cpp).
+bool besideAllowed(const ExportRequest& r) {
+  return (r.asset.threads > 0 ? r.asset.threads : r.writer.threads.value_or(0)) != 1;
+}
+
 // The producer hash of the request's output (request/producer.h).
 Result<std::string> producerOf(const ExportRequest& r) {
   if (!r.producer_hash.empty()) return r.producer_hash;
@@ -232,7 +242,7 @@ Result<size_t> commitFiles(const ExportRequest& r, const std::string& buffer_pat
   // (batch mode checks them, metadata_json.h): hashed while they are written.
   if (Status st = writeFilesWithRecord(
           contents, r.out + ".smpl.json", [&] { return sidecar(*producer, contents); },
-          r.writer.threads.value_or(0) != 1);
+          besideAllowed(r));
       !st)
     return fail(ErrorKind::Write, "saving", r.out, st.message());
   return files->size() + files->buffer.size();
@@ -271,7 +281,9 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   if (!asset) return asset.error();
   // The baked clips hold all the writer needs: the decoded frames are freed
   // first, so a long clip peaks in the bake or in the write, not in both.
+  const uint64_t charged = memoryCharged();
   for (Motion& m : loaded->motions) releaseFrames(&m);
+  const bool frames_freed = charged >= memoryCharged() + kTrimAfter;
   const BodyModel& model = *loaded->pick.model;
   report.skin_fitted = asset->mesh.joints.cols() > 0;  // no skin for a skeleton-only writer
   if (report.skin_fitted) report.skin = skinOfAsset(asset->mesh, model.numVertices());
@@ -280,7 +292,10 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   // The refit is in the morph targets already; only the measurement reads it.
   const bool measure = r.skin_error_poses > 0 && report.skin_fitted;
   if (!measure) asset->corrective_refit = std::make_shared<CorrectiveRefit>();
-  returnFreedHeap();
+  // A long clip's frames (small blocks) go back to the system before the
+  // write; a short clip's stay for the next allocations (a batch's next job
+  // would fault them in again, at a cost larger than the memory saved).
+  if (frames_freed) returnFreedHeap();
   std::optional<Result<size_t>> bytes;
   std::optional<Result<PruningError>> err;
   const auto write = [&] {
@@ -296,7 +311,7 @@ Result<ExportReport> runJob(const ExportRequest& r, const RunInputs& inputs, Mod
   // The write is serial: without clips the measurement (its own memory, not
   // a clip's) runs beside it. With clips it runs after the write, once a
   // long clip's tracks are gone; with --threads 1, after it too.
-  if (measure && asset->animations.empty() && r.writer.threads.value_or(0) != 1) {
+  if (measure && asset->animations.empty() && besideAllowed(r)) {
     runTogether(true, write, measure_error);
   } else {
     write();
@@ -586,8 +601,7 @@ Result<RunInputs> loadInputsHashed(const ExportRequest& r, ModelSource* models,
   std::optional<Result<RunInputs>> inputs;
   std::optional<Result<std::string>> producer;
   runTogether(
-      r.producer_hash.empty() && r.writer.threads.value_or(0) != 1,
-      [&] { inputs = loadRunInputs(r, models); },
+      r.producer_hash.empty() && besideAllowed(r), [&] { inputs = loadRunInputs(r, models); },
       [&] {
         // Off the guarded stage: a throw leaves the hash to the commit,
         // which computes it again under the guard.
