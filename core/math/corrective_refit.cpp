@@ -329,10 +329,9 @@ void addRefitCorrection(const BodyModel& model, const ShapedBody& body, const Sp
   vertices.resize(size_t(refit.rows.rows() / 3));
   for (size_t i = 0; i < refit.block.size(); ++i)
     if (refit.block[i] >= 0) vertices[size_t(refit.block[i])] = Eigen::Index(i);
-  Eigen::MatrixXd change = refit.rows;  // 3R x P: Q_i - P_i
-  for (size_t b = 0; b < vertices.size(); ++b)
-    change.middleRows<3>(3 * Eigen::Index(b)) -= model.posedirs.middleRows<3>(3 * vertices[b]);
-  constexpr size_t kFrames = 64;  // frames per product: 3R x 64 doubles at most
+  constexpr size_t kFrames = 64;       // frames per product
+  constexpr Eigen::Index kRows = 384;  // rows of Q - P per product (128 vertices): cache-sized,
+                                       // instead of a copy of the whole 3R x P difference
   for (size_t first = 0; first < frames.size(); first += kFrames) {
     const size_t count = std::min(kFrames, frames.size() - first);
     Eigen::MatrixXd features(model.numPoseFeatures(), Eigen::Index(count));
@@ -341,16 +340,24 @@ void addRefitCorrection(const BodyModel& model, const ShapedBody& body, const Sp
       features.col(Eigen::Index(t)) = poseFeatures(frames[first + t]);
       transforms[t] = skinningTransforms(model, body.joints, frames[first + t]);
     }
-    const Eigen::MatrixXd moved = fixedOrderProduct(change, features);  // 3R x count
-    for (size_t b = 0; b < vertices.size(); ++b) {
-      const Eigen::Index v = vertices[b];
-      for (size_t t = 0; t < count; ++t) {
-        Eigen::Matrix3d r = Eigen::Matrix3d::Zero();  // the pruned skin's blended rotation
-        for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
-          if (skin.weights(v, s) > 0)
-            r += skin.weights(v, s) * transforms[t][size_t(skin.joints(v, s))].leftCols<3>();
-        posed->block<3, 1>(3 * v, Eigen::Index(first + t)) +=
-            r * moved.block<3, 1>(3 * Eigen::Index(b), Eigen::Index(t));
+    Eigen::MatrixXd change, moved;
+    for (Eigen::Index r0 = 0; r0 < refit.rows.rows(); r0 += kRows) {
+      const Eigen::Index rows = std::min(kRows, refit.rows.rows() - r0);
+      change = refit.rows.middleRows(r0, rows);  // Q_i - P_i of these vertices
+      for (Eigen::Index b = 0; b < rows / 3; ++b)
+        change.middleRows<3>(3 * b) -=
+            model.posedirs.middleRows<3>(3 * vertices[size_t(r0 / 3 + b)]);
+      fixedOrderProduct(change, features, &moved);  // rows x count
+      for (Eigen::Index b = 0; b < rows / 3; ++b) {
+        const Eigen::Index v = vertices[size_t(r0 / 3 + b)];
+        for (size_t t = 0; t < count; ++t) {
+          Eigen::Matrix3d r = Eigen::Matrix3d::Zero();  // the pruned skin's blended rotation
+          for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
+            if (skin.weights(v, s) > 0)
+              r += skin.weights(v, s) * transforms[t][size_t(skin.joints(v, s))].leftCols<3>();
+          posed->block<3, 1>(3 * v, Eigen::Index(first + t)) +=
+              r * moved.block<3, 1>(3 * b, Eigen::Index(t));
+        }
       }
     }
   }
