@@ -129,6 +129,11 @@ Eigen::VectorXd poseErrors(const Eigen::MatrixXd& d, const std::vector<int>& sub
   return e;
 }
 
+// Per-joint integers of a QP (flags, index lists) sized like Matrix: on the
+// stack where Matrix is (SmallMatrix), so no step of the solver allocates.
+template <class Matrix>
+using Flags = Eigen::Matrix<int, Eigen::Dynamic, 1, 0, Matrix::MaxRowsAtCompileTime, 1>;
+
 // Solves a x = b for the columns of `x` (b on entry) by the Cholesky factor
 // a = L L' (a symmetric; L built in place of its lower half, row by row:
 // Golub and Van Loan, Matrix Computations, algorithm 4.2.1), then forward
@@ -173,17 +178,16 @@ bool choleskySolve(Matrix a, Matrix* x) {
 // bordered system). Returns u and mu. Matrix/Vector: SmallMatrix/SmallVector
 // (at most kStackRows joints) or the dynamic types.
 template <class Matrix, class Vector>
-Vector equalityStep(const Matrix& h, const Vector& c, const std::vector<bool>& active, double* mu) {
-  std::vector<int> free_idx;
-  free_idx.reserve(active.size());
+Vector equalityStep(const Matrix& h, const Vector& c, const Flags<Matrix>& active, double* mu) {
+  Flags<Matrix> free_idx(active.size());  // the free joints' indices, in order
+  int f = 0;
   for (int j = 0; j < int(active.size()); ++j)
-    if (!active[size_t(j)]) free_idx.push_back(j);
-  const int f = int(free_idx.size());
+    if (!active(j)) free_idx(f++) = j;
   Matrix hff(f, f);
   Matrix rhs(f, 2);
   for (int a = 0; a < f; ++a) {
-    for (int b = 0; b < f; ++b) hff(a, b) = h(free_idx[size_t(a)], free_idx[size_t(b)]);
-    rhs(a, 0) = c(free_idx[size_t(a)]);
+    for (int b = 0; b < f; ++b) hff(a, b) = h(free_idx(a), free_idx(b));
+    rhs(a, 0) = c(free_idx(a));
     rhs(a, 1) = 1.0;
   }
   Matrix yz = rhs;
@@ -191,7 +195,7 @@ Vector equalityStep(const Matrix& h, const Vector& c, const std::vector<bool>& a
   if (!choleskySolve(hff, &yz)) yz = hff.fullPivLu().solve(rhs);
   *mu = (1.0 - yz.col(0).sum()) / yz.col(1).sum();
   Vector u = Vector::Zero(h.rows());
-  for (int a = 0; a < f; ++a) u(free_idx[size_t(a)]) = yz(a, 0) + *mu * yz(a, 1);
+  for (int a = 0; a < f; ++a) u(free_idx(a)) = yz(a, 0) + *mu * yz(a, 1);
   return u;
 }
 
@@ -200,8 +204,8 @@ template <class Matrix, class Vector>
 Vector simplexQp(const Matrix& h, const Vector& c, const Vector& u0) {
   const int m = int(h.rows());
   Vector u = u0;
-  std::vector<bool> active(static_cast<size_t>(m), false);
-  for (int j = 0; j < m; ++j) active[size_t(j)] = u(j) <= 0.0;
+  Flags<Matrix> active(m);
+  for (int j = 0; j < m; ++j) active(j) = u(j) <= 0.0;
   const double tol = 1e-12 * std::max(1e-300, h.diagonal().cwiseAbs().maxCoeff());
   for (int iter = 0; iter < 10 * m + 10; ++iter) {
     double mu = 0.0;
@@ -209,13 +213,13 @@ Vector simplexQp(const Matrix& h, const Vector& c, const Vector& u0) {
     double alpha = 1.0;
     int blocking = -1;
     for (int j = 0; j < m; ++j)  // longest feasible step towards target
-      if (!active[size_t(j)] && target(j) < 0.0) {
+      if (!active(j) && target(j) < 0.0) {
         const double ratio = u(j) / (u(j) - target(j));
         if (ratio < alpha) alpha = ratio, blocking = j;
       }
     u += alpha * (target - u);
     if (blocking >= 0) {
-      active[size_t(blocking)] = true;
+      active(blocking) = 1;
       u(blocking) = 0.0;
       continue;
     }
@@ -223,9 +227,9 @@ Vector simplexQp(const Matrix& h, const Vector& c, const Vector& u0) {
     int release = -1;
     double worst = -tol;
     for (int j = 0; j < m; ++j)
-      if (active[size_t(j)] && g(j) - mu < worst) worst = g(j) - mu, release = j;
+      if (active(j) && g(j) - mu < worst) worst = g(j) - mu, release = j;
     if (release < 0) break;  // KKT conditions hold: optimal
-    active[size_t(release)] = false;
+    active(release) = 0;
   }
   u = u.cwiseMax(0.0);
   return u / u.sum();
@@ -315,13 +319,14 @@ void searchSupport(const VertexFit& v, int m, int exhaustive_limit, std::vector<
       for (int b = a + 1; b < m; ++b) subset[size_t(b)] = subset[size_t(b - 1)] + 1;
     }
   }
-  std::vector<int> greedy;  // forward selection; ties: the larger model weight
+  std::vector<int> greedy, trial;  // forward selection; ties: the larger model weight
+  greedy.reserve(size_t(m)), trial.reserve(size_t(m));
   for (int step = 0; step < m; ++step) {
     int pick = -1;
     double pick_err = 0.0;
     for (int s = 0; s < c; ++s) {
       if (std::find(greedy.begin(), greedy.end(), s) != greedy.end()) continue;
-      std::vector<int> trial = greedy;
+      trial.assign(greedy.begin(), greedy.end());  // reuses its storage
       trial.push_back(s);
       const double err = fitSubset(v, v.gram, trial, &u);
       if (pick < 0 || err < pick_err) pick = s, pick_err = err;
