@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <map>
 #include <string>
@@ -91,36 +92,59 @@ struct BlockPoses {
   }
 };
 
-BlockPoses blockPoses(const BodyModel& model, const ShapedBody& body, const SparseSkin& skin,
-                      const PoseSet& set, const std::vector<Eigen::Index>& ids) {
-  const Eigen::Index b_count = Eigen::Index(ids.size()), t_count = set.features.cols();
-  Eigen::MatrixXf dirs(3 * b_count, model.numPoseFeatures());
+// What a block's products read of the model, gathered once for its pose
+// sets: the posedirs rows (3B x P, in float), the weight differences and the
+// pruned weights (2B x K, BlockPoses), v_shaped (B x 3).
+struct BlockRows {
+  Eigen::MatrixXf dirs, weights;
+  Eigen::ArrayXXd rest;
+};
+
+BlockRows blockRows(const BodyModel& model, const ShapedBody& body, const SparseSkin& skin,
+                    const std::vector<Eigen::Index>& ids) {
+  const Eigen::Index b_count = Eigen::Index(ids.size());
+  BlockRows out;
+  out.dirs.resize(3 * b_count, model.numPoseFeatures());
+  out.weights.resize(2 * b_count, model.numJoints());
+  out.rest.resize(b_count, 3);
   Eigen::MatrixXd pruned = Eigen::MatrixXd::Zero(b_count, model.numJoints());
-  Eigen::MatrixXf weights(2 * b_count, model.numJoints());
   for (Eigen::Index b = 0; b < b_count; ++b) {
     const Eigen::Index i = ids[size_t(b)];
-    dirs.middleRows<3>(3 * b) = model.posedirs.middleRows<3>(3 * i).cast<float>();
+    out.dirs.middleRows<3>(3 * b) = model.posedirs.middleRows<3>(3 * i).cast<float>();
     for (Eigen::Index s = 0; s < skin.joints.cols(); ++s)
       if (skin.weights(i, s) > 0) pruned(b, skin.joints(i, s)) += skin.weights(i, s);
-    weights.row(b) = (model.weights.row(i) - pruned.row(b)).cast<float>();
-    weights.row(b_count + b) = pruned.row(b).cast<float>();
+    out.weights.row(b) = (model.weights.row(i) - pruned.row(b)).cast<float>();
+    out.weights.row(b_count + b) = pruned.row(b).cast<float>();
+    out.rest.row(b) = body.v_shaped.row(i);
   }
+  return out;
+}
+
+BlockPoses blockPoses(const BlockRows& rows, const PoseSet& set) {
+  const Eigen::Index b_count = rows.rest.rows(), t_count = set.features.cols();
+  const Eigen::ArrayXXd& rest = rows.rest;
   // 3B x T: the posed rest vertices, less v_shaped
-  const Eigen::MatrixXf x = fixedOrderProduct(dirs, set.features32);
+  const Eigen::MatrixXf x = fixedOrderProduct(rows.dirs, set.features32);
   BlockPoses out;
-  fixedOrderProduct(weights, set.transforms32, &out.blend);
+  fixedOrderProduct(rows.weights, set.transforms32, &out.blend);
   out.error.resize(3 * b_count, t_count);
-  const Eigen::Index ld = out.blend.rows();
-  // Pose by pose: a pose's 12 columns of the blends are contiguous for every vertex.
+  using Strided = Eigen::InnerStride<3>;  // coordinate c of every vertex: rows c, c + 3, ...
+  std::array<Eigen::ArrayXd, 3> xp;
+  // Pose by pose, all the block's vertices at once: a column of the blend
+  // holds one entry of A(p) for every vertex. Each value is the sum
+  // ((d0 x + d1 y) + d2 z) + d3 in double, as written out per vertex.
   for (Eigen::Index p = 0; p < t_count; ++p) {
-    for (Eigen::Index b = 0; b < b_count; ++b) {
-      const Eigen::Vector3d rest = body.v_shaped.row(ids[size_t(b)]).transpose();
-      const Eigen::Vector3d xp = rest + x.block<3, 1>(3 * b, p).cast<double>();
-      for (int r = 0; r < 3; ++r) {
-        const float* d = &out.blend(b, 12 * p + 4 * r);  // not contiguous: column-major
-        out.error(3 * b + r, p) = double(d[0]) * xp(0) + double(d[ld]) * xp(1) +
-                                  double(d[2 * ld]) * xp(2) + double(d[3 * ld]);
-      }
+    for (int c = 0; c < 3; ++c)
+      xp[size_t(c)] =
+          rest.col(c) +
+          Eigen::Map<const Eigen::ArrayXf, 0, Strided>(&x(c, p), b_count).cast<double>();
+    for (int r = 0; r < 3; ++r) {
+      const auto d = [&](int k) {
+        return Eigen::Map<const Eigen::ArrayXf>(&out.blend(0, 12 * p + 4 * r + k), b_count)
+            .cast<double>();
+      };
+      Eigen::Map<Eigen::ArrayXd, 0, Strided>(&out.error(r, p), b_count) =
+          d(0) * xp[0] + d(1) * xp[1] + d(2) * xp[2] + d(3);
     }
   }
   return out;
@@ -193,7 +217,8 @@ bool passesGuard(const BlockPoses& v, const Eigen::MatrixXf& correction, Eigen::
 // set's factored Gram matrix.
 void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
               std::vector<Eigen::MatrixXd>* deltas) {
-  const BlockPoses v = blockPoses(c.model, c.body, c.skin, c.train, block.vertices);
+  const BlockRows rows = blockRows(c.model, c.body, c.skin, block.vertices);
+  const BlockPoses v = blockPoses(rows, c.train);
   const Eigen::Index b_count = Eigen::Index(block.vertices.size()), t_count = v.error.cols();
   Eigen::MatrixXf z(3 * b_count, t_count);  // rest-frame targets R_p^{-1} e_p
   for (Eigen::Index p = 0; p < t_count; ++p)
@@ -204,7 +229,7 @@ void fitBlock(const Context& c, const FeatureSet& set, const Block& block,
   Eigen::MatrixXf correction;
   BlockPoses check;
   if (c.options.guard) {
-    check = blockPoses(c.model, c.body, c.skin, c.validate, block.vertices);
+    check = blockPoses(rows, c.validate);
     correction = fixedOrderProduct(d, set.validate);  // 3B x Tv: D_i f_S(p)
   }
   for (Eigen::Index b = 0; b < b_count; ++b)
