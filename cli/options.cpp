@@ -484,8 +484,9 @@ const std::vector<OptionSpec> kOptions = {
      [](V, S* s) { return s->force = true, Status(); }, Hashed::No},
     {"--threads", nullptr, "N", Applies::Any, nullptr,
      "worker threads: batch files converted at once (each compressing on one), or, for a single "
-     "file, the skin fit, the corrective refit and the FBX arrays compressed at once (default: all "
-     "cores; the output does not depend on it)",
+     "file, the skin fit, the corrective refit and the FBX arrays compressed at once; with 1, no "
+     "stage runs beside another (the model's load and its hash, the write and the skinning-error "
+     "measurement) (default: all cores; the output does not depend on it)",
      [](V v, S* s) { return numberInto(v, "--threads", &s->request.writer.threads); }, Hashed::No},
     {"--shard", nullptr, "I/N", Applies::Batch, nullptr,
      "convert only share I of N (0 <= I < N): the motions sorted by path relative to DIR, the one "
