@@ -238,7 +238,7 @@ TEST_F(FileIo, RecordThatThrowsLeavesTheOldFiles) {
   ASSERT_TRUE(writeFileAtomic(side, std::string("old sidecar")).ok());
   const std::string a(1 << 20, 'x');
   for (const bool together : {false, true}) {
-    EXPECT_THROW(writeFilesWithRecord(
+    EXPECT_THROW((void)writeFilesWithRecord(
                      {{out, a.data(), a.size()}}, side,
                      []() -> std::string { throw std::bad_alloc(); }, together),
                  std::bad_alloc);
