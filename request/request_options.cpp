@@ -4,12 +4,14 @@
 
 namespace smpl {
 
+int exportThreads(const ExportRequest& r) {
+  return r.asset.threads > 0 ? r.asset.threads : r.writer.threads.value_or(0);
+}
+
 ExportOptions exportOptionsOf(const ExportRequest& r, const std::vector<double>& betas) {
   ExportOptions o = r.asset;
   o.betas = betas;
-  // --threads: the fit and refit too, unless the request set their count (a
-  // batch job writes on one thread but fits on all)
-  if (o.threads == 0) o.threads = r.writer.threads.value_or(0);
+  o.threads = exportThreads(r);  // --threads: the fit and refit too
   const WriterFormat* format = writerFormatForPath(r.out);
   o.mesh = !format || format->needs_mesh;  // a skeleton-only writer: no skin, no morph targets
   return o;

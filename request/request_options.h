@@ -15,6 +15,10 @@
 
 namespace smpl {
 
+// The export's worker threads (0: all cores): the request's own count (a
+// batch job writes on one thread but fits on all), else --threads.
+int exportThreads(const ExportRequest& request);
+
 // `betas`: the run's (RunInputs, run_request.h); the encoding stays as asked
 // (Auto is resolved by exportAsset, export_asset.h); no mesh when the
 // output's writer row has none (writers/writer.h needs_mesh).

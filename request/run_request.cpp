@@ -211,11 +211,9 @@ Result<size_t> keepJob(const ExportRequest& r, const Asset& asset, const Writer&
 constexpr uint64_t kTrimAfter = uint64_t(32) << 20;
 
 // Whether a serial stage may run beside another on a thread of its own:
-// not with --threads 1. A batch gives each job's writer one thread (its jobs
-// run side by side) and the run's --threads to the rest (cli/batch.cpp).
-bool besideAllowed(const ExportRequest& r) {
-  return (r.asset.threads > 0 ? r.asset.threads : r.writer.threads.value_or(0)) != 1;
-}
+// not with --threads 1 (the export's count: a batch job's writer has one
+// thread, its export the run's --threads).
+bool besideAllowed(const ExportRequest& r) { return exportThreads(r) != 1; }
 
 // The producer hash of the request's output (request/producer.h).
 Result<std::string> producerOf(const ExportRequest& r) {
